@@ -1,0 +1,99 @@
+#include "host/camera_math.h"
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace demo {
+
+glm::mat4 perspectiveProjection(float fovY, float aspect, float nearPlane, float farPlane, bool reversedZ,
+                                bool infiniteFar) {
+    // With d = -z_view the distance along the view axis, depth = (m22·z + m32) / d.
+    const float f = 1.0f / std::tan(0.5f * fovY);
+    glm::mat4 m(0.0f);
+    m[0][0] = f / aspect;
+    m[1][1] = -f;     // Vulkan clip y points down
+    m[2][3] = -1.0f;  // w = d
+    if (reversedZ) {
+        if (infiniteFar) {  // depth = near / d
+            m[2][2] = 0.0f;
+            m[3][2] = nearPlane;
+        } else {  // depth = near·(far - d) / (d·(far - near))
+            m[2][2] = nearPlane / (farPlane - nearPlane);
+            m[3][2] = farPlane * nearPlane / (farPlane - nearPlane);
+        }
+    } else {
+        if (infiniteFar) {  // depth = 1 - near / d
+            m[2][2] = -1.0f;
+            m[3][2] = -nearPlane;
+        } else {  // depth = far·(d - near) / (d·(far - near))
+            m[2][2] = farPlane / (nearPlane - farPlane);
+            m[3][2] = -farPlane * nearPlane / (farPlane - nearPlane);
+        }
+    }
+    return m;
+}
+
+glm::mat4 cameraView(const Camera& camera) {
+    return glm::lookAtRH(camera.position, camera.lookAt, camera.up);
+}
+
+ShadowFit fitShadowMap(const Scene& scene, uint32_t mapSize) {
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    glm::vec3 lo(kInf), hi(-kInf);
+    for (const Object& o : scene.objects) {
+        if (o.type == ObjectType::Box) {
+            lo = glm::min(lo, o.position - o.halfSize);
+            hi = glm::max(hi, o.position + o.halfSize);
+        } else if (o.type == ObjectType::Sphere) {
+            lo = glm::min(lo, o.position - glm::vec3(o.radius));
+            hi = glm::max(hi, o.position + glm::vec3(o.radius));
+        }
+    }
+    ShadowFit fit;
+    if (!(lo.x <= hi.x) || mapSize == 0) return fit;  // no finite object: nothing is fitted
+    const float margin = 0.05f * glm::length(hi - lo) + 0.25f;
+    lo -= glm::vec3(margin);
+    hi += glm::vec3(margin);
+
+    // Light view: eye on the sun side of the box centre, looking along -toSun (toward the scene).
+    const glm::vec3 toSun = glm::normalize(scene.sun.direction);
+    const glm::vec3 centre = 0.5f * (lo + hi);
+    const glm::vec3 up = std::abs(toSun.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    const glm::mat4 view = glm::lookAtRH(centre + toSun, centre, up);
+
+    glm::vec3 lsLo(kInf), lsHi(-kInf);  // light-space bounds; z grows toward the sun
+    for (int i = 0; i < 8; ++i) {
+        glm::vec3 corner((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+        glm::vec3 p = glm::vec3(view * glm::vec4(corner, 1.0f));
+        lsLo = glm::min(lsLo, p);
+        lsHi = glm::max(lsHi, p);
+    }
+    // Planes crossing the footprint (an infinite prism along the sun direction) are receivers of
+    // long shadows (or occluders): extend the depth range to where the prism's edges meet them.
+    const float zCasterLo = lsLo.z, zCasterHi = lsHi.z;
+    for (const Object& o : scene.objects) {
+        if (o.type != ObjectType::Plane) continue;
+        glm::vec3 n = glm::mat3(view) * o.normal;
+        glm::vec3 p = glm::vec3(view * glm::vec4(o.position, 1.0f));
+        if (std::abs(n.z) < 1e-4f) continue;  // plane parallel to the sun direction
+        for (int i = 0; i < 4; ++i) {
+            float x = (i & 1) ? lsHi.x : lsLo.x, y = (i & 2) ? lsHi.y : lsLo.y;
+            float z = (glm::dot(n, p) - n.x * x - n.y * y) / n.z;
+            z = std::clamp(z, zCasterLo - 1e4f, zCasterHi + 1e4f);
+            lsLo.z = std::min(lsLo.z, z - margin);
+            lsHi.z = std::max(lsHi.z, z + margin);
+        }
+    }
+    // orthoRH_ZO maps view z = -near to depth 0 and z = -far to depth 1.
+    const glm::mat4 proj = glm::orthoRH_ZO(lsLo.x, lsHi.x, lsLo.y, lsHi.y, -lsHi.z, -lsLo.z);
+    fit.valid = true;
+    fit.viewProj = proj * view;
+    fit.texelWorldSize = std::max(lsHi.x - lsLo.x, lsHi.y - lsLo.y) / float(mapSize);
+    return fit;
+}
+
+}  // namespace demo

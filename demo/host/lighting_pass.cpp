@@ -1,0 +1,126 @@
+#include "host/lighting_pass.h"
+
+#include "demo_host_spirv.h"
+#include "demo_shared.h"
+
+#include <array>
+
+namespace demo {
+namespace {
+
+bool createSampler(VkDevice device, bool shadowCompare, VkSampler& out, std::string& error) {
+    VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+    sci.magFilter = VK_FILTER_NEAREST;  // the shadow map is gathered (D32 linear filtering is optional)
+    sci.minFilter = VK_FILTER_NEAREST;
+    sci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    const VkSamplerAddressMode mode =
+        shadowCompare ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    sci.addressModeU = sci.addressModeV = sci.addressModeW = mode;
+    sci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;  // depth 1 beyond the map: never occluded
+    sci.compareEnable = shadowCompare;
+    sci.compareOp = VK_COMPARE_OP_LESS_OR_EQUAL;  // lit when receiver depth <= stored occluder depth
+    sci.maxLod = 0.0f;
+    return vkCheck(vkCreateSampler(device, &sci, nullptr, &out), "vkCreateSampler", error);
+}
+
+}  // namespace
+
+bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std::string& error) {
+    const VkDevice device = host.device;
+    if (!createSampler(device, false, pointSampler_, error) ||
+        !createSampler(device, true, shadowSampler, error))
+        return false;
+
+    using namespace shared;
+    const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    const std::array<VkDescriptorSetLayoutBinding, 6> bindings{{
+        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
+        {kBindingAlbedo, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
+        {kBindingNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
+        {kBindingDepth, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
+        {kBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
+        {kBindingHdr, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, cs, nullptr},
+    }};
+    VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    lci.bindingCount = uint32_t(bindings.size());
+    lci.pBindings = bindings.data();
+    if (!vkCheck(vkCreateDescriptorSetLayout(device, &lci, nullptr, &setLayout_),
+                 "vkCreateDescriptorSetLayout", error))
+        return false;
+    const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4},
+                                                     {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}}};
+    VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pci.maxSets = 1;
+    pci.poolSizeCount = uint32_t(sizes.size());
+    pci.pPoolSizes = sizes.data();
+    if (!vkCheck(vkCreateDescriptorPool(device, &pci, nullptr, &pool_), "vkCreateDescriptorPool", error))
+        return false;
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = pool_;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &setLayout_;
+    if (!vkCheck(vkAllocateDescriptorSets(device, &ai, &set_), "vkAllocateDescriptorSets", error))
+        return false;
+
+    const VkDescriptorBufferInfo ubo{in.frameUniforms->buffer, 0, sizeof(FrameUniforms)};
+    const VkImageLayout readOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    const VkImageLayout depthReadOnly = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+    const std::array<VkDescriptorImageInfo, 5> images{{
+        {pointSampler_, in.albedo->view, readOnly},
+        {pointSampler_, in.normal->view, readOnly},
+        {pointSampler_, in.depth->view, depthReadOnly},
+        {shadowSampler, in.shadowMap->view, depthReadOnly},
+        {VK_NULL_HANDLE, in.hdr->view, VK_IMAGE_LAYOUT_GENERAL},
+    }};
+    std::array<VkWriteDescriptorSet, 6> writes{};
+    for (size_t i = 0; i < writes.size(); ++i) {
+        writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+        writes[i].dstSet = set_;
+        writes[i].dstBinding = bindings[i].binding;
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = bindings[i].descriptorType;
+        if (i == 0)
+            writes[i].pBufferInfo = &ubo;
+        else
+            writes[i].pImageInfo = &images[i - 1];
+    }
+    vkUpdateDescriptorSets(device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+
+    VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    plci.setLayoutCount = 1;
+    plci.pSetLayouts = &setLayout_;
+    if (!vkCheck(vkCreatePipelineLayout(device, &plci, nullptr, &layout_), "vkCreatePipelineLayout", error))
+        return false;
+    VkShaderModule module = VK_NULL_HANDLE;
+    if (!createShaderModule(device, spirv::lighting_comp, module, error)) return false;
+    VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    cpci.stage.module = module;
+    cpci.stage.pName = "main";
+    cpci.layout = layout_;
+    const bool ok = vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline_),
+                            "vkCreateComputePipelines", error);
+    vkDestroyShaderModule(device, module, nullptr);
+    return ok;
+}
+
+void LightingPass::destroy(VkDevice device) {
+    if (pipeline_) vkDestroyPipeline(device, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(device, layout_, nullptr);
+    if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
+    if (setLayout_) vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
+    if (pointSampler_) vkDestroySampler(device, pointSampler_, nullptr);
+    if (shadowSampler) vkDestroySampler(device, shadowSampler, nullptr);
+    *this = LightingPass{};
+}
+
+void LightingPass::record(VkCommandBuffer cmd, VkExtent2D extent) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);
+    const uint32_t g = shared::kLightingGroupSize;
+    vkCmdDispatch(cmd, (extent.width + g - 1) / g, (extent.height + g - 1) / g, 1);
+}
+
+}  // namespace demo

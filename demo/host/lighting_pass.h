@@ -1,0 +1,36 @@
+// The deferred lighting compute pass: G-buffer + depth + sun shadow map -> HDR radiance (RGBA16F).
+// See demo/shaders/lighting.comp for the shading formula.
+#pragma once
+
+#include "host/gpu_resources.h"
+
+namespace demo {
+
+struct LightingInputs {
+    const GpuBuffer* frameUniforms = nullptr;  // shared::FrameUniforms
+    const GpuImage* albedo = nullptr;          // SHADER_READ_ONLY_OPTIMAL when dispatched
+    const GpuImage* normal = nullptr;          // SHADER_READ_ONLY_OPTIMAL
+    const GpuImage* depth = nullptr;           // DEPTH_STENCIL_READ_ONLY_OPTIMAL
+    const GpuImage* shadowMap = nullptr;       // DEPTH_STENCIL_READ_ONLY_OPTIMAL
+    const GpuImage* hdr = nullptr;             // GENERAL, written
+};
+
+class LightingPass {
+public:
+    bool create(const VulkanHost& host, const LightingInputs& inputs, std::string& error);
+    void destroy(VkDevice device);
+    // Dispatch only; the caller orders it against the writers and readers of the images.
+    void record(VkCommandBuffer cmd, VkExtent2D extent) const;
+
+    VkSampler shadowSampler = VK_NULL_HANDLE;  // nearest, compare LESS_OR_EQUAL, border = depth 1 (lit)
+
+private:
+    VkSampler pointSampler_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+}  // namespace demo

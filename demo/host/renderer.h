@@ -1,0 +1,109 @@
+// The demo's deferred host renderer: G-buffer (albedo, normal, D32 depth), a directional sun with a
+// shadow map, Lambert lighting into an RGBA16F HDR target, then postfx records its passes into the
+// same command buffer through its public API, then (for display/PNG only) tonemapping.
+//
+// Shading convention (tests rely on it), per RGB channel:
+//   L = albedo/π · E · max(0, n·l) · visibility + albedo · ambient
+// with E the sun illuminance, l the direction toward the sun, visibility from the shadow map
+// (1 when sun.shadows is false); pixels with no geometry get scene.sky.
+#pragma once
+
+#include "host/vulkan_host.h"
+#include "scene/scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace postfx {
+class Context;
+}
+
+namespace demo {
+
+struct RenderOptions {
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    uint32_t frames = 1;       // frames rendered; the last one is returned (later effects accumulate)
+    bool reversedZ = true;     // depth convention of the G-buffer (and of the postfx context)
+    bool infiniteFar = false;  // projection without a far plane
+    uint32_t shadowMapSize = 2048;
+};
+
+// Linear RGBA32F pixels, row-major, top row first.
+struct ImageF {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    std::vector<float> rgba;
+    const float* at(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
+};
+
+// One of the renderer's images, as handed to postfx or to a window's blit/tonemap.
+struct ImageInfo {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;  // 2D, mip 0, layer 0 (depth aspect for depth images)
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{0, 0};
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // layout once a recorded frame has executed
+};
+
+// The sun's shadow map (postfx's fog reads it too).
+struct ShadowMapInfo {
+    ImageInfo image;  // D32_SFLOAT, DEPTH_STENCIL_READ_ONLY_OPTIMAL; standard Z: 0 nearest the sun, cleared 1
+    VkSampler compareSampler = VK_NULL_HANDLE;  // nearest, compare LESS_OR_EQUAL (1 = lit), border depth 1
+    glm::mat4 viewProj{1.0f};  // world -> shadow clip: xy in [-1, 1] (uv = xy / 2 + 1/2), depth in [0, 1]
+    float texelWorldSize = 0;  // [m] edge of one texel
+    bool enabled = false;      // the last recorded frame drew it (sun.shadows and a box or sphere exist)
+};
+
+class Renderer {
+public:
+    static constexpr uint32_t kFramesInFlight = 2;  // render()'s command buffers; postfx is created with it
+
+    static std::unique_ptr<Renderer> create(VulkanHost& host, const RenderOptions& options,
+                                            std::string& error);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Renders `scene` options.frames times and reads back the last frame's HDR radiance (after postfx).
+    // Calls setScene(scene) first.
+    bool render(const Scene& scene, ImageF& out, std::string& error);
+
+    // Builds and uploads the scene's meshes (planes are centred under the camera as it is now).
+    // Waits for the device to be idle first, so it may be called between frames of a window loop.
+    bool setScene(const Scene& scene, std::string& error);
+
+    // Records one frame into `cmd` (recording, outside a render pass): frame uniforms, shadow map
+    // (when scene.sun.shadows), G-buffer, lighting, then postfx. Geometry comes from the last
+    // setScene(); camera, sun, ambient and sky from `scene`. Frames execute in recording order on
+    // host.queue; before recording frame k the caller waits for frame k - kFramesInFlight.
+    // After it, hdrImage() is in GENERAL with COMPUTE_SHADER writes to make visible to its reader.
+    // A caller may read it (blit, tonemap, sample) in TRANSFER, COMPUTE_SHADER or FRAGMENT_SHADER
+    // stages and leave it in any layout: the next frame waits for those stages and discards it.
+    bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex, std::string& error);
+
+    const ImageInfo& hdrImage() const;    // RGBA16F radiance; usage STORAGE | SAMPLED | TRANSFER_SRC
+    const ImageInfo& depthImage() const;  // D32_SFLOAT, DEPTH_STENCIL_READ_ONLY_OPTIMAL
+    const ShadowMapInfo& shadowMap() const;
+    postfx::Context& postfxContext() const;  // the context created from this renderer's handles
+
+    struct Impl;
+
+private:
+    explicit Renderer(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+// Writes linear radiance: .exr as half-float RGBA un-tonemapped (zip), .png as 8-bit RGB tonemapped:
+// exposure 1 / (1.2 · 2^ev100) (camera.ev100), ACES fitted curve (Narkowicz 2015), sRGB OETF.
+// Returns false with `error` on failure (an unknown extension is named).
+bool writeImage(const std::string& path, const ImageF& image, float ev100, std::string& error);
+// .exr -> linear RGBA as stored; .png -> sRGB decoded to linear display values in [0, 1] (the tonemap
+// is not inverted). Missing alpha reads as 1.
+bool readImage(const std::string& path, ImageF& image, std::string& error);
+
+}  // namespace demo

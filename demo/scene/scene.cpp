@@ -1,0 +1,480 @@
+// Scene files (JSON): parsing, validation and serialisation. The format is documented in
+// docs/scene-format.md; keep the two in sync.
+#include "scene/scene.h"
+
+#include "scene/json_text.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <span>
+#include <utility>
+
+namespace demo {
+namespace {
+
+using json = nlohmann::json;
+
+// Thrown by the validators below and caught in parseScene; it never leaves this file.
+struct SceneError {
+    std::string message;
+};
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw SceneError{(path.empty() ? std::string("(root)") : path) + ": " + what};
+}
+
+// ---- JSON text -> DOM ------------------------------------------------------------------------------
+
+// Builds the DOM like nlohmann's own parser, but knows the key path of the value being parsed, so
+// that it can reject duplicate keys, limit the nesting depth (copying and dumping a json are
+// recursive) and name the key of a number that overflows (1e999).
+class DomBuilder final : public json::json_sax_t {
+public:
+    DomBuilder(const std::string& text, json& root) : text_(text), root_(root) {}
+
+    const std::string& error() const { return error_; }
+
+    bool null() override { return value(json(nullptr)); }
+    bool boolean(bool v) override { return value(json(v)); }
+    bool number_integer(number_integer_t v) override { return value(json(v)); }
+    bool number_unsigned(number_unsigned_t v) override { return value(json(v)); }
+    bool number_float(number_float_t v, const string_t& /*text*/) override { return value(json(v)); }
+    bool string(string_t& v) override { return value(json(std::move(v))); }
+    bool binary(binary_t& v) override { return value(json::binary(std::move(v))); }
+    bool start_object(std::size_t /*elements*/) override { return open(json::object()); }
+    bool start_array(std::size_t /*elements*/) override { return open(json::array()); }
+    bool end_object() override { return close(); }
+    bool end_array() override { return close(); }
+
+    bool key(string_t& k) override {
+        Frame& top = stack_.back();
+        const bool duplicate = top.node->contains(k);
+        top.key = std::move(k);
+        if (duplicate) return setError(pendingPath() + ": duplicate key");
+        return true;
+    }
+
+    bool parse_error(std::size_t position, const std::string& lastToken, const json::exception& ex) override {
+        if (ex.id == 406) {  // out_of_range.406: a number literal that overflows a double
+            return setError(pendingPath() + ": expected a finite number, got " + truncated(lastToken, 40));
+        }
+        return setError(json_text::syntaxError(text_, position, ex.what()));
+    }
+
+private:
+    static constexpr std::size_t kMaxDepth = 64;
+
+    struct Frame {
+        json* node;       // an open array or object
+        std::string key;  // object: the key of the value being parsed
+    };
+
+    json* insert(json&& v) {
+        if (stack_.empty()) {
+            root_ = std::move(v);
+            return &root_;
+        }
+        Frame& top = stack_.back();
+        if (top.node->is_array()) {
+            top.node->push_back(std::move(v));
+            return &top.node->back();
+        }
+        json& slot = (*top.node)[top.key];
+        slot = std::move(v);
+        return &slot;
+    }
+
+    bool value(json&& v) {
+        insert(std::move(v));
+        return true;
+    }
+
+    bool open(json&& container) {
+        if (stack_.size() >= kMaxDepth) {
+            return setError(pendingPath() + ": nested deeper than " + std::to_string(kMaxDepth) + " levels");
+        }
+        json* node = insert(std::move(container));
+        stack_.push_back(Frame{node, {}});
+        return true;
+    }
+
+    bool close() {
+        stack_.pop_back();
+        return true;
+    }
+
+    // The key path of the value about to be inserted.
+    std::string pendingPath() const {
+        std::string path;
+        for (std::size_t i = 0; i < stack_.size(); ++i) {
+            const Frame& f = stack_[i];
+            if (f.node->is_array()) {
+                // Below the top, the open child is the array's last element; at the top, the next one.
+                const std::size_t size = f.node->size();
+                path = json_text::indexPath(path, i + 1 == stack_.size() ? size : size - 1);
+            } else {
+                path = json_text::keyPath(path, f.key);
+            }
+        }
+        return path.empty() ? std::string("(root)") : path;
+    }
+
+    bool setError(std::string message) {
+        error_ = std::move(message);
+        return false;  // stops the parser
+    }
+
+    static std::string truncated(const std::string& s, std::size_t maxBytes) {
+        return json_text::truncateUtf8(s, maxBytes);
+    }
+
+    const std::string& text_;
+    json& root_;
+    std::vector<Frame> stack_;
+    std::string error_;
+};
+
+// ---- validation helpers ----------------------------------------------------------------------------
+
+std::string child(const std::string& path, const char* key) {
+    return json_text::keyPath(path, key);
+}
+std::string element(const std::string& path, std::size_t i) {
+    return json_text::indexPath(path, i);
+}
+
+std::string got(const json& j) {
+    return ", got " + json_text::describe(j);
+}
+
+// "a, b, c or d"
+std::string listOf(std::span<const char* const> names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
+        out += names[i];
+    }
+    return out;
+}
+
+void expectObject(const json& j, const std::string& path) {
+    if (!j.is_object()) fail(path, "expected an object" + got(j));
+}
+
+// Unknown keys are errors (typo protection). `what` is e.g. "" or " for a box".
+void checkKeys(const json& obj, const std::string& path, std::span<const char* const> allowed,
+               const std::string& what = "") {
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+        const bool known =
+            std::any_of(allowed.begin(), allowed.end(), [&](const char* name) { return it.key() == name; });
+        if (!known) {
+            fail(json_text::keyPath(path, it.key()),
+                 "unknown key" + what + " (expected " + listOf(allowed) + ")");
+        }
+    }
+}
+
+const json* find(const json& obj, const char* key) {
+    auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+}
+
+const json& require(const json& obj, const std::string& path, const char* key) {
+    const json* v = find(obj, key);
+    if (!v) fail(child(path, key), "missing");
+    return *v;
+}
+
+enum class Range { Any, Positive, NonNegative, Unit };
+
+float readNumber(const json& j, const std::string& path, Range range = Range::Any) {
+    if (!j.is_number()) fail(path, "expected a number" + got(j));
+    const double d = j.get<double>();
+    if (!std::isfinite(d)) fail(path, "expected a finite number" + got(j));
+    if (std::fabs(d) > double(FLT_MAX)) fail(path, "expected a number of magnitude <= 3.4e38" + got(j));
+    const float f = float(d);
+    switch (range) {
+        case Range::Any:
+            break;
+        case Range::Positive:
+            if (!(f > 0.0f)) fail(path, "expected a number > 0" + got(j));
+            break;
+        case Range::NonNegative:
+            if (!(f >= 0.0f)) fail(path, "expected a number >= 0" + got(j));
+            break;
+        case Range::Unit:
+            if (!(f >= 0.0f && f <= 1.0f)) fail(path, "expected a number in [0, 1]" + got(j));
+            break;
+    }
+    return f;
+}
+
+glm::vec3 readVec3(const json& j, const std::string& path, Range range = Range::Any) {
+    if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers" + got(j));
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i)
+        v[i] = readNumber(j[std::size_t(i)], element(path, std::size_t(i)), range);
+    return v;
+}
+
+// A direction: non-zero, returned normalised (computed in double, so tiny vectors are fine too).
+glm::vec3 readDirection(const json& j, const std::string& path) {
+    const glm::dvec3 v(readVec3(j, path));
+    const double length = glm::length(v);
+    if (!(length > 0.0)) fail(path, "expected a non-zero vector" + got(j));
+    return glm::vec3(v / length);
+}
+
+bool readBool(const json& j, const std::string& path) {
+    if (!j.is_boolean()) fail(path, "expected true or false" + got(j));
+    return j.get<bool>();
+}
+
+// ---- scene -----------------------------------------------------------------------------------------
+
+constexpr const char* kTopKeys[] = {"camera", "sun", "ambient", "sky", "objects", "effects"};
+constexpr const char* kCameraKeys[] = {"position", "look_at", "up", "fov_y_deg", "near", "far", "ev100"};
+constexpr const char* kSunKeys[] = {"direction", "illuminance", "shadows"};
+constexpr const char* kPlaneKeys[] = {"type", "point", "normal", "albedo"};
+constexpr const char* kBoxKeys[] = {"type", "center", "half_size", "albedo"};
+constexpr const char* kSphereKeys[] = {"type", "center", "radius", "albedo"};
+
+// The view direction and up vector must make a usable basis: sin(angle) at least this.
+constexpr double kMinSinUpView = 1e-3;
+// look_at must be at least this far from position [m].
+constexpr double kMinLookDistance = 1e-3;
+
+Camera readCamera(const json& j, const std::string& path) {
+    expectObject(j, path);
+    checkKeys(j, path, kCameraKeys);
+    Camera c;
+    c.position = readVec3(require(j, path, "position"), child(path, "position"));
+    c.lookAt = readVec3(require(j, path, "look_at"), child(path, "look_at"));
+    const json* up = find(j, "up");
+    if (up) c.up = readVec3(*up, child(path, "up"));
+
+    const std::string fovPath = child(path, "fov_y_deg");
+    const json& fov = require(j, path, "fov_y_deg");
+    c.fovYDeg = readNumber(fov, fovPath);
+    if (!(c.fovYDeg > 0.0f && c.fovYDeg < 180.0f)) fail(fovPath, "expected a number in (0, 180)" + got(fov));
+
+    c.nearPlane = readNumber(require(j, path, "near"), child(path, "near"), Range::Positive);
+    const json& far = require(j, path, "far");
+    c.farPlane = readNumber(far, child(path, "far"));
+    if (!(c.farPlane > c.nearPlane)) {
+        fail(child(path, "far"),
+             "expected a number > near (" + json_text::formatFloat(c.nearPlane) + ")" + got(far));
+    }
+    if (const json* ev = find(j, "ev100")) c.ev100 = readNumber(*ev, child(path, "ev100"));
+
+    const glm::dvec3 view = glm::dvec3(c.lookAt) - glm::dvec3(c.position);
+    const double distance = glm::length(view);
+    if (!(distance >= kMinLookDistance)) {
+        fail(child(path, "look_at"), "must be at least 1 mm away from " + child(path, "position") +
+                                         " (distance " + json_text::formatFloat(float(distance)) + " m)");
+    }
+    const glm::dvec3 upd(c.up);
+    const double upLength = glm::length(upd);
+    if (!(upLength > 0.0)) fail(child(path, "up"), "expected a non-zero vector" + (up ? got(*up) : ""));
+    if (!(glm::length(glm::cross(view / distance, upd / upLength)) >= kMinSinUpView)) {
+        fail(child(path, "up"),
+             std::string("must not be parallel to the view direction (look_at - position)") +
+                 (up ? "" : "; up defaults to [0, 1, 0]"));
+    }
+    return c;
+}
+
+Sun readSun(const json& j, const std::string& path) {
+    expectObject(j, path);
+    checkKeys(j, path, kSunKeys);
+    Sun s;
+    s.direction = readDirection(require(j, path, "direction"), child(path, "direction"));
+    s.illuminance = readVec3(require(j, path, "illuminance"), child(path, "illuminance"), Range::NonNegative);
+    s.shadows = readBool(require(j, path, "shadows"), child(path, "shadows"));
+    return s;
+}
+
+Object readObject(const json& j, const std::string& path) {
+    expectObject(j, path);
+    const std::string typePath = child(path, "type");
+    const json& type = require(j, path, "type");
+    if (!type.is_string()) fail(typePath, "expected a string (plane, box or sphere)" + got(type));
+    const std::string& name = type.get_ref<const std::string&>();
+
+    Object o;
+    const auto albedo = [&] {
+        return readVec3(require(j, path, "albedo"), child(path, "albedo"), Range::Unit);
+    };
+    if (name == "plane") {
+        checkKeys(j, path, kPlaneKeys, " for a plane");
+        o.type = ObjectType::Plane;
+        o.position = readVec3(require(j, path, "point"), child(path, "point"));
+        o.normal = readDirection(require(j, path, "normal"), child(path, "normal"));
+        o.albedo = albedo();
+    } else if (name == "box") {
+        checkKeys(j, path, kBoxKeys, " for a box");
+        o.type = ObjectType::Box;
+        o.position = readVec3(require(j, path, "center"), child(path, "center"));
+        o.halfSize = readVec3(require(j, path, "half_size"), child(path, "half_size"), Range::Positive);
+        o.albedo = albedo();
+    } else if (name == "sphere") {
+        checkKeys(j, path, kSphereKeys, " for a sphere");
+        o.type = ObjectType::Sphere;
+        o.position = readVec3(require(j, path, "center"), child(path, "center"));
+        o.radius = readNumber(require(j, path, "radius"), child(path, "radius"), Range::Positive);
+        o.albedo = albedo();
+    } else {
+        fail(typePath, "unknown object type " + json_text::quote(name) + " (expected plane, box or sphere)");
+    }
+    return o;
+}
+
+Scene readScene(const json& root) {
+    if (!root.is_object()) fail("", "expected a JSON object" + got(root));
+    checkKeys(root, "", kTopKeys);
+    Scene scene;
+    scene.camera = readCamera(require(root, "", "camera"), "camera");
+    scene.sun = readSun(require(root, "", "sun"), "sun");
+    if (const json* a = find(root, "ambient")) scene.ambient = readVec3(*a, "ambient", Range::NonNegative);
+    if (const json* s = find(root, "sky")) scene.sky = readVec3(*s, "sky", Range::NonNegative);
+
+    const json& objects = require(root, "", "objects");
+    if (!objects.is_array()) fail("objects", "expected an array of objects" + got(objects));
+    scene.objects.reserve(objects.size());
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        scene.objects.push_back(readObject(objects[i], element("objects", i)));
+
+    if (const json* effects = find(root, "effects")) {
+        expectObject(*effects, "effects");  // its content is validated by each effect
+        scene.effects = *effects;
+    }
+    return scene;
+}
+
+// ---- scene -> JSON ---------------------------------------------------------------------------------
+
+json number(float f) {
+    return json(json_text::roundTripDouble(f));
+}
+json vec3(const glm::vec3& v) {
+    return json::array({number(v.x), number(v.y), number(v.z)});
+}
+
+}  // namespace
+
+bool parseScene(const std::string& jsonText, Scene& scene, std::string& error) {
+    std::string message;
+    try {
+        json root;
+        DomBuilder builder(jsonText, root);
+        if (json::sax_parse(jsonText, &builder, json::input_format_t::json, /*strict=*/true)) {
+            Scene parsed = readScene(root);
+            scene = std::move(parsed);
+            error.clear();
+            return true;
+        }
+        message = builder.error();
+    } catch (const SceneError& e) {
+        message = e.message;
+    } catch (const std::exception& e) {
+        message = std::string("(root): cannot read the scene: ") + e.what();
+    } catch (...) {
+        message = "(root): cannot read the scene: unknown error";
+    }
+    error = json_text::oneLine(message.empty() ? std::string("(root): invalid scene") : message);
+    return false;
+}
+
+bool loadSceneFile(const std::string& path, Scene& scene, std::string& error) {
+    std::string message;
+    try {
+        std::error_code ec;
+        const auto status = std::filesystem::status(path, ec);
+        if (!std::filesystem::exists(status)) {
+            message = "no such file";
+        } else if (ec) {
+            message = "cannot open: " + ec.message();
+        } else if (!std::filesystem::is_regular_file(status)) {
+            message = "not a regular file";
+        } else {
+            std::ifstream in(path, std::ios::binary);
+            std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+            if (!in.good() && !in.eof()) {
+                message = "cannot read the file";
+            } else if (parseScene(text, scene, error)) {
+                return true;
+            } else {
+                message = error;
+            }
+        }
+    } catch (const std::exception& e) {
+        message = std::string("cannot read the file: ") + e.what();
+    } catch (...) {
+        message = "cannot read the file";
+    }
+    error = json_text::oneLine(path + ": " + message);
+    return false;
+}
+
+nlohmann::json sceneToJson(const Scene& scene) {
+    json j = json::object();
+    const Camera& c = scene.camera;
+    j["camera"] = {
+        {"position", vec3(c.position)},   {"look_at", vec3(c.lookAt)},   {"up", vec3(c.up)},
+        {"fov_y_deg", number(c.fovYDeg)}, {"near", number(c.nearPlane)}, {"far", number(c.farPlane)},
+        {"ev100", number(c.ev100)}};
+    j["sun"] = {{"direction", vec3(scene.sun.direction)},
+                {"illuminance", vec3(scene.sun.illuminance)},
+                {"shadows", scene.sun.shadows}};
+    j["ambient"] = vec3(scene.ambient);
+    j["sky"] = vec3(scene.sky);
+    json objects = json::array();
+    for (const Object& o : scene.objects) {
+        switch (o.type) {
+            case ObjectType::Plane:
+                objects.push_back({{"type", "plane"},
+                                   {"point", vec3(o.position)},
+                                   {"normal", vec3(o.normal)},
+                                   {"albedo", vec3(o.albedo)}});
+                break;
+            case ObjectType::Box:
+                objects.push_back({{"type", "box"},
+                                   {"center", vec3(o.position)},
+                                   {"half_size", vec3(o.halfSize)},
+                                   {"albedo", vec3(o.albedo)}});
+                break;
+            case ObjectType::Sphere:
+                objects.push_back({{"type", "sphere"},
+                                   {"center", vec3(o.position)},
+                                   {"radius", number(o.radius)},
+                                   {"albedo", vec3(o.albedo)}});
+                break;
+        }
+    }
+    j["objects"] = std::move(objects);
+    j["effects"] = scene.effects.is_object() ? scene.effects : json::object();
+    return j;
+}
+
+Scene defaultScene() {
+    // Parsed once; tests/unit/test_scene.cpp checks that the embedded file is valid.
+    static const Scene scene = [] {
+        Scene s;
+        std::string error;
+        if (!parseScene(defaultSceneJson(), s, error)) {
+            std::fprintf(stderr, "demo: the built-in default scene is invalid: %s\n", error.c_str());
+            return Scene{};
+        }
+        return s;
+    }();
+    return scene;
+}
+
+}  // namespace demo

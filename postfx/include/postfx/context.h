@@ -1,0 +1,102 @@
+// The postfx context: one per VkDevice, created from handles the host lends.
+//
+// Lifecycle (as AMD FidelityFX): Context::create once, Context::record once per frame into the host's
+// command buffer, destroy (the unique_ptr) after the host has waited for the device to go idle.
+// postfx loads every device-level function through the host's vkGetDeviceProcAddr and every
+// instance-level function through the host's vkGetInstanceProcAddr; it links no Vulkan loader.
+#pragma once
+
+#include <postfx/result.h>
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace postfx {
+
+// How the host's depth buffer maps view distance to [0, 1]. Fixed at create time.
+struct DepthConvention {
+    bool reversedZ = true;     // true: near plane at depth 1, far at 0 (recommended with D32_SFLOAT)
+    bool infiniteFar = false;  // true: projection has no far plane (far at depth 0 / 1 reached at infinity)
+};
+
+struct ContextCreateInfo {
+    // Borrowed handles; the host keeps ownership and must outlive the context.
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;  // for physical-device queries
+    PFN_vkGetDeviceProcAddr getDeviceProcAddr = nullptr;      // every device call goes through this
+    uint32_t queueFamilyIndex = 0;  // family of the queue that will execute recorded command buffers;
+                                    // must support compute
+    const VkAllocationCallbacks* allocator = nullptr;  // optional, used for every Vulkan object
+
+    VkExtent2D maxExtent = {3840, 2160};  // largest color/depth extent that record() accepts [pixels]
+    DepthConvention depth;
+    uint32_t framesInFlight = 2;  // frames the host may record before waiting on the oldest, 1..8
+    bool gpuTimings = true;       // write timestamp queries around each pass (see readPassTimings)
+
+    MessageCallback messageCallback = nullptr;  // optional
+    void* messageUserData = nullptr;
+};
+
+// One host image handed to postfx for one record() call. postfx never owns it: it uses the view the
+// host created and leaves the image in `layout` when the recorded commands have run.
+struct ImageInput {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;  // 2D view of mip 0, layer 0
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent = {0, 0};
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // layout at the point record() is recorded
+
+    bool present() const { return image != VK_NULL_HANDLE; }
+};
+
+// Everything postfx needs for one frame.
+struct FrameInfo {
+    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;  // recording, outside a render pass
+    uint64_t frameIndex = 0;  // increases by one per frame; selects per-frame resources and noise seeds
+
+    // HDR scene color, linear radiance [W/(sr·m²) or cd/m², the host's choice, used consistently].
+    // Formats: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, usage STORAGE. Effects composite into it.
+    ImageInput color;
+    // Scene depth, D32_SFLOAT / D16_UNORM / D24_UNORM_S8_UINT / X8_D24_UNORM_PACK32, usage SAMPLED,
+    // same extent as color, in the context's DepthConvention.
+    ImageInput depth;
+};
+
+// GPU time of one postfx pass in one frame.
+struct PassTiming {
+    std::string name;  // "fog.raymarch" (effect.pass)
+    double milliseconds = 0.0;
+};
+
+class Context {
+public:
+    // Creates a context; on failure `out` stays empty and the status names the problem.
+    static Status create(const ContextCreateInfo& info, std::unique_ptr<Context>& out);
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    // Records this frame's passes into frame.commandBuffer. The host must have waited until the
+    // frame recorded framesInFlight frames ago has completed on the GPU.
+    Status record(const FrameInfo& frame);
+
+    // Timings of the passes recorded for `frameIndex`. Returns NotReady while the GPU has not finished
+    // that frame, InvalidArgument if that frame's queries were overwritten by a newer frame (more than
+    // framesInFlight ago) or were never written. Does not wait.
+    Status readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const;
+
+    const ContextCreateInfo& createInfo() const;
+
+    struct Impl;  // internal; defined in postfx/src/core
+
+private:
+    explicit Context(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace postfx

@@ -1,0 +1,5 @@
+// Umbrella header of postfx, volumetric post effects for Vulkan renderers.
+#pragma once
+
+#include <postfx/context.h>
+#include <postfx/result.h>

@@ -1,0 +1,70 @@
+#include "core/barriers.h"
+
+namespace postfx::core {
+
+void transition(const Gpu& gpu, VkCommandBuffer cmd, const ImageTransition& t) {
+    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+    barrier.srcAccessMask = t.srcAccess;
+    barrier.dstAccessMask = t.dstAccess;
+    barrier.oldLayout = t.oldLayout;
+    barrier.newLayout = t.newLayout;
+    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    barrier.image = t.image;
+    barrier.subresourceRange = {t.aspect, 0, 1, 0, 1};
+    gpu.fn.vkCmdPipelineBarrier(cmd, t.srcStage, t.dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
+ImageTransition acquireHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout hostLayout,
+                                 VkImageLayout layout, VkAccessFlags computeAccess) {
+    ImageTransition t;
+    t.image = image;
+    t.aspect = aspect;
+    t.oldLayout = hostLayout;
+    t.newLayout = layout;
+    t.srcStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+    t.srcAccess = VK_ACCESS_MEMORY_WRITE_BIT;
+    t.dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    t.dstAccess = computeAccess;
+    return t;
+}
+
+ImageTransition releaseHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout layout,
+                                 VkImageLayout hostLayout, VkAccessFlags computeAccess) {
+    ImageTransition t;
+    t.image = image;
+    t.aspect = aspect;
+    t.oldLayout = layout;
+    t.newLayout = hostLayout;
+    t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    // Reads need no availability, but a layout change must still wait for them (execution dependency).
+    t.srcAccess = computeAccess & (VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+    t.dstStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+    t.dstAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+    return t;
+}
+
+void computeToCompute(const Gpu& gpu, VkCommandBuffer cmd) {
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    gpu.fn.vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+VkImageAspectFlags aspectOfFormat(VkFormat format) {
+    switch (format) {
+        case VK_FORMAT_D16_UNORM:
+        case VK_FORMAT_D32_SFLOAT:
+        case VK_FORMAT_X8_D24_UNORM_PACK32:
+            return VK_IMAGE_ASPECT_DEPTH_BIT;
+        case VK_FORMAT_D16_UNORM_S8_UINT:
+        case VK_FORMAT_D24_UNORM_S8_UINT:
+        case VK_FORMAT_D32_SFLOAT_S8_UINT:
+            return VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
+        default:
+            return VK_IMAGE_ASPECT_COLOR_BIT;
+    }
+}
+
+}  // namespace postfx::core

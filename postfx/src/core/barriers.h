@@ -1,0 +1,38 @@
+// Pipeline barriers for postfx's passes.
+//
+// postfx does not know what the host did with an image before record() nor what it does after, so a
+// host image entering postfx waits on all prior commands' writes (ALL_COMMANDS / MEMORY_WRITE) and
+// leaving postfx makes postfx's writes visible to all later commands. Between postfx's own passes
+// the barriers are exact (compute write -> compute read).
+#pragma once
+
+#include "core/gpu.h"
+
+namespace postfx::core {
+
+struct ImageTransition {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+    VkImageLayout oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    VkImageLayout newLayout = VK_IMAGE_LAYOUT_GENERAL;
+    VkPipelineStageFlags srcStage = VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT;
+    VkAccessFlags srcAccess = 0;
+    VkPipelineStageFlags dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    VkAccessFlags dstAccess = 0;
+};
+
+void transition(const Gpu& gpu, VkCommandBuffer cmd, const ImageTransition& t);
+
+// A host image (in `hostLayout`) about to be accessed by postfx compute passes in `layout`.
+ImageTransition acquireHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout hostLayout,
+                                 VkImageLayout layout, VkAccessFlags computeAccess);
+// The same image handed back to the host in `hostLayout` after postfx's compute access.
+ImageTransition releaseHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout layout,
+                                 VkImageLayout hostLayout, VkAccessFlags computeAccess);
+
+// Compute shader writes -> compute shader reads (or writes) of the same resources (global barrier).
+void computeToCompute(const Gpu& gpu, VkCommandBuffer cmd);
+
+VkImageAspectFlags aspectOfFormat(VkFormat format);
+
+}  // namespace postfx::core

@@ -1,0 +1,153 @@
+#include <postfx/context.h>
+
+#include "core/barriers.h"
+#include "core/context_impl.h"
+
+#include <string>
+
+namespace postfx {
+
+namespace {
+
+constexpr uint32_t kMaxFramesInFlight = 8;
+constexpr uint32_t kDescriptorSetsPerFrame = 64;
+
+Status invalid(std::string message) {
+    return {Result::InvalidArgument, std::move(message)};
+}
+
+Status validateCreateInfo(const ContextCreateInfo& info) {
+    if (!info.instance) return invalid("ContextCreateInfo.instance is VK_NULL_HANDLE");
+    if (!info.physicalDevice) return invalid("ContextCreateInfo.physicalDevice is VK_NULL_HANDLE");
+    if (!info.device) return invalid("ContextCreateInfo.device is VK_NULL_HANDLE");
+    if (!info.getInstanceProcAddr) return invalid("ContextCreateInfo.getInstanceProcAddr is null");
+    if (!info.getDeviceProcAddr) return invalid("ContextCreateInfo.getDeviceProcAddr is null");
+    if (info.maxExtent.width == 0 || info.maxExtent.height == 0)
+        return invalid("ContextCreateInfo.maxExtent is " + std::to_string(info.maxExtent.width) + "x" +
+                       std::to_string(info.maxExtent.height) + ": both sides must be > 0");
+    if (info.framesInFlight == 0 || info.framesInFlight > kMaxFramesInFlight)
+        return invalid("ContextCreateInfo.framesInFlight is " + std::to_string(info.framesInFlight) +
+                       ": must be in 1.." + std::to_string(kMaxFramesInFlight));
+    return Status::success();
+}
+
+bool isColorFormat(VkFormat f) {
+    return f == VK_FORMAT_R16G16B16A16_SFLOAT || f == VK_FORMAT_R32G32B32A32_SFLOAT;
+}
+
+bool isDepthFormat(VkFormat f) {
+    return f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM || f == VK_FORMAT_D24_UNORM_S8_UINT ||
+           f == VK_FORMAT_X8_D24_UNORM_PACK32 || f == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+std::string extentText(VkExtent2D e) {
+    return std::to_string(e.width) + "x" + std::to_string(e.height);
+}
+
+Status validateImage(const ImageInput& image, const char* name, bool (*formatOk)(VkFormat),
+                     const char* formats, VkExtent2D maxExtent) {
+    const std::string n = std::string("FrameInfo.") + name;
+    if (!image.present()) return invalid(n + ".image is VK_NULL_HANDLE");
+    if (!image.view) return invalid(n + ".view is VK_NULL_HANDLE");
+    if (!formatOk(image.format))
+        return invalid(n + ".format " + std::to_string(image.format) + " is not supported (expected " +
+                       formats + ")");
+    if (image.extent.width == 0 || image.extent.height == 0)
+        return invalid(n + ".extent is " + extentText(image.extent));
+    if (image.extent.width > maxExtent.width || image.extent.height > maxExtent.height)
+        return invalid(n + ".extent " + extentText(image.extent) + " exceeds ContextCreateInfo.maxExtent " +
+                       extentText(maxExtent));
+    if (image.layout == VK_IMAGE_LAYOUT_UNDEFINED || image.layout == VK_IMAGE_LAYOUT_PREINITIALIZED)
+        return invalid(n + ".layout is UNDEFINED/PREINITIALIZED: postfx needs the image's contents");
+    return Status::success();
+}
+
+}  // namespace
+
+Status Context::Impl::report(Status status) const {
+    if (!status.ok() && info.messageCallback)
+        info.messageCallback(MessageSeverity::Error, status.message.c_str(), info.messageUserData);
+    return status;
+}
+
+void Context::Impl::warn(const std::string& message) const {
+    if (info.messageCallback)
+        info.messageCallback(MessageSeverity::Warning, message.c_str(), info.messageUserData);
+}
+
+Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& out) {
+    out.reset();
+    auto fail = [&](Status s) {
+        if (info.messageCallback)
+            info.messageCallback(MessageSeverity::Error, s.message.c_str(), info.messageUserData);
+        return s;
+    };
+    if (Status s = validateCreateInfo(info); !s) return fail(s);
+
+    auto impl = std::make_unique<Impl>();
+    impl->info = info;
+    core::Gpu& gpu = impl->gpu;
+    if (Status s = gpu.init(info); !s) return fail(s);
+
+    uint32_t familyCount = 0;
+    gpu.fn.vkGetPhysicalDeviceQueueFamilyProperties(info.physicalDevice, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    gpu.fn.vkGetPhysicalDeviceQueueFamilyProperties(info.physicalDevice, &familyCount, families.data());
+    if (info.queueFamilyIndex >= familyCount)
+        return fail(invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
+                            " is out of range (the device has " + std::to_string(familyCount) +
+                            " families)"));
+    const VkQueueFamilyProperties& family = families[info.queueFamilyIndex];
+    if (!(family.queueFlags & VK_QUEUE_COMPUTE_BIT))
+        return fail(invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
+                            " does not support compute"));
+
+    if (Status s =
+            impl->timer.create(gpu, info.framesInFlight, info.gpuTimings ? family.timestampValidBits : 0);
+        !s)
+        return fail(s);
+    if (info.gpuTimings && family.timestampValidBits == 0)
+        impl->warn("queue family " + std::to_string(info.queueFamilyIndex) +
+                   " has no timestamps: no GPU timings");
+    for (uint32_t i = 0; i < info.framesInFlight; ++i) {
+        impl->arenas.push_back(std::make_unique<core::DescriptorArena>());
+        if (Status s = impl->arenas.back()->create(gpu, kDescriptorSetsPerFrame); !s) return fail(s);
+    }
+    out.reset(new Context(std::move(impl)));
+    return Status::success();
+}
+
+Context::Context(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Context::~Context() = default;
+
+const ContextCreateInfo& Context::createInfo() const {
+    return impl_->info;
+}
+
+Status Context::record(const FrameInfo& frame) {
+    Impl& impl = *impl_;
+    if (!frame.commandBuffer) return impl.report(invalid("FrameInfo.commandBuffer is VK_NULL_HANDLE"));
+    if (Status s = validateImage(frame.color, "color", isColorFormat,
+                                 "R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT", impl.info.maxExtent);
+        !s)
+        return impl.report(s);
+    if (Status s = validateImage(frame.depth, "depth", isDepthFormat, "a depth format", impl.info.maxExtent);
+        !s)
+        return impl.report(s);
+    if (frame.depth.extent.width != frame.color.extent.width ||
+        frame.depth.extent.height != frame.color.extent.height)
+        return impl.report(invalid("FrameInfo.depth.extent " + extentText(frame.depth.extent) +
+                                   " differs from FrameInfo.color.extent " + extentText(frame.color.extent)));
+
+    if (Status s = impl.arena(frame.frameIndex).beginFrame(); !s) return impl.report(s);
+    impl.timer.beginFrame(frame.commandBuffer, frame.frameIndex);
+    // Effects record their passes here (none are enabled in this version).
+    return Status::success();
+}
+
+Status Context::readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const {
+    Status s = impl_->timer.read(frameIndex, out);
+    return s.code == Result::NotReady ? s : impl_->report(std::move(s));
+}
+
+}  // namespace postfx

@@ -1,0 +1,29 @@
+// What a postfx::Context holds. Effects reach the device, the per-frame descriptor sets and the pass
+// timer through it.
+#pragma once
+
+#include <postfx/context.h>
+
+#include "core/compute_pipeline.h"
+#include "core/gpu.h"
+#include "core/pass_timer.h"
+
+#include <memory>
+#include <vector>
+
+namespace postfx {
+
+struct Context::Impl {
+    ContextCreateInfo info;
+    core::Gpu gpu;
+    core::PassTimer timer;
+    std::vector<std::unique_ptr<core::DescriptorArena>> arenas;  // one per frame in flight
+
+    // Sends a failed status to the host's message callback and returns it unchanged.
+    Status report(Status status) const;
+    void warn(const std::string& message) const;
+
+    core::DescriptorArena& arena(uint64_t frameIndex) { return *arenas[frameIndex % arenas.size()]; }
+};
+
+}  // namespace postfx

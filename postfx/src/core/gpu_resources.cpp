@@ -1,0 +1,164 @@
+#include "core/gpu_resources.h"
+
+#include "core/barriers.h"
+
+#include <string>
+#include <utility>
+
+namespace postfx::core {
+
+Status Gpu::init(const ContextCreateInfo& info) {
+    instance = info.instance;
+    physicalDevice = info.physicalDevice;
+    device = info.device;
+    allocator = info.allocator;
+    if (Status s = fn.load(info.instance, info.getInstanceProcAddr, info.device, info.getDeviceProcAddr); !s)
+        return s;
+    fn.vkGetPhysicalDeviceProperties(info.physicalDevice, &properties);
+    fn.vkGetPhysicalDeviceMemoryProperties(info.physicalDevice, &memory);
+    if (properties.apiVersion < VK_API_VERSION_1_1)
+        return {Result::Unsupported,
+                "the device supports Vulkan " + std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) +
+                    "." + std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + "; postfx needs 1.1"};
+    return Status::success();
+}
+
+Status Gpu::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, uint32_t& index) const {
+    for (uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
+        if ((typeBits & (1u << i)) && (memory.memoryTypes[i].propertyFlags & required) == required) {
+            index = i;
+            return Status::success();
+        }
+    }
+    return {Result::Unsupported, "no memory type with flags " + std::to_string(required) +
+                                     " among allowed types " + std::to_string(typeBits)};
+}
+
+namespace {
+
+Status allocate(const Gpu& gpu, const VkMemoryRequirements& req, VkMemoryPropertyFlags flags,
+                const char* name, VkDeviceMemory& memory) {
+    uint32_t type = 0;
+    Status s = gpu.findMemoryType(req.memoryTypeBits, flags, type);
+    if (!s) return {s.code, std::string(name) + ": " + s.message};
+    VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    info.allocationSize = req.size;
+    info.memoryTypeIndex = type;
+    return vulkanStatus(gpu.fn.vkAllocateMemory(gpu.device, &info, gpu.allocator, &memory),
+                        (std::string("vkAllocateMemory for ") + name).c_str());
+}
+
+}  // namespace
+
+GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
+    if (this != &other) {
+        reset();
+        gpu_ = std::exchange(other.gpu_, nullptr);
+        buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        size_ = std::exchange(other.size_, 0);
+        mapped_ = std::exchange(other.mapped_, nullptr);
+    }
+    return *this;
+}
+
+Status GpuBuffer::create(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible,
+                         const char* name) {
+    reset();
+    gpu_ = &gpu;
+    size_ = size;
+    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    info.size = size;
+    info.usage = usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    Status s = vulkanStatus(gpu.fn.vkCreateBuffer(gpu.device, &info, gpu.allocator, &buffer_),
+                            (std::string("vkCreateBuffer for ") + name).c_str());
+    if (!s) return reset(), s;
+    VkMemoryRequirements req;
+    gpu.fn.vkGetBufferMemoryRequirements(gpu.device, buffer_, &req);
+    VkMemoryPropertyFlags flags =
+        hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    if (!(s = allocate(gpu, req, flags, name, memory_))) return reset(), s;
+    if (!(s = vulkanStatus(gpu.fn.vkBindBufferMemory(gpu.device, buffer_, memory_, 0), "vkBindBufferMemory")))
+        return reset(), s;
+    if (hostVisible &&
+        !(s = vulkanStatus(gpu.fn.vkMapMemory(gpu.device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_),
+                           "vkMapMemory")))
+        return reset(), s;
+    return Status::success();
+}
+
+void GpuBuffer::reset() {
+    if (!gpu_) return;
+    if (mapped_) gpu_->fn.vkUnmapMemory(gpu_->device, memory_);
+    if (buffer_) gpu_->fn.vkDestroyBuffer(gpu_->device, buffer_, gpu_->allocator);
+    if (memory_) gpu_->fn.vkFreeMemory(gpu_->device, memory_, gpu_->allocator);
+    gpu_ = nullptr;
+    buffer_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+    mapped_ = nullptr;
+    size_ = 0;
+}
+
+GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
+    if (this != &other) {
+        reset();
+        gpu_ = std::exchange(other.gpu_, nullptr);
+        image_ = std::exchange(other.image_, VK_NULL_HANDLE);
+        view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        bytes_ = std::exchange(other.bytes_, 0);
+        desc_ = other.desc_;
+    }
+    return *this;
+}
+
+Status GpuImage::create(const Gpu& gpu, const ImageDesc& desc, const char* name) {
+    reset();
+    gpu_ = &gpu;
+    desc_ = desc;
+    VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    info.imageType = desc.type;
+    info.format = desc.format;
+    info.extent = desc.extent;
+    info.mipLevels = 1;
+    info.arrayLayers = 1;
+    info.samples = VK_SAMPLE_COUNT_1_BIT;
+    info.tiling = VK_IMAGE_TILING_OPTIMAL;
+    info.usage = desc.usage;
+    info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    Status s = vulkanStatus(gpu.fn.vkCreateImage(gpu.device, &info, gpu.allocator, &image_),
+                            (std::string("vkCreateImage for ") + name).c_str());
+    if (!s) return reset(), s;
+    VkMemoryRequirements req;
+    gpu.fn.vkGetImageMemoryRequirements(gpu.device, image_, &req);
+    bytes_ = req.size;
+    if (!(s = allocate(gpu, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name, memory_))) return reset(), s;
+    if (!(s = vulkanStatus(gpu.fn.vkBindImageMemory(gpu.device, image_, memory_, 0), "vkBindImageMemory")))
+        return reset(), s;
+    VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    viewInfo.image = image_;
+    viewInfo.viewType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.format = desc.format;
+    viewInfo.subresourceRange = {aspectOfFormat(desc.format), 0, 1, 0, 1};
+    if (!(s = vulkanStatus(gpu.fn.vkCreateImageView(gpu.device, &viewInfo, gpu.allocator, &view_),
+                           (std::string("vkCreateImageView for ") + name).c_str())))
+        return reset(), s;
+    return Status::success();
+}
+
+void GpuImage::reset() {
+    if (!gpu_) return;
+    if (view_) gpu_->fn.vkDestroyImageView(gpu_->device, view_, gpu_->allocator);
+    if (image_) gpu_->fn.vkDestroyImage(gpu_->device, image_, gpu_->allocator);
+    if (memory_) gpu_->fn.vkFreeMemory(gpu_->device, memory_, gpu_->allocator);
+    gpu_ = nullptr;
+    image_ = VK_NULL_HANDLE;
+    view_ = VK_NULL_HANDLE;
+    memory_ = VK_NULL_HANDLE;
+    bytes_ = 0;
+}
+
+}  // namespace postfx::core

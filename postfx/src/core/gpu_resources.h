@@ -1,0 +1,65 @@
+// GPU buffers and images that postfx owns (its intermediate and cached resources; never host images).
+// Move-only RAII wrappers: destroyed with the Gpu they were created on.
+#pragma once
+
+#include "core/gpu.h"
+
+namespace postfx::core {
+
+class GpuBuffer {
+public:
+    GpuBuffer() = default;
+    GpuBuffer(GpuBuffer&& other) noexcept { *this = std::move(other); }
+    GpuBuffer& operator=(GpuBuffer&& other) noexcept;
+    ~GpuBuffer() { reset(); }
+
+    // hostVisible: HOST_VISIBLE|HOST_COHERENT memory, persistently mapped (mapped() != nullptr).
+    Status create(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible,
+                  const char* name);
+    void reset();
+
+    VkBuffer handle() const { return buffer_; }
+    VkDeviceSize size() const { return size_; }
+    void* mapped() const { return mapped_; }
+
+private:
+    const Gpu* gpu_ = nullptr;
+    VkBuffer buffer_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize size_ = 0;
+    void* mapped_ = nullptr;
+};
+
+struct ImageDesc {
+    VkImageType type = VK_IMAGE_TYPE_2D;  // 2D or 3D
+    VkFormat format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    VkExtent3D extent = {1, 1, 1};
+    VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+};
+
+class GpuImage {
+public:
+    GpuImage() = default;
+    GpuImage(GpuImage&& other) noexcept { *this = std::move(other); }
+    GpuImage& operator=(GpuImage&& other) noexcept;
+    ~GpuImage() { reset(); }
+
+    // Device-local image with one mip and layer, and a view of it. Starts in layout UNDEFINED.
+    Status create(const Gpu& gpu, const ImageDesc& desc, const char* name);
+    void reset();
+
+    VkImage handle() const { return image_; }
+    VkImageView view() const { return view_; }
+    const ImageDesc& desc() const { return desc_; }
+    VkDeviceSize bytes() const { return bytes_; }  // device memory it holds
+
+private:
+    const Gpu* gpu_ = nullptr;
+    VkImage image_ = VK_NULL_HANDLE;
+    VkImageView view_ = VK_NULL_HANDLE;
+    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    VkDeviceSize bytes_ = 0;
+    ImageDesc desc_;
+};
+
+}  // namespace postfx::core

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Builds postfx with warnings as errors and runs every test (host-only and GPU tests on lavapipe, under
+# the Khronos validation layer). Installs missing Debian packages first. Build folder: build/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh test
+scripts/check-format.sh
+jobs=$(nproc)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOSTFX_WERROR=ON >/dev/null
+cmake --build build -j"$jobs"
+# Tests that need a Vulkan device run on Mesa's lavapipe unless POSTFX_DEVICE picks another.
+ctest --test-dir build --output-on-failure -j"$jobs" "$@"
