@@ -2,6 +2,7 @@
 #                      INCLUDE_DIRS <dirs...>)
 # Compiles each shader at build time and adds a generated source to <target> that defines
 #   std::span<const uint32_t> <namespace>::<name>   (name: relative path with '/' and '.' as '_')
+# A variant is written `path@DEFINE`: compiled with -DDEFINE, named <name>_<DEFINE>.
 # declared in the generated header <target>_spirv.h. No shader file is read at run time.
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
@@ -12,18 +13,28 @@ function(postfx_embed_shaders target)
     set(decls "")
     set(defs "")
     set(headers "")
-    foreach(rel IN LISTS ARG_SHADERS)
+    foreach(entry IN LISTS ARG_SHADERS)
+        set(define "")
+        set(rel "${entry}")
+        if(entry MATCHES "^(.*)@([A-Za-z0-9_]+)$")
+            set(rel "${CMAKE_MATCH_1}")
+            set(define "${CMAKE_MATCH_2}")
+        endif()
         string(REGEX REPLACE "[/.]" "_" name "${rel}")
+        if(define)
+            string(APPEND name "_${define}")
+        endif()
         set(src "${ARG_SOURCE_DIR}/${rel}")
         set(out "${gen_dir}/${name}.h")
         add_custom_command(
             OUTPUT "${out}"
             COMMAND "${CMAKE_COMMAND}" -DGLSLANG=${GLSLANG_VALIDATOR} -DSRC=${src} -DOUT=${out}
                     -DVAR=${name}_words "-DINCLUDES=${ARG_INCLUDE_DIRS}" -DDEPFILE=${out}.d
+                    -DDEFINE=${define}
                     -P "${PROJECT_SOURCE_DIR}/cmake/compile_glsl.cmake"
             DEPENDS "${src}" "${PROJECT_SOURCE_DIR}/cmake/compile_glsl.cmake"
             DEPFILE "${out}.d"
-            COMMENT "glslang ${rel}"
+            COMMENT "glslang ${entry}"
             VERBATIM)
         list(APPEND headers "${out}")
         string(APPEND decls "extern const std::span<const uint32_t> ${name};\n")

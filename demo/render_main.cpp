@@ -1,24 +1,29 @@
 // postfx-render: renders a demo scene headless (G-buffer, sun + shadow map, lighting, postfx) and
-// writes the HDR result as .exr (linear) or .png (tonemapped).
+// writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog comes from
+// postfx's CPU reference (Renderer::renderReference) instead of the GPU pass.
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
 #include "scene/scene.h"
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 namespace {
 
 constexpr uint32_t kMaxSize = 16384;
 constexpr uint32_t kMaxFrames = 100000;
+constexpr uint32_t kDefaultReferenceSteps = 4096;
+constexpr uint32_t kMaxReferenceSteps = 1u << 20;
 
 const char* kUsage =
     "usage: postfx-render [SCENE.json] -o OUT.exr|OUT.png [--size WxH] [--frames N] [--standard-z]\n"
-    "                     [--infinite-far] [--validation]\n"
+    "                     [--infinite-far] [--validation] [--reference [--reference-steps N]]\n"
     "Renders SCENE.json (the built-in default scene when omitted) headless and writes OUT:\n"
     "  .exr  linear radiance [cd/m^2], half-float RGBA\n"
     "  .png  tonemapped with the camera's ev100 (ACES fitted, sRGB)\n"
@@ -30,12 +35,18 @@ const char* kUsage =
     "  --infinite-far     projection without a far plane\n"
     "  --validation       Vulkan validation layer with synchronization validation (also\n"
     "                     POSTFX_VALIDATION=1); any validation message fails the run\n"
+    "  --reference        the fog from postfx's CPU reference (double precision, no jitter, all\n"
+    "                     CPU threads) instead of the GPU pass, over the same GPU frame (the last)\n"
+    "  --reference-steps N  march steps per pixel of --reference (default 4096), 1..1048576\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
 
 struct Args {
     std::string scene, output;
     demo::RenderOptions render;
     bool validation = false;
+    bool reference = false;
+    uint32_t referenceSteps = kDefaultReferenceSteps;
+    bool referenceStepsGiven = false;
 };
 
 struct UsageError {
@@ -77,6 +88,14 @@ Args parseArgs(int argc, char** argv) {
             args.render.infiniteFar = true;
         } else if (a == "--validation") {
             args.validation = true;
+        } else if (a == "--reference") {
+            args.reference = true;
+        } else if (a == "--reference-steps") {
+            const std::string s = value(i);
+            if (!parseUint(s, 1, kMaxReferenceSteps, args.referenceSteps))
+                throw UsageError{"--reference-steps '" + s + "': expected an integer in 1.." +
+                                 std::to_string(kMaxReferenceSteps)};
+            args.referenceStepsGiven = true;
         } else if (a.size() > 1 && a[0] == '-') {
             throw UsageError{"unknown option '" + a + "' (see --help)"};
         } else if (args.scene.empty()) {
@@ -86,6 +105,7 @@ Args parseArgs(int argc, char** argv) {
         }
     }
     if (args.output.empty()) throw UsageError{"no output file given (-o OUT.exr or -o OUT.png; see --help)"};
+    if (args.referenceStepsGiven && !args.reference) throw UsageError{"--reference-steps needs --reference"};
     std::string ext = std::filesystem::path(args.output).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
@@ -111,15 +131,35 @@ int run(const Args& args) {
     if (!host) return fail("Vulkan: " + error);
     {
         auto renderer = demo::Renderer::create(*host, args.render, error);
+        if (!renderer) return fail(error);
         demo::ImageF image;
-        if (!renderer || !renderer->render(scene, image, error)) return fail(error);
+        if (args.reference) {
+            const auto start = std::chrono::steady_clock::now();
+            if (!renderer->renderReference(scene, image, error, args.referenceSteps)) return fail(error);
+            const double seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (scene.fog.enabled) {
+                std::printf("reference: %u steps/pixel, %.1f s on %u threads\n", args.referenceSteps, seconds,
+                            std::max(1u, std::thread::hardware_concurrency()));
+            } else {
+                std::printf("reference: the scene has no fog (the un-fogged frame), %.1f s\n", seconds);
+            }
+        } else if (!renderer->render(scene, image, error)) {
+            return fail(error);
+        }
         if (!demo::writeImage(args.output, image, scene.camera.ev100, error)) return fail(error);
     }
     if (size_t n = host->validationMessageCount(); n > 0)
         return fail(std::to_string(n) + " Vulkan validation message(s), printed above");
-    std::printf("postfx-render: wrote %s (%ux%u, %u frame%s) on %s\n", args.output.c_str(), args.render.width,
-                args.render.height, args.render.frames, args.render.frames == 1 ? "" : "s",
-                host->deviceDescription().c_str());
+    if (args.reference) {
+        std::printf("postfx-render: wrote %s (%ux%u, frame %u with the fog reference) on %s\n",
+                    args.output.c_str(), args.render.width, args.render.height, args.render.frames - 1,
+                    host->deviceDescription().c_str());
+    } else {
+        std::printf("postfx-render: wrote %s (%ux%u, %u frame%s) on %s\n", args.output.c_str(),
+                    args.render.width, args.render.height, args.render.frames,
+                    args.render.frames == 1 ? "" : "s", host->deviceDescription().c_str());
+    }
     return 0;
 }
 

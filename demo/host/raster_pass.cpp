@@ -47,9 +47,11 @@ bool RasterPass::create(const VulkanHost& host, const RasterPassDesc& desc,
             return false;
         }
     }
+    // TRANSFER_SRC: Renderer::renderReference reads depth and shadow map back for the CPU reference.
     if (!createImage(host, VK_FORMAT_D32_SFLOAT, extent_,
-                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, depth,
-                     error)) {
+                     VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                     depth, error)) {
         error = prefix + error;
         return false;
     }

@@ -43,6 +43,7 @@ Renderer::Impl::~Impl() {
     gbuffer.destroy(device);
     shadow.destroy(device);
     destroyImage(device, hdr);
+    destroyImage(device, fogScratch);
     if (framePool) vkDestroyDescriptorPool(device, framePool, nullptr);
     if (frameSetLayout) vkDestroyDescriptorSetLayout(device, frameSetLayout, nullptr);
     for (GpuBuffer* b : {&frameUniforms, &vertices, &indices, &readback})
@@ -237,7 +238,9 @@ bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
     }
     if (!setScene(scene, error)) return false;
     for (uint32_t f = 0; f < r.options.frames; ++f) {
-        const uint64_t frameIndex = r.nextFrameIndex;
+        // Every call renders frames 0..frames-1 (renderReference() shows frame frames-1). The previous
+        // call waited for all its frames, so restarting the indices reuses nothing still in flight.
+        const uint64_t frameIndex = f;
         const size_t slot = frameIndex % kFramesInFlight;
         VkCommandBuffer cmd = r.commandBuffers[slot];
         // The command buffer and postfx's per-frame resources of frame (index - kFramesInFlight) are free.

@@ -27,7 +27,10 @@ namespace demo {
 struct RenderOptions {
     uint32_t width = 1280;
     uint32_t height = 720;
-    uint32_t frames = 1;       // frames rendered; the last one is returned (later effects accumulate)
+    // Frames rendered by render(), indices 0..frames-1; the last one is returned (later effects
+    // accumulate). The frame index sets postfx's time (index / 60 s) and the fog's jitter pattern, so
+    // render() and renderReference() show the same frame (index frames - 1).
+    uint32_t frames = 1;
     bool reversedZ = true;     // depth convention of the G-buffer (and of the postfx context)
     bool infiniteFar = false;  // projection without a far plane
     uint32_t shadowMapSize = 2048;
@@ -62,6 +65,7 @@ struct ShadowMapInfo {
 class Renderer {
 public:
     static constexpr uint32_t kFramesInFlight = 2;  // render()'s command buffers; postfx is created with it
+    static constexpr double kFrameSeconds = 1.0 / 60.0;  // frame k is at time k · kFrameSeconds [s]
 
     static std::unique_ptr<Renderer> create(VulkanHost& host, const RenderOptions& options,
                                             std::string& error);
@@ -69,21 +73,32 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Renders `scene` options.frames times and reads back the last frame's HDR radiance (after postfx).
-    // Calls setScene(scene) first.
+    // Renders `scene` options.frames times (frame indices 0..frames-1, every call) and reads back the
+    // last frame's HDR radiance (after postfx). Calls setScene(scene) first.
     bool render(const Scene& scene, ImageF& out, std::string& error);
+
+    // The same frame as render() (index options.frames - 1) with postfx's fog replaced by its CPU
+    // reference (postfx::reference::renderFog, double precision, `stepsPerPixel` midpoint steps, no
+    // jitter, all CPU threads). The GPU renders the frame up to lighting; postfx runs too, writing to
+    // a scratch image, so that the noise texture it generates can be read back while the HDR image
+    // keeps the un-fogged scene. Read back: HDR color, depth, shadow map (when drawn), noise (when
+    // on); the camera, sun, ambient, shadow and time inputs are those of the GPU frame. Without fog
+    // the result is the un-fogged scene. `out` has render()'s layout. Calls setScene(scene) first.
+    bool renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel = 4096);
 
     // Builds and uploads the scene's meshes (planes are centred under the camera as it is now).
     // Waits for the device to be idle first, so it may be called between frames of a window loop.
     bool setScene(const Scene& scene, std::string& error);
 
     // Records one frame into `cmd` (recording, outside a render pass): frame uniforms, shadow map
-    // (when scene.sun.shadows), G-buffer, lighting, then postfx. Geometry comes from the last
-    // setScene(); camera, sun, ambient and sky from `scene`. Frames execute in recording order on
-    // host.queue; before recording frame k the caller waits for frame k - kFramesInFlight.
-    // After it, hdrImage() is in GENERAL with COMPUTE_SHADER writes to make visible to its reader.
-    // A caller may read it (blit, tonemap, sample) in TRANSFER, COMPUTE_SHADER or FRAGMENT_SHADER
-    // stages and leave it in any layout: the next frame waits for those stages and discards it.
+    // (when scene.sun.shadows), G-buffer, lighting, then postfx (scene.fog; time frameIndex / 60 s).
+    // Geometry comes from the last setScene(); camera, sun, ambient, sky and fog from `scene`.
+    // Frames execute in recording order on host.queue; before recording frame k the caller waits
+    // for frame k - kFramesInFlight. After it, hdrImage() is in GENERAL with COMPUTE_SHADER writes
+    // to make visible to its reader. A caller may read it (blit, tonemap, sample) in TRANSFER,
+    // COMPUTE_SHADER or FRAGMENT_SHADER stages and leave it in any layout: the next frame waits for
+    // those stages and discards it. postfx reads depthImage() and shadowMap() in COMPUTE_SHADER; the
+    // next frame's raster passes wait for COMPUTE_SHADER before overwriting them.
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex, std::string& error);
 
     const ImageInfo& hdrImage() const;    // RGBA16F radiance; usage STORAGE | SAMPLED | TRANSFER_SRC

@@ -16,12 +16,9 @@ constexpr VkPipelineStageFlags kUniformStages =
     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
-shared::FrameUniforms frameUniforms(const Scene& scene, const RenderOptions& options, const ShadowFit& fit,
-                                    bool shadows) {
+shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions& options,
+                                        const glm::mat4& proj, const ShadowFit& fit, bool shadows) {
     const Camera& cam = scene.camera;
-    const float aspect = float(options.width) / float(options.height);
-    const glm::mat4 proj = perspectiveProjection(glm::radians(cam.fovYDeg), aspect, cam.nearPlane,
-                                                 cam.farPlane, options.reversedZ, options.infiniteFar);
     glm::mat4 viewRel = cameraView(cam);
     viewRel[3] = glm::vec4(0, 0, 0, 1);  // rotation only: positions are camera-relative
 
@@ -42,46 +39,99 @@ shared::FrameUniforms frameUniforms(const Scene& scene, const RenderOptions& opt
 
 }  // namespace
 
+ShadowFit Renderer::Impl::shadowFit(const Scene& scene) const {
+    return fitShadowMap(scene, options.shadowMapSize);
+}
+
+glm::mat4 Renderer::Impl::projection(const Scene& scene) const {
+    const Camera& cam = scene.camera;
+    const float aspect = float(options.width) / float(options.height);
+    return perspectiveProjection(glm::radians(cam.fovYDeg), aspect, cam.nearPlane, cam.farPlane,
+                                 options.reversedZ, options.infiniteFar);
+}
+
+PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit,
+                                          bool shadows) const {
+    PostfxInputs in;
+    in.timeSeconds = double(frameIndex) * kFrameSeconds;
+    in.camera.position = glm::dvec3(scene.camera.position);
+    in.camera.view = cameraView(scene.camera);  // postfx uses its rotation; position is given above
+    in.camera.projection = projection(scene);
+    in.sun.toSun = scene.sun.direction;
+    in.sun.illuminance = scene.sun.illuminance;
+    in.ambient = scene.ambient;
+    if (shadows) {
+        const ImageInfo& s = shadowInfo.image;
+        in.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout};
+        in.shadowMap.worldToClip = glm::dmat4(fit.viewProj);
+        in.shadowMap.reversedZ = false;
+        // The shadow pass already biases the stored depth by the rasteriser's slope-scaled bias;
+        // on top of that, one texel's depth change on a surface at 45 degrees to the sun (the
+        // shadow projection is orthographic, so depth per metre along the sun is |row 2 of
+        // viewProj|). It keeps the last samples of a ray ending on a lit surface lit without
+        // visibly moving shadow edges in the volume (a texel is ~1-3 cm in the demo scenes).
+        const glm::mat4& m = fit.viewProj;
+        const float depthPerMetre = glm::length(glm::vec3(m[0][2], m[1][2], m[2][2]));
+        in.shadowMap.depthBias = fit.texelWorldSize * depthPerMetre;
+    }
+    in.fog = scene.fog;
+    return in;
+}
+
 bool Renderer::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex, std::string& error) {
-    Impl& r = *impl_;
-    const ShadowFit fit = fitShadowMap(scene, r.options.shadowMapSize);
-    const bool shadows = scene.sun.shadows && fit.valid;
-    r.shadowInfo.enabled = shadows;
-    r.shadowInfo.viewProj = fit.viewProj;
-    r.shadowInfo.texelWorldSize = fit.texelWorldSize;
+    return impl_->recordFrame(cmd, scene, frameIndex, postfx::ImageInput{}, error);
+}
+
+bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
+                                 const postfx::ImageInput& fogOutput, std::string& error) {
+    const ShadowFit fit = shadowFit(scene);
+    const bool shadows = drawsShadows(scene, fit);
+    shadowInfo.enabled = shadows;
+    shadowInfo.viewProj = fit.viewProj;
+    shadowInfo.texelWorldSize = fit.texelWorldSize;
 
     // Frame uniforms: overwrite after the previous frame's readers (WAR), then publish to this frame's.
-    const shared::FrameUniforms u = frameUniforms(scene, r.options, fit, shadows);
-    bufferBarrier(cmd, r.frameUniforms, kUniformStages, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+    const shared::FrameUniforms u = makeFrameUniforms(scene, options, projection(scene), fit, shadows);
+    bufferBarrier(cmd, frameUniforms, kUniformStages, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_TRANSFER_WRITE_BIT);
-    vkCmdUpdateBuffer(cmd, r.frameUniforms.buffer, 0, sizeof(u), &u);
-    bufferBarrier(cmd, r.frameUniforms, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+    vkCmdUpdateBuffer(cmd, frameUniforms.buffer, 0, sizeof(u), &u);
+    bufferBarrier(cmd, frameUniforms, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   kUniformStages, VK_ACCESS_UNIFORM_READ_BIT);
 
-    // Raster passes leave their attachments readable by compute shaders.
-    if (shadows) r.shadow.record(cmd, r.frameSet, r.vertices, r.indices, r.draws);
-    r.gbuffer.record(cmd, r.frameSet, r.vertices, r.indices, r.draws);
+    // Raster passes leave their attachments readable by compute shaders. They start by discarding
+    // their attachments after the previous frame's COMPUTE_SHADER reads: the lighting pass and
+    // postfx (whose release barriers end in COMPUTE_SHADER -> ALL_COMMANDS) read depth and shadow map.
+    if (shadows) shadow.record(cmd, frameSet, vertices, indices, draws);
+    gbuffer.record(cmd, frameSet, vertices, indices, draws);
 
     // Lighting overwrites every HDR pixel: discard the old content once its readers are done.
-    imageBarrier(cmd, r.hdr, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kHdrReaderStages, 0,
-                 kCompute, VK_ACCESS_SHADER_WRITE_BIT);
-    r.lighting.record(cmd, r.extent);
-    imageBarrier(cmd, r.hdr, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kCompute,
+    imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kHdrReaderStages, 0, kCompute,
+                 VK_ACCESS_SHADER_WRITE_BIT);
+    lighting.record(cmd, extent);
+    imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, kCompute,
                  VK_ACCESS_SHADER_WRITE_BIT, kCompute,
                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
 
-    // postfx composites into the HDR image (compute only) and returns it in GENERAL.
+    // postfx reads depth and shadow map and composites into the HDR image (compute only), and
+    // returns every image in the layout it was given.
+    const PostfxInputs in = postfxInputs(scene, frameIndex, fit, shadows);
     postfx::FrameInfo frame;
     frame.commandBuffer = cmd;
     frame.frameIndex = frameIndex;
-    frame.color = {r.hdr.image, r.hdr.view, r.hdr.format, r.extent, VK_IMAGE_LAYOUT_GENERAL};
-    frame.depth = {r.gbuffer.depth.image, r.gbuffer.depth.view, r.gbuffer.depth.format, r.extent,
+    frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL};
+    frame.depth = {gbuffer.depth.image, gbuffer.depth.view, gbuffer.depth.format, extent,
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
-    if (postfx::Status s = r.postfx->record(frame); !s.ok()) {
+    frame.output = fogOutput;
+    frame.timeSeconds = in.timeSeconds;
+    frame.camera = in.camera;
+    frame.sun = in.sun;
+    frame.ambient = in.ambient;
+    frame.shadowMap = in.shadowMap;
+    frame.fog = in.fog;
+    if (postfx::Status s = postfx->record(frame); !s.ok()) {
         error = "postfx record: " + s.message;
         return false;
     }
-    r.nextFrameIndex = std::max(r.nextFrameIndex, frameIndex + 1);
     return true;
 }
 

@@ -2,6 +2,7 @@
 // (one frame's commands).
 #pragma once
 
+#include "host/camera_math.h"
 #include "host/gpu_resources.h"
 #include "host/lighting_pass.h"
 #include "host/raster_pass.h"
@@ -12,6 +13,18 @@
 #include <array>
 
 namespace demo {
+
+// What postfx is told about one frame besides the images: built by ONE function
+// (Renderer::Impl::postfxInputs) for both the GPU frame (postfx::FrameInfo) and the CPU reference
+// (postfx::reference::FogInputs), so that the two cannot diverge.
+struct PostfxInputs {
+    double timeSeconds = 0.0;
+    postfx::CameraInput camera;
+    postfx::SunInput sun;
+    glm::vec3 ambient{0.0f};
+    postfx::ShadowMapInput shadowMap;  // image empty when the frame does not draw the shadow map
+    postfx::FogSettings fog;
+};
 
 struct Renderer::Impl {
     explicit Impl(VulkanHost& h) : host(h) {}
@@ -42,13 +55,30 @@ struct Renderer::Impl {
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers{};
     std::array<VkFence, kFramesInFlight> fences{};
     GpuBuffer readback;
-    uint64_t nextFrameIndex = 0;
     bool broken = false;  // a submission failed: the fences can no longer be trusted
+
+    // renderReference(): where postfx writes the fogged frame so that the HDR image keeps the
+    // un-fogged scene (FrameInfo::output); created on first use.
+    GpuImage fogScratch;
 
     bool createResources(std::string& error);
     bool createFrameSet(std::string& error);
     bool createPostfx(std::string& error);
     void recordReadback(VkCommandBuffer cmd) const;
+
+    // The shadow map fit and whether the frame draws it (sun.shadows and something to cast).
+    ShadowFit shadowFit(const Scene& scene) const;
+    bool drawsShadows(const Scene& scene, const ShadowFit& fit) const {
+        return scene.sun.shadows && fit.valid;
+    }
+    // The camera's projection, exactly as the G-buffer pass uses it.
+    glm::mat4 projection(const Scene& scene) const;
+    // postfx's per-frame inputs for frame `frameIndex` of `scene`.
+    PostfxInputs postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit,
+                              bool shadows) const;
+    // Renderer::recordFrame, with postfx writing to `fogOutput` (FrameInfo::output) when present.
+    bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
+                     const postfx::ImageInput& fogOutput, std::string& error);
 };
 
 }  // namespace demo

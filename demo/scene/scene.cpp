@@ -2,6 +2,8 @@
 // docs/scene-format.md; keep the two in sync.
 #include "scene/scene.h"
 
+#include "scene/fog_json.h"
+#include "scene/json_read.h"
 #include "scene/json_text.h"
 
 #include <glm/geometric.hpp>
@@ -20,15 +22,7 @@ namespace demo {
 namespace {
 
 using json = nlohmann::json;
-
-// Thrown by the validators below and caught in parseScene; it never leaves this file.
-struct SceneError {
-    std::string message;
-};
-
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-    throw SceneError{(path.empty() ? std::string("(root)") : path) + ": " + what};
-}
+using namespace json_read;
 
 // ---- JSON text -> DOM ------------------------------------------------------------------------------
 
@@ -140,102 +134,6 @@ private:
     std::vector<Frame> stack_;
     std::string error_;
 };
-
-// ---- validation helpers ----------------------------------------------------------------------------
-
-std::string child(const std::string& path, const char* key) {
-    return json_text::keyPath(path, key);
-}
-std::string element(const std::string& path, std::size_t i) {
-    return json_text::indexPath(path, i);
-}
-
-std::string got(const json& j) {
-    return ", got " + json_text::describe(j);
-}
-
-// "a, b, c or d"
-std::string listOf(std::span<const char* const> names) {
-    std::string out;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
-        out += names[i];
-    }
-    return out;
-}
-
-void expectObject(const json& j, const std::string& path) {
-    if (!j.is_object()) fail(path, "expected an object" + got(j));
-}
-
-// Unknown keys are errors (typo protection). `what` is e.g. "" or " for a box".
-void checkKeys(const json& obj, const std::string& path, std::span<const char* const> allowed,
-               const std::string& what = "") {
-    for (auto it = obj.begin(); it != obj.end(); ++it) {
-        const bool known =
-            std::any_of(allowed.begin(), allowed.end(), [&](const char* name) { return it.key() == name; });
-        if (!known) {
-            fail(json_text::keyPath(path, it.key()),
-                 "unknown key" + what + " (expected " + listOf(allowed) + ")");
-        }
-    }
-}
-
-const json* find(const json& obj, const char* key) {
-    auto it = obj.find(key);
-    return it == obj.end() ? nullptr : &*it;
-}
-
-const json& require(const json& obj, const std::string& path, const char* key) {
-    const json* v = find(obj, key);
-    if (!v) fail(child(path, key), "missing");
-    return *v;
-}
-
-enum class Range { Any, Positive, NonNegative, Unit };
-
-float readNumber(const json& j, const std::string& path, Range range = Range::Any) {
-    if (!j.is_number()) fail(path, "expected a number" + got(j));
-    const double d = j.get<double>();
-    if (!std::isfinite(d)) fail(path, "expected a finite number" + got(j));
-    if (std::fabs(d) > double(FLT_MAX)) fail(path, "expected a number of magnitude <= 3.4e38" + got(j));
-    const float f = float(d);
-    switch (range) {
-        case Range::Any:
-            break;
-        case Range::Positive:
-            if (!(f > 0.0f)) fail(path, "expected a number > 0" + got(j));
-            break;
-        case Range::NonNegative:
-            if (!(f >= 0.0f)) fail(path, "expected a number >= 0" + got(j));
-            break;
-        case Range::Unit:
-            if (!(f >= 0.0f && f <= 1.0f)) fail(path, "expected a number in [0, 1]" + got(j));
-            break;
-    }
-    return f;
-}
-
-glm::vec3 readVec3(const json& j, const std::string& path, Range range = Range::Any) {
-    if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers" + got(j));
-    glm::vec3 v;
-    for (int i = 0; i < 3; ++i)
-        v[i] = readNumber(j[std::size_t(i)], element(path, std::size_t(i)), range);
-    return v;
-}
-
-// A direction: non-zero, returned normalised (computed in double, so tiny vectors are fine too).
-glm::vec3 readDirection(const json& j, const std::string& path) {
-    const glm::dvec3 v(readVec3(j, path));
-    const double length = glm::length(v);
-    if (!(length > 0.0)) fail(path, "expected a non-zero vector" + got(j));
-    return glm::vec3(v / length);
-}
-
-bool readBool(const json& j, const std::string& path) {
-    if (!j.is_boolean()) fail(path, "expected true or false" + got(j));
-    return j.get<bool>();
-}
 
 // ---- scene -----------------------------------------------------------------------------------------
 
@@ -351,20 +249,8 @@ Scene readScene(const json& root) {
     for (std::size_t i = 0; i < objects.size(); ++i)
         scene.objects.push_back(readObject(objects[i], element("objects", i)));
 
-    if (const json* effects = find(root, "effects")) {
-        expectObject(*effects, "effects");  // its content is validated by each effect
-        scene.effects = *effects;
-    }
+    if (const json* effects = find(root, "effects")) readEffects(*effects, "effects", scene.fog);
     return scene;
-}
-
-// ---- scene -> JSON ---------------------------------------------------------------------------------
-
-json number(float f) {
-    return json(json_text::roundTripDouble(f));
-}
-json vec3(const glm::vec3& v) {
-    return json::array({number(v.x), number(v.y), number(v.z)});
 }
 
 }  // namespace
@@ -381,7 +267,7 @@ bool parseScene(const std::string& jsonText, Scene& scene, std::string& error) {
             return true;
         }
         message = builder.error();
-    } catch (const SceneError& e) {
+    } catch (const ReadError& e) {
         message = e.message;
     } catch (const std::exception& e) {
         message = std::string("(root): cannot read the scene: ") + e.what();
@@ -459,7 +345,7 @@ nlohmann::json sceneToJson(const Scene& scene) {
         }
     }
     j["objects"] = std::move(objects);
-    j["effects"] = scene.effects.is_object() ? scene.effects : json::object();
+    j["effects"] = effectsToJson(scene.fog);
     return j;
 }
 

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
+#include <postfx/fog.h>
 
 #include <string>
 #include <vector>
@@ -43,7 +44,8 @@ struct Scene {
     glm::vec3 ambient{0.0f};  // uniform incident radiance for the ambient term [cd/m²], >= 0
     glm::vec3 sky{0.0f};      // radiance of pixels with no geometry [cd/m²], >= 0
     std::vector<Object> objects;
-    nlohmann::json effects = nlohmann::json::object();  // effect settings, read by later effects
+    // effects.fog: postfx's ray-marched fog (docs/effects/fog.md); disabled unless the file has it.
+    postfx::FogSettings fog;
 };
 
 // Parses a scene from JSON text. On failure returns false and sets `error` to one line naming the

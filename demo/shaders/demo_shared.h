@@ -56,9 +56,31 @@ struct DrawPush {
     vec4 albedo;  // rgb diffuse reflectance
 };
 
+// Tonemap of the windowed demo (demo/shaders/tonemap.comp), the same curve as the CPU tonemap of .png
+// files (demo/host/image_io.cpp): exposure 1 / (kExposureSaturation · 2^ev100), ACES fitted
+// (Narkowicz 2015): x (A x + B) / (x (C x + D) + E), then the sRGB OETF.
+DEMO_CONST(float, kExposureSaturation, 1.2f);  // saturation-based exposure: max luminance 1.2·2^EV100
+DEMO_CONST(float, kAcesA, 2.51f);
+DEMO_CONST(float, kAcesB, 0.03f);
+DEMO_CONST(float, kAcesC, 2.43f);
+DEMO_CONST(float, kAcesD, 0.59f);
+DEMO_CONST(float, kAcesE, 0.14f);
+DEMO_CONST(float, kSrgbLinearLimit, 0.0031308f);  // below: 12.92 x; above: 1.055 x^(1/2.4) - 0.055
+DEMO_CONST(uint, kTonemapGroupSize, 8u);          // tonemap workgroup is kTonemapGroupSize² threads
+DEMO_CONST(uint, kTonemapBindingHdr, 0u);         // image2D rgba16f, radiance (GENERAL), read
+DEMO_CONST(uint, kTonemapBindingOut, 1u);         // image2D rgba8, sRGB-encoded display values, written
+
+// Push constants of the tonemap pass.
+struct TonemapPush {
+    vec4 params;   // x: exposure (1 / (kExposureSaturation · 2^ev100)); y: 1 = store blue, green, red
+                   // (the output is copied bit for bit into a BGRA swapchain image); zw: unused
+    uvec4 extent;  // xy: image size [pixels]
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(FrameUniforms) == 3 * 64 + 7 * 16, "FrameUniforms must match std140");
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match std430 push constants");
+static_assert(sizeof(TonemapPush) == 32, "TonemapPush must match std430 push constants");
 }  // namespace demo::shared
 #endif
 

@@ -1,11 +1,10 @@
 // The demo host renderer: its shading convention checked against the closed form, depth conventions
 // agreeing, and the default scene against a committed golden image.
+#include "golden.h"
 #include "gpu_test.h"
 #include "host/renderer.h"
 #include "image_compare.h"
 #include "scene/scene.h"
-
-#include <OpenImageIO/imageio.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -89,38 +88,9 @@ TEST_F(RendererTest, DepthConventionsRenderTheSameImage) {
     }
 }
 
-// The default scene against tests/golden/default_scene.exr. Tolerance: relative RMSE below 1% and at
-// most 0.5% of pixels off by more than 2% (shadow-edge texels may differ between drivers).
-// POSTFX_ACCEPT_GOLDENS=1 (scripts/accept-goldens.sh) writes the new image as the golden instead.
+// The default scene against tests/golden/default_scene.exr (tolerance in golden.h).
 TEST_F(RendererTest, DefaultSceneMatchesGolden) {
-    const std::string golden = kSourceDir + "/tests/golden/default_scene.exr";
-    const demo::ImageF image = render(demo::defaultScene(), smallOptions(160, 90));
-    std::string error;
-    if (const char* accept = std::getenv("POSTFX_ACCEPT_GOLDENS"); accept && std::string(accept) == "1") {
-        ASSERT_TRUE(demo::writeImage(golden, image, 15.0f, error)) << error;
-        GTEST_SKIP() << "accepted new golden " << golden;
-    }
-    demo::ImageF expected;
-    ASSERT_TRUE(demo::readImage(golden, expected, error)) << error;
-    ASSERT_EQ(expected.width, image.width);
-    ASSERT_EQ(expected.height, image.height);
-    const ImageStats stats = compareImages(image.rgba, expected.rgba, image.width, image.height, 0.02, 1.0);
-    const bool pass = stats.relativeRmse < 0.01 && stats.fractionOff < 0.005 && stats.nonFinite == 0;
-    if (!pass) {
-        const std::filesystem::path dir = std::filesystem::current_path() / "golden-failures";
-        std::filesystem::create_directories(dir);
-        EXPECT_TRUE(demo::writeImage((dir / "default_scene.actual.exr").string(), image, 15.0f, error))
-            << error;
-        const std::vector<float> diff = diffImage(image.rgba, expected.rgba, 0.05 * 10000.0);
-        auto out = OIIO::ImageOutput::create((dir / "default_scene.diff.png").string());
-        ASSERT_TRUE(out);
-        OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8);
-        out->open((dir / "default_scene.diff.png").string(), spec);
-        out->write_image(OIIO::TypeDesc::FLOAT, diff.data());
-        out->close();
-        ADD_FAILURE() << "default scene differs from " << golden << ": " << stats.summary() << "; wrote "
-                      << (dir / "default_scene.actual.exr") << " and " << (dir / "default_scene.diff.png");
-    }
+    expectMatchesGolden(render(demo::defaultScene(), smallOptions(160, 90)), "default_scene");
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 // instance-level function through the host's vkGetInstanceProcAddr; it links no Vulkan loader.
 #pragma once
 
+#include <postfx/fog.h>
 #include <postfx/result.h>
+#include <postfx/types.h>
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -15,12 +17,6 @@
 #include <vector>
 
 namespace postfx {
-
-// How the host's depth buffer maps view distance to [0, 1]. Fixed at create time.
-struct DepthConvention {
-    bool reversedZ = true;     // true: near plane at depth 1, far at 0 (recommended with D32_SFLOAT)
-    bool infiniteFar = false;  // true: projection has no far plane (far at depth 0 / 1 reached at infinity)
-};
 
 struct ContextCreateInfo {
     // Borrowed handles; the host keeps ownership and must outlive the context.
@@ -42,18 +38,6 @@ struct ContextCreateInfo {
     void* messageUserData = nullptr;
 };
 
-// One host image handed to postfx for one record() call. postfx never owns it: it uses the view the
-// host created and leaves the image in `layout` when the recorded commands have run.
-struct ImageInput {
-    VkImage image = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;  // 2D view of mip 0, layer 0
-    VkFormat format = VK_FORMAT_UNDEFINED;
-    VkExtent2D extent = {0, 0};
-    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // layout at the point record() is recorded
-
-    bool present() const { return image != VK_NULL_HANDLE; }
-};
-
 // Everything postfx needs for one frame.
 struct FrameInfo {
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;  // recording, outside a render pass
@@ -65,6 +49,17 @@ struct FrameInfo {
     // Scene depth, D32_SFLOAT / D16_UNORM / D24_UNORM_S8_UINT / X8_D24_UNORM_PACK32, usage SAMPLED,
     // same extent as color, in the context's DepthConvention.
     ImageInput depth;
+    // Optional: when present, the result goes here (same extent, a color format, usage STORAGE) and
+    // `color` is only read. When absent, effects composite into `color` in place.
+    ImageInput output;
+
+    double timeSeconds = 0.0;  // host time [s], moves the noise with the wind; finite
+    CameraInput camera;
+    SunInput sun;
+    glm::vec3 ambient{0.0f};  // uniform incident radiance for ambient in-scattering; each >= 0
+    ShadowMapInput shadowMap;
+
+    FogSettings fog;  // ray-marched fog (docs/effects/fog.md); off by default
 };
 
 // GPU time of one postfx pass in one frame.
@@ -89,6 +84,13 @@ public:
     // that frame, InvalidArgument if that frame's queries were overwritten by a newer frame (more than
     // framesInFlight ago) or were never written. Does not wait.
     Status readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const;
+
+    // Records a copy of the fog's generated noise texture (R8, size³ bytes, x fastest, then y, then z)
+    // into `buffer` at `offset` (usage TRANSFER_DST); the host submits and reads it, e.g. to give the
+    // CPU reference the same noise data. `size` receives the texture's edge. InvalidArgument when no
+    // texture has been generated (fog with generated noise has not been recorded yet).
+    Status recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,
+                                  uint32_t& size) const;
 
     const ContextCreateInfo& createInfo() const;
 

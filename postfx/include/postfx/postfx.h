@@ -2,4 +2,6 @@
 #pragma once
 
 #include <postfx/context.h>
+#include <postfx/fog.h>
 #include <postfx/result.h>
+#include <postfx/types.h>

@@ -139,10 +139,33 @@ Status Context::record(const FrameInfo& frame) {
         return impl.report(invalid("FrameInfo.depth.extent " + extentText(frame.depth.extent) +
                                    " differs from FrameInfo.color.extent " + extentText(frame.color.extent)));
 
-    if (Status s = impl.arena(frame.frameIndex).beginFrame(); !s) return impl.report(s);
+    if (frame.fog.enabled) {
+        if (Status s = fog::FogPass::validate(frame); !s) return impl.report(s);
+    }
+
+    core::DescriptorArena& arena = impl.arena(frame.frameIndex);
+    if (Status s = arena.beginFrame(); !s) return impl.report(s);
     impl.timer.beginFrame(frame.commandBuffer, frame.frameIndex);
-    // Effects record their passes here (none are enabled in this version).
+    impl.retirement.collect(frame.frameIndex, impl.info.framesInFlight);
+    if (frame.fog.enabled) {
+        if (!impl.fog) impl.fog = std::make_unique<fog::FogPass>();
+        if (Status s = impl.fog->record(impl.gpu, impl.info, arena, impl.timer, impl.retirement, frame); !s)
+            return impl.report(s);
+    } else {
+        impl.retirement.retire(frame.frameIndex, std::move(impl.fog));  // its GPU objects go once unused
+    }
     return Status::success();
+}
+
+Status Context::recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,
+                                       uint32_t& size) const {
+    const fog::FogNoise* noise = impl_->fog ? impl_->fog->noise() : nullptr;
+    if (!commandBuffer) return impl_->report(invalid("recordFogNoiseReadback: commandBuffer is VK_NULL_HANDLE"));
+    if (!buffer) return impl_->report(invalid("recordFogNoiseReadback: buffer is VK_NULL_HANDLE"));
+    if (!noise || !noise->ready())
+        return impl_->report(invalid("recordFogNoiseReadback: no fog noise texture has been generated yet"));
+    size = noise->size();
+    return impl_->report(noise->recordReadback(commandBuffer, buffer, offset));
 }
 
 Status Context::readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const {

@@ -7,6 +7,8 @@
 #include "core/compute_pipeline.h"
 #include "core/gpu.h"
 #include "core/pass_timer.h"
+#include "core/retirement.h"
+#include "fog/fog_pass.h"
 
 #include <memory>
 #include <vector>
@@ -18,6 +20,8 @@ struct Context::Impl {
     core::Gpu gpu;
     core::PassTimer timer;
     std::vector<std::unique_ptr<core::DescriptorArena>> arenas;  // one per frame in flight
+    std::unique_ptr<fog::FogPass> fog;  // null while the fog is off
+    core::Retirement retirement;        // objects frames in flight may still use; declared last, freed first
 
     // Sends a failed status to the host's message callback and returns it unchanged.
     Status report(Status status) const;

@@ -54,6 +54,7 @@ namespace postfx::core {
     X(vkCmdDispatch)                 \
     X(vkCmdPipelineBarrier)          \
     X(vkCmdCopyBufferToImage)        \
+    X(vkCmdCopyImageToBuffer)        \
     X(vkCmdFillBuffer)
 
 struct DeviceFunctions {

@@ -1,0 +1,189 @@
+// Renderer::renderReference: the GPU frame up to lighting, read back, and postfx's CPU fog reference
+// over it (postfx::reference::renderFog) with the same inputs the GPU frame gave postfx.
+#include "host/renderer.h"
+#include "host/renderer_impl.h"
+
+#include <postfx/reference.h>
+
+#include <glm/gtc/packing.hpp>
+
+#include <cstring>
+#include <vector>
+
+namespace demo {
+namespace {
+
+constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
+constexpr VkImageLayout kDepthRest = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+
+// Copies a D32 depth image resting in DEPTH_STENCIL_READ_ONLY_OPTIMAL (last read by compute shaders)
+// to `buffer` at `offset` as floats, and returns it to its resting layout, ready for the next frame's
+// raster pass (which waits for COMPUTE_SHADER before discarding it).
+void recordDepthCopy(VkCommandBuffer cmd, const GpuImage& depth, const GpuBuffer& buffer,
+                     VkDeviceSize offset) {
+    imageBarrier(cmd, depth, kDepthRest, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kCompute, 0, kTransfer,
+                 VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.bufferOffset = offset;
+    region.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+    region.imageExtent = {depth.extent.width, depth.extent.height, 1};
+    vkCmdCopyImageToBuffer(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.buffer, 1, &region);
+    imageBarrier(cmd, depth, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kDepthRest, kTransfer, 0, kCompute,
+                 VK_ACCESS_SHADER_READ_BIT);
+}
+
+std::vector<float> floatsAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t count) {
+    std::vector<float> out(count);
+    std::memcpy(out.data(), static_cast<const char*>(buffer.mapped) + offset, count * sizeof(float));
+    return out;
+}
+
+}  // namespace
+
+bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel) {
+    Impl& r = *impl_;
+    const VkDevice device = r.host.device;
+    if (r.broken) {
+        error = "the renderer is unusable after a failed submission";
+        return false;
+    }
+    if (!setScene(scene, error)) return false;  // also waits for the device to be idle
+
+    const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns
+    const ShadowFit fit = r.shadowFit(scene);
+    const bool shadows = r.drawsShadows(scene, fit);
+    const PostfxInputs in = r.postfxInputs(scene, frameIndex, fit, shadows);
+    const bool fog = in.fog.enabled;
+    const bool noise = fog && in.fog.noise.enabled && !in.fog.noise.hostTexture;
+
+    // With fog, postfx runs as in render() but writes to a scratch image: it validates the inputs and
+    // generates the noise texture, and the HDR image keeps the un-fogged scene.
+    postfx::ImageInput fogOutput;
+    if (fog) {
+        if (!r.fogScratch.image &&
+            !createImage(r.host, r.hdr.format, r.extent, VK_IMAGE_USAGE_STORAGE_BIT, r.fogScratch, error))
+            return false;
+        fogOutput = {r.fogScratch.image, r.fogScratch.view, r.fogScratch.format, r.extent,
+                     VK_IMAGE_LAYOUT_GENERAL};
+    }
+
+    // One host-visible buffer: depth, shadow map, noise (each as the GPU stores it).
+    const size_t pixels = size_t(r.extent.width) * r.extent.height;
+    const VkExtent2D shadowExtent = r.shadow.depth.extent;
+    const size_t shadowTexels = shadows ? size_t(shadowExtent.width) * shadowExtent.height : 0;
+    const size_t noiseTexels =
+        noise ? size_t(in.fog.noise.textureSize) * in.fog.noise.textureSize * in.fog.noise.textureSize : 0;
+    const VkDeviceSize depthOffset = 0;
+    const VkDeviceSize shadowOffset = depthOffset + pixels * sizeof(float);
+    const VkDeviceSize noiseOffset = shadowOffset + shadowTexels * sizeof(float);
+    GpuBuffer buffer;
+    if (!createBuffer(r.host, noiseOffset + noiseTexels, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, buffer,
+                      error))
+        return false;
+    struct BufferGuard {
+        VkDevice device;
+        GpuBuffer& buffer;
+        ~BufferGuard() { destroyBuffer(device, buffer); }
+    } guard{device, buffer};
+
+    // One frame on render()'s command buffer and fence of its slot (all are idle: setScene waited);
+    // nothing is submitted when recording fails.
+    const size_t slot = frameIndex % kFramesInFlight;
+    VkCommandBuffer cmd = r.commandBuffers[slot];
+    vkResetCommandBuffer(cmd, 0);
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd, &bi);
+    uint32_t noiseSize = 0;
+    const bool recorded = [&] {
+        if (fog) {  // the scratch image's old content is never read
+            imageBarrier(cmd, r.fogScratch, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kCompute, 0,
+                         kCompute, VK_ACCESS_SHADER_WRITE_BIT);
+        }
+        if (!r.recordFrame(cmd, scene, frameIndex, fogOutput, error)) return false;
+        r.recordReadback(cmd);  // the HDR image: postfx only read it
+        recordDepthCopy(cmd, r.gbuffer.depth, buffer, depthOffset);
+        if (shadows) recordDepthCopy(cmd, r.shadow.depth, buffer, shadowOffset);
+        if (noise) {
+            const postfx::Status s =
+                r.postfx->recordFogNoiseReadback(cmd, buffer.buffer, noiseOffset, noiseSize);
+            if (!s.ok()) {
+                error = "postfx noise readback: " + s.message;
+                return false;
+            }
+        }
+        bufferBarrier(cmd, buffer, kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                      VK_ACCESS_HOST_READ_BIT);
+        return true;
+    }();
+    if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
+    vkResetFences(device, 1, &r.fences[slot]);
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    if (!vkCheck(vkQueueSubmit(r.host.queue, 1, &si, r.fences[slot]), "vkQueueSubmit", error)) {
+        r.broken = true;
+        return false;
+    }
+    if (!vkCheck(vkWaitForFences(device, 1, &r.fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences", error))
+        return false;
+    if (noise && noiseSize != in.fog.noise.textureSize) {
+        error = "postfx noise readback: texture edge " + std::to_string(noiseSize) + ", expected " +
+                std::to_string(in.fog.noise.textureSize);
+        return false;
+    }
+
+    // The un-fogged HDR color, RGBA16F -> RGBA32F (exactly the values postfx read).
+    std::vector<float> color(pixels * 4);
+    const auto* half = static_cast<const uint16_t*>(r.readback.mapped);
+    for (size_t i = 0; i < color.size(); ++i)
+        color[i] = glm::unpackHalf1x16(half[i]);
+    out.width = r.extent.width;
+    out.height = r.extent.height;
+    if (!fog) {
+        out.rgba = std::move(color);
+        return true;
+    }
+
+    const std::vector<float> depth = floatsAt(buffer, depthOffset, pixels);
+    const std::vector<float> shadowDepth = floatsAt(buffer, shadowOffset, shadowTexels);
+    std::vector<float> noiseTexels01(noiseTexels);
+    const auto* bytes = static_cast<const uint8_t*>(buffer.mapped) + noiseOffset;
+    for (size_t i = 0; i < noiseTexels; ++i)
+        noiseTexels01[i] = float(bytes[i]) / 255.0f;
+
+    postfx::reference::FogInputs fi;
+    fi.width = r.extent.width;
+    fi.height = r.extent.height;
+    fi.color = color;
+    fi.depth = depth;
+    fi.depthConvention.reversedZ = r.options.reversedZ;
+    fi.depthConvention.infiniteFar = r.options.infiniteFar;
+    fi.camera = in.camera;
+    fi.sun = in.sun;
+    fi.ambient = in.ambient;
+    fi.timeSeconds = in.timeSeconds;
+    fi.settings = in.fog;
+    if (shadows) {
+        fi.shadowDepth = shadowDepth;
+        fi.shadowWidth = shadowExtent.width;
+        fi.shadowHeight = shadowExtent.height;
+        fi.shadowWorldToClip = in.shadowMap.worldToClip;
+        fi.shadowReversedZ = in.shadowMap.reversedZ;
+        fi.shadowDepthBias = in.shadowMap.depthBias;
+    }
+    if (noise) {
+        fi.noise = noiseTexels01;
+        fi.noiseSize = noiseSize;
+    }
+    fi.stepsPerPixel = stepsPerPixel;
+    fi.threads = 0;  // all hardware threads
+    if (const postfx::Status s = postfx::reference::renderFog(fi, out.rgba); !s.ok()) {
+        error = "fog reference: " + s.message;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace demo

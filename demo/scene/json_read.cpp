@@ -1,0 +1,140 @@
+#include "scene/json_read.h"
+
+#include "scene/json_text.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace demo::json_read {
+
+void fail(const std::string& path, const std::string& what) {
+    throw ReadError{(path.empty() ? std::string("(root)") : path) + ": " + what};
+}
+
+std::string child(const std::string& path, const char* key) {
+    return json_text::keyPath(path, key);
+}
+std::string element(const std::string& path, std::size_t i) {
+    return json_text::indexPath(path, i);
+}
+
+std::string got(const json& j) {
+    return ", got " + json_text::describe(j);
+}
+
+namespace {
+
+// "a, b, c or d"
+std::string listOf(std::span<const char* const> names) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
+        out += names[i];
+    }
+    return out;
+}
+
+}  // namespace
+
+void expectObject(const json& j, const std::string& path) {
+    if (!j.is_object()) fail(path, "expected an object" + got(j));
+}
+
+void checkKeys(const json& obj, const std::string& path, std::span<const char* const> allowed,
+               const std::string& what) {
+    for (auto it = obj.begin(); it != obj.end(); ++it) {
+        const bool known =
+            std::any_of(allowed.begin(), allowed.end(), [&](const char* name) { return it.key() == name; });
+        if (!known) {
+            fail(json_text::keyPath(path, it.key()),
+                 "unknown key" + what + " (expected " + listOf(allowed) + ")");
+        }
+    }
+}
+
+const json* find(const json& obj, const char* key) {
+    auto it = obj.find(key);
+    return it == obj.end() ? nullptr : &*it;
+}
+
+const json& require(const json& obj, const std::string& path, const char* key) {
+    const json* v = find(obj, key);
+    if (!v) fail(child(path, key), "missing");
+    return *v;
+}
+
+float readNumber(const json& j, const std::string& path, Range range) {
+    if (!j.is_number()) fail(path, "expected a number" + got(j));
+    const double d = j.get<double>();
+    if (!std::isfinite(d)) fail(path, "expected a finite number" + got(j));
+    if (std::fabs(d) > double(FLT_MAX)) fail(path, "expected a number of magnitude <= 3.4e38" + got(j));
+    const float f = float(d);
+    switch (range) {
+        case Range::Any:
+            break;
+        case Range::Positive:
+            if (!(f > 0.0f)) fail(path, "expected a number > 0" + got(j));
+            break;
+        case Range::NonNegative:
+            if (!(f >= 0.0f)) fail(path, "expected a number >= 0" + got(j));
+            break;
+        case Range::Unit:
+            if (!(f >= 0.0f && f <= 1.0f)) fail(path, "expected a number in [0, 1]" + got(j));
+            break;
+    }
+    return f;
+}
+
+glm::vec3 readVec3(const json& j, const std::string& path, Range range) {
+    if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers" + got(j));
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i)
+        v[i] = readNumber(j[std::size_t(i)], element(path, std::size_t(i)), range);
+    return v;
+}
+
+glm::vec3 readDirection(const json& j, const std::string& path) {
+    // Computed in double, so tiny vectors are fine too.
+    const glm::dvec3 v(readVec3(j, path));
+    const double length = glm::length(v);
+    if (!(length > 0.0)) fail(path, "expected a non-zero vector" + got(j));
+    return glm::vec3(v / length);
+}
+
+bool readBool(const json& j, const std::string& path) {
+    if (!j.is_boolean()) fail(path, "expected true or false" + got(j));
+    return j.get<bool>();
+}
+
+uint32_t readUint32(const json& j, const std::string& path) {
+    constexpr double kMax = 4294967295.0;
+    if (j.is_number_unsigned()) {
+        const auto u = j.get<json::number_unsigned_t>();
+        if (u > json::number_unsigned_t(UINT32_MAX))
+            fail(path, "expected an integer in [0, 4294967295]" + got(j));
+        return uint32_t(u);
+    }
+    if (j.is_number_integer()) {  // signed: negative (non-negative integers parse as unsigned)
+        const auto i = j.get<json::number_integer_t>();
+        if (i < 0 || double(i) > kMax) fail(path, "expected an integer in [0, 4294967295]" + got(j));
+        return uint32_t(i);
+    }
+    if (!j.is_number()) fail(path, "expected an integer" + got(j));
+    const double d = j.get<double>();
+    if (!std::isfinite(d) || d != std::floor(d)) fail(path, "expected an integer" + got(j));
+    if (d < 0.0 || d > kMax) fail(path, "expected an integer in [0, 4294967295]" + got(j));
+    return uint32_t(d);
+}
+
+json number(float f) {
+    return json(json_text::roundTripDouble(f));
+}
+
+json vec3(const glm::vec3& v) {
+    return json::array({number(v.x), number(v.y), number(v.z)});
+}
+
+}  // namespace demo::json_read

@@ -1,0 +1,88 @@
+// Ray-marched post-process fog: settings and per-frame inputs. The model is in docs/effects/fog.md.
+//
+// Every setting: unit, default, valid range. Out-of-range values are rejected by Context::record with
+// an error naming the field, except where "clamped" is written.
+#pragma once
+
+#include <postfx/result.h>
+#include <postfx/types.h>
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace postfx {
+
+struct FogNoiseSettings {
+    bool enabled = false;  // false: noise(x) = 1 (no texture is generated or read)
+    // Edge of the cubic noise texture postfx generates [texels]; power of two in [16, 256].
+    uint32_t textureSize = 128;
+    uint32_t seed = 1;  // generator seed; any value
+    // Texture coordinate = (x - wind·time) · 0.01 · tiling, so with tiling 1 the texture repeats every
+    // 100 m [1/100 m]; > 0 and <= 1000.
+    float tiling = 1.0f;
+    float threshold = 0.1f;   // noise(x) = clamp(n - threshold, 0, 1) · multiplier [1]; in [0, 1]
+    float multiplier = 1.0f;  // [1]; in [0, 1e3]
+    glm::vec3 wind{0.0f};     // velocity of the noise field [m/s]; each component in [-1e3, 1e3]
+    // Optional host texture instead of the generated one: a 3D view (first channel read, values in
+    // [0, 1]), sampled with trilinear filtering and repeat addressing, in `hostTextureLayout`.
+    VkImageView hostTexture = VK_NULL_HANDLE;
+    VkImageLayout hostTextureLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+};
+
+struct FogSettings {
+    bool enabled = false;
+    // Extinction σt at base_height where noise = 1 [1/m]; in [0, 1e6]. 0.02 gives a visibility of ~150 m.
+    float density = 0.02f;
+    glm::vec3 albedo{0.9f};  // single-scattering albedo σs/σt per RGB channel [1]; each in [0, 1]
+    // Henyey–Greenstein asymmetry g [1]; in [-1, 1], clamped to [-0.999, 0.999].
+    // g > 0 scatters forward: brightest looking toward the sun.
+    float anisotropy = 0.6f;
+    // Height fog: σt ∝ exp(-height_falloff · (y - base_height)) [1/m]; in [0, 10]. 0 = homogeneous.
+    float heightFalloff = 0.1f;
+    float baseHeight = 0.0f;  // [m]; finite
+    // Rays are marched to the surface or to this distance, whichever is nearer [m]; in (0, 1e7].
+    float maxDistance = 200.0f;
+    uint32_t steps = 32;  // march steps per pixel, independent of distance; in [1, 4096]
+    bool jitter = true;   // offset the march start by interleaved gradient noise of pixel and frame
+    // Stop marching once the transmittance is below this [1]; in [0, 1). 0 = never stop early.
+    float transmittanceCutoff = 0.001f;
+    // Sun visibility also includes the fog's own transmittance toward the sun (closed form of the
+    // height term; noise not included).
+    bool selfShadow = false;
+    // Beyond max_distance (up to the surface, or to infinity for pixels with no geometry), add the
+    // height fog's closed-form contribution (no noise, no shadow map), so fog does not end at a wall.
+    bool analyticTail = true;
+    // Shadow-map filter: kernel × kernel texels around the sample, each compared, averaged; odd, 1..7.
+    uint32_t shadowKernel = 3;
+    FogNoiseSettings noise;
+};
+
+// The sun as the fog sees it.
+struct SunInput {
+    glm::vec3 toSun{0.0f, 1.0f, 0.0f};  // unit direction toward the sun (normalised by postfx)
+    glm::vec3 illuminance{0.0f};        // [lux] on a surface facing the sun; each >= 0
+};
+
+// The host's sun shadow map. Optional: with no image the sun is unshadowed (visibility 1).
+struct ShadowMapInput {
+    // Depth image (D32_SFLOAT, D16_UNORM or R32_SFLOAT), usage SAMPLED, any square or rectangular size.
+    ImageInput image;
+    // World -> shadow clip space: x, y in [-1, 1] map to u, v = (x, y)/2 + 1/2, z/w is the stored depth.
+    glm::dmat4 worldToClip{1.0};
+    bool reversedZ = false;   // true: larger stored depth is nearer the sun
+    float depthBias = 0.0f;   // added toward "lit" before comparing [shadow depth units]; >= 0
+};
+
+// The camera that rendered color and depth.
+struct CameraInput {
+    glm::dvec3 position{0.0};  // world position [m] (double: postfx marches camera-relative)
+    glm::mat4 view{1.0f};      // world -> view; only its rotation is used (position gives the translation)
+    glm::mat4 projection{1.0f};  // view -> Vulkan clip, in the context's DepthConvention
+};
+
+// Checks every setting against its documented range; InvalidArgument naming the first bad field with
+// its scene-file name ("fog.noise.tiling: 0 must be > 0"). Context::record runs the same check.
+Status validateFogSettings(const FogSettings& settings);
+
+}  // namespace postfx

@@ -1,0 +1,53 @@
+// The ray-marched fog as recorded into the host's command buffer: validation of its inputs, the
+// resources it owns (pipelines, uniform ring, samplers, noise texture, 1-texel stand-ins for absent
+// inputs) and the barriers around the host's images.
+#pragma once
+
+#include <postfx/context.h>
+
+#include "core/compute_pipeline.h"
+#include "core/gpu_resources.h"
+#include "core/pass_timer.h"
+#include "core/retirement.h"
+#include "fog/fog_noise.h"
+
+namespace postfx::fog {
+
+class FogPass {
+public:
+    FogPass() = default;
+    FogPass(const FogPass&) = delete;
+    FogPass& operator=(const FogPass&) = delete;
+    ~FogPass() { release(); }
+
+    // Checks everything the fog reads in `frame` (settings, lighting, camera, shadow map); InvalidArgument
+    // naming the field otherwise. Records nothing.
+    static Status validate(const FrameInfo& frame);
+
+    // Records the fog for `frame` (already validated, fog enabled). Creates resources on first need;
+    // a noise texture no longer needed (size changed, noise off) goes to `retirement`.
+    Status record(const core::Gpu& gpu, const ContextCreateInfo& info, core::DescriptorArena& arena,
+                  core::PassTimer& timer, core::Retirement& retirement, const FrameInfo& frame);
+
+    void release();  // frees every GPU object it holds (callers retire the FogPass instead while in use)
+
+    const FogNoise* noise() const { return noise_.get(); }  // null when no noise texture is held
+
+private:
+    Status createResources(const core::Gpu& gpu, const ContextCreateInfo& info);
+    core::ComputePipeline& pipelineFor(VkFormat colorFormat);
+
+    const core::Gpu* gpu_ = nullptr;
+    core::ComputePipeline raymarch16_, raymarch32_;
+    core::GpuBuffer uniforms_;  // one aligned slot per frame in flight, persistently mapped
+    VkDeviceSize uniformStride_ = 0;
+    uint32_t slots_ = 0;
+    VkSampler nearestClamp_ = VK_NULL_HANDLE;
+    VkSampler linearRepeat_ = VK_NULL_HANDLE;
+    core::GpuImage noShadowMap_;  // 1×1 stand-in when the host gives no shadow map
+    core::GpuImage noNoise_;      // 1×1×1 stand-in when noise is off
+    bool standInsReady_ = false;
+    std::unique_ptr<FogNoise> noise_;
+};
+
+}  // namespace postfx::fog

@@ -1,0 +1,264 @@
+// Double-precision CPU reference of the ray-marched fog: the model of docs/effects/fog.md evaluated
+// with a converged midpoint march (no jitter, no early cutoff), multithreaded over rows.
+#include "fog/fog_settings.h"
+#include "fog/reference_model.h"
+
+#include <postfx/reference.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <new>
+#include <string>
+#include <system_error>
+#include <thread>
+
+namespace postfx::reference {
+namespace {
+
+using glm::dvec3;
+using glm::dvec4;
+
+Status invalid(const std::string& message) {
+    return {Result::InvalidArgument, message};
+}
+
+Status checkCount(const char* field, size_t count, uint64_t expected, const char* what) {
+    if (count == expected) return Status::success();
+    return invalid(std::string(field) + ": " + std::to_string(count) + " values, expected " +
+                   std::to_string(expected) + " (" + what + ")");
+}
+
+template <typename M>
+bool allFinite(const M& m) {
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r])) return false;
+    return true;
+}
+
+// Rotation-only view: the view matrix with its translation column zeroed (the march is camera-relative).
+glm::dmat4 clipToView(const CameraInput& camera) {
+    glm::dmat4 rotation(camera.view);
+    rotation[3] = dvec4(0.0, 0.0, 0.0, 1.0);
+    return glm::inverse(glm::dmat4(camera.projection) * rotation);
+}
+
+Status validate(const FogInputs& in) {
+    if (in.width == 0 || in.height == 0)
+        return invalid("FogInputs.width/height: " + std::to_string(in.width) + "x" +
+                       std::to_string(in.height) + " image is empty");
+    const uint64_t pixels = uint64_t(in.width) * in.height;
+    if (Status s = checkCount("FogInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s) return s;
+    if (Status s = checkCount("FogInputs.depth", in.depth.size(), pixels, "width·height"); !s) return s;
+    for (size_t i = 0; i < in.depth.size(); ++i)
+        if (!std::isfinite(in.depth[i]))
+            return invalid("FogInputs.depth: value " + std::to_string(i) + " is not finite");
+    if (Status s = fog::validateSettings(in.settings); !s) return s;
+    if (Status s = fog::validateLighting(in.sun, in.ambient); !s) return s;
+    const dvec3& p = in.camera.position;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        return invalid("camera.position: is not finite");
+    if (!allFinite(in.camera.view)) return invalid("camera.view: is not finite");
+    if (!allFinite(in.camera.projection)) return invalid("camera.projection: is not finite");
+    if (!allFinite(clipToView(in.camera)))
+        return invalid("camera.projection: projection · view rotation is not invertible");
+    if (!std::isfinite(in.timeSeconds)) return invalid("FogInputs.timeSeconds: is not finite");
+    if (in.stepsPerPixel == 0) return invalid("FogInputs.stepsPerPixel: 0 must be >= 1");
+    if (in.settings.noise.enabled) {
+        if (in.noiseSize == 0) return invalid("FogInputs.noiseSize: 0 with fog.noise enabled");
+        const uint64_t n = in.noiseSize;
+        if (Status s = checkCount("FogInputs.noise", in.noise.size(), n * n * n, "noiseSize³"); !s) return s;
+    }
+    if (!in.shadowDepth.empty()) {
+        const uint64_t texels = uint64_t(in.shadowWidth) * in.shadowHeight;
+        if (Status s = checkCount("FogInputs.shadowDepth", in.shadowDepth.size(), texels,
+                                  "shadowWidth·shadowHeight");
+            !s)
+            return s;
+        if (!allFinite(in.shadowWorldToClip)) return invalid("FogInputs.shadowWorldToClip: is not finite");
+        if (!(in.shadowDepthBias >= 0.0f) || !std::isfinite(in.shadowDepthBias))
+            return invalid("FogInputs.shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
+                           " must be finite and >= 0");
+    }
+    return Status::success();
+}
+
+// Everything the march reads, converted to double once.
+struct Model {
+    glm::dmat4 clipToView;
+    double farDepth;  // depth value of "no geometry": 0 reversed Z, 1 standard Z
+    uint32_t width, height, steps;
+    dvec3 camera;
+    double density, heightFalloff, baseHeight, maxDistance;
+    dvec3 albedo, sunIlluminance, toSun, ambient;
+    double g;
+    bool selfShadow, analyticTail;
+    bool noise;
+    std::span<const float> noiseTexels;
+    uint32_t noiseSize;
+    dvec3 noiseOrigin;  // noise coordinate of the camera, wrapped to [0, 1)
+    double noiseScale, noiseThreshold, noiseMultiplier;
+    detail::ShadowMap shadow;
+};
+
+Model makeModel(const FogInputs& in) {
+    const FogSettings& s = in.settings;
+    Model m;
+    m.clipToView = clipToView(in.camera);
+    m.farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
+    m.width = in.width;
+    m.height = in.height;
+    m.steps = in.stepsPerPixel;
+    m.camera = in.camera.position;
+    m.density = s.density;
+    m.heightFalloff = s.heightFalloff;
+    m.baseHeight = s.baseHeight;
+    m.maxDistance = s.maxDistance;
+    m.albedo = dvec3(s.albedo);
+    m.sunIlluminance = dvec3(in.sun.illuminance);
+    m.toSun = glm::normalize(dvec3(in.sun.toSun));
+    m.ambient = dvec3(in.ambient);
+    m.g = s.anisotropy;  // clamped by henyeyGreenstein
+    m.selfShadow = s.selfShadow;
+    m.analyticTail = s.analyticTail;
+    m.noise = s.noise.enabled;
+    m.noiseTexels = in.noise;
+    m.noiseSize = in.noiseSize;
+    m.noiseScale = 0.01 * double(s.noise.tiling);
+    // u = (x_world - wind·time) · 0.01 · tiling with x_world = camera + x: the camera's part, wrapped.
+    const dvec3 origin = (m.camera - dvec3(s.noise.wind) * in.timeSeconds) * m.noiseScale;
+    m.noiseOrigin = origin - glm::floor(origin);
+    m.noiseThreshold = s.noise.threshold;
+    m.noiseMultiplier = s.noise.multiplier;
+    m.shadow = {in.shadowDepth,       in.shadowWidth,     in.shadowHeight,
+                in.shadowWorldToClip, in.shadowReversedZ, double(in.shadowDepthBias),
+                s.shadowKernel};
+    return m;
+}
+
+struct Ray {
+    dvec3 d;          // unit direction, camera-relative world space
+    double distance;  // D_s: to the surface, ∞ for no geometry
+};
+
+// Ray: ndc of the pixel centre, p = clipToView · (ndc, z, 1), x_s = p.xyz / p.w, D_s = |x_s|, d = x_s / D_s.
+// No geometry (z exactly the far value): d from z = 0.5, D_s = ∞.
+Ray pixelRay(const Model& m, uint32_t i, uint32_t j, double z) {
+    const double nx = (i + 0.5) / m.width * 2.0 - 1.0, ny = (j + 0.5) / m.height * 2.0 - 1.0;
+    const bool geometry = z != m.farDepth;
+    const dvec4 p = m.clipToView * dvec4(nx, ny, geometry ? z : 0.5, 1.0);
+    const dvec3 x = dvec3(p) / p.w;
+    const double length = glm::length(x);
+    // A surface that reconstructs to infinity (not a valid depth) is treated as no geometry.
+    if (!geometry || !std::isfinite(length) || length == 0.0)
+        return {glm::normalize(dvec3(m.clipToView * dvec4(nx, ny, 0.5, 1.0))),
+                std::numeric_limits<double>::infinity()};
+    return {x / length, length};
+}
+
+// noise(x) = clamp(n(u) - threshold, 0, 1) · multiplier, 1 with noise disabled.
+double noiseAt(const Model& m, const dvec3& x) {
+    if (!m.noise) return 1.0;
+    const double n = detail::sampleNoise(m.noiseTexels, m.noiseSize, m.noiseOrigin + x * m.noiseScale);
+    return std::clamp(n - m.noiseThreshold, 0.0, 1.0) * m.noiseMultiplier;
+}
+
+struct Radiance {
+    dvec3 L{0.0};    // in-scattered radiance
+    double T = 1.0;  // transmittance (σt is grey: albedo only scales σs)
+};
+
+// Adds a segment of constant light and optical depth τ: L += T·albedo·light·(1 - e^{-τ}); T *= e^{-τ}.
+// With S = σs·light = albedo·σt·light this is the doc's T·S·(1 - exp(-σtΔ))/σt for τ = σtΔ, exact
+// (-expm1 in double) and exactly 0 (= S·Δ) at σt = 0.
+void addSegment(const Model& m, const dvec3& light, double tau, Radiance& r) {
+    r.L += r.T * m.albedo * light * -std::expm1(-tau);
+    r.T *= std::exp(-tau);
+}
+
+// March: D = min(D_s, max_distance), Δ = D/N, step k evaluates the medium at t = (k + 0.5)·Δ and holds
+// σt and S(x) = σs·(E·p·V·Tsun + ambient) constant over [kΔ, (k+1)Δ].
+void marchPixel(const Model& m, const Ray& ray, const dvec3& sunPhase, Radiance& r) {
+    const double dt = std::min(ray.distance, m.maxDistance) / m.steps;
+    for (uint32_t k = 0; k < m.steps; ++k) {
+        const dvec3 x = ((k + 0.5) * dt) * ray.d;
+        const double h = detail::heightTerm(m.camera.y + x.y, m.heightFalloff, m.baseHeight);
+        const double sigmaT = m.density * h * noiseAt(m, x);
+        if (sigmaT == 0.0) continue;  // empty step: adds nothing, T unchanged
+        double sun = 0.0;             // V·Tsun; not looked up when the sun adds nothing
+        if (sunPhase != dvec3(0.0)) {
+            sun = detail::shadowVisibility(m.shadow, m.camera + x);
+            if (m.selfShadow) sun *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
+        }
+        addSegment(m, sunPhase * sun + m.ambient, sigmaT * dt, r);
+    }
+}
+
+// Analytic tail over [max_distance, D_s]: height fog without noise or shadow map, light constant
+// (E·p·Tsun(x(t0)) + ambient), optical depth τtail in closed form.
+void tailContribution(const Model& m, const Ray& ray, const dvec3& sunPhase, Radiance& r) {
+    const double t0 = m.maxDistance;
+    const double exponent0 = detail::heightExponent(m.camera.y + t0 * ray.d.y, m.heightFalloff, m.baseHeight);
+    const double a = m.heightFalloff * ray.d.y;
+    const double tau = detail::tailOpticalDepth(m.density, exponent0, a, ray.distance - t0);
+    double sun = 1.0;
+    if (m.selfShadow)
+        sun = detail::sunTransmittance(m.density, std::exp(exponent0), m.heightFalloff, m.toSun.y);
+    addSegment(m, sunPhase * sun + m.ambient, tau, r);
+}
+
+// Composite: out.rgb = color.rgb · T + L, out.a = color.a.
+void shadePixel(const Model& m, uint32_t i, uint32_t j, const float* color, float depth, float* out) {
+    const Ray ray = pixelRay(m, i, j, depth);
+    const dvec3 sunPhase = m.sunIlluminance * henyeyGreenstein(glm::dot(ray.d, m.toSun), m.g);  // E·p(cosθ)
+    Radiance r;
+    marchPixel(m, ray, sunPhase, r);
+    if (m.analyticTail && ray.distance > m.maxDistance) tailContribution(m, ray, sunPhase, r);
+    for (int c = 0; c < 3; ++c)
+        out[c] = float(double(color[c]) * r.T + r.L[c]);
+    out[3] = color[3];
+}
+
+}  // namespace
+
+Status renderFog(const FogInputs& in, std::vector<float>& out) {
+    if (Status s = validate(in); !s) return s;
+    std::vector<float> result;  // not `out` directly: `in.color` may view it
+    try {
+        result.assign(in.color.begin(), in.color.end());
+    } catch (const std::bad_alloc&) {
+        return {Result::OutOfMemory, "reference::renderFog: cannot allocate the output image"};
+    }
+    if (in.settings.enabled) {
+        const Model m = makeModel(in);
+        // Pixels are independent, so the output does not depend on how rows are shared out.
+        std::atomic<uint32_t> nextRow{0};
+        auto work = [&] {
+            for (uint32_t j; (j = nextRow.fetch_add(1)) < m.height;) {
+                for (uint32_t i = 0; i < m.width; ++i) {
+                    const size_t p = size_t(j) * m.width + i;
+                    shadePixel(m, i, j, &in.color[p * 4], in.depth[p], &result[p * 4]);
+                }
+            }
+        };
+        uint32_t threads = in.threads ? in.threads : std::max(1u, std::thread::hardware_concurrency());
+        threads = std::min(threads, m.height);
+        std::vector<std::thread> pool;
+        try {
+            pool.reserve(threads - 1);
+            for (uint32_t t = 1; t < threads; ++t)
+                pool.emplace_back(work);
+        } catch (const std::exception&) {
+            // Fewer threads than asked for: the ones running (and this one) take all rows.
+        }
+        work();
+        for (std::thread& t : pool)
+            t.join();
+    }
+    out.swap(result);
+    return Status::success();
+}
+
+}  // namespace postfx::reference

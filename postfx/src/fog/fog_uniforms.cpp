@@ -1,0 +1,55 @@
+#include "fog/fog_uniforms.h"
+
+#include "fog/fog_settings.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace postfx::fog {
+
+glm::dmat4 rotationOnly(const glm::mat4& view) {
+    glm::dmat4 r(view);
+    r[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    return r;
+}
+
+gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth, bool noiseEnabled,
+                               bool shadowMapEnabled) {
+    const FogSettings& s = frame.fog;
+    const glm::dvec3 camera = frame.camera.position;
+    gpu::FogUniforms u{};
+    u.clipToView = glm::mat4(glm::inverse(glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view)));
+    // camera-relative x -> world (x + camera) -> shadow clip
+    u.viewToShadow = glm::mat4(frame.shadowMap.worldToClip * glm::translate(glm::dmat4(1.0), camera));
+    u.toSun = glm::vec4(glm::normalize(frame.sun.toSun), 0.0f);
+    u.sunIlluminance = glm::vec4(frame.sun.illuminance, 0.0f);
+    u.ambient = glm::vec4(frame.ambient, 0.0f);
+    u.albedo = glm::vec4(s.albedo, 0.0f);
+    u.medium = glm::vec4(s.density, s.heightFalloff, clampedAnisotropy(s.anisotropy), s.maxDistance);
+    u.heights = glm::vec4(float(camera.y - double(s.baseHeight)), 0.0f, 0.0f, 0.0f);
+
+    const double scale = 0.01 * double(s.noise.tiling);
+    const glm::dvec3 noiseAtCamera = (camera - glm::dvec3(s.noise.wind) * frame.timeSeconds) * scale;
+    const glm::dvec3 wrapped = noiseAtCamera - glm::floor(noiseAtCamera);
+    u.noise = glm::vec4(glm::vec3(wrapped), float(scale));
+    u.noiseRemap = glm::vec4(s.noise.threshold, s.noise.multiplier, 0.0f, 0.0f);
+
+    u.shadow = glm::vec4(frame.shadowMap.depthBias, float((s.shadowKernel - 1) / 2), 0.0f, 0.0f);
+    const float noGeometryDepth = depth.reversedZ ? 0.0f : 1.0f;
+    u.march = glm::vec4(s.transmittanceCutoff, noGeometryDepth, 0.0f, 0.0f);
+    u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, s.steps,
+                          uint32_t(frame.frameIndex & 0xffffffffu));
+    uint32_t flags = 0;
+    if (s.jitter) flags |= gpu::kFogFlagJitter;
+    if (noiseEnabled) flags |= gpu::kFogFlagNoise;
+    if (shadowMapEnabled) flags |= gpu::kFogFlagShadowMap;
+    if (shadowMapEnabled && frame.shadowMap.reversedZ) flags |= gpu::kFogFlagShadowReversedZ;
+    if (s.selfShadow) flags |= gpu::kFogFlagSelfShadow;
+    if (s.analyticTail) flags |= gpu::kFogFlagAnalyticTail;
+    if (depth.reversedZ) flags |= gpu::kFogFlagDepthReversedZ;
+    u.flags = glm::uvec4(flags, 0u, 0u, 0u);
+    return u;
+}
+
+}  // namespace postfx::fog

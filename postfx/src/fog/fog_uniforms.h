@@ -1,0 +1,18 @@
+// Builds the fog pass's uniforms from a frame's inputs. Everything that depends on the camera's world
+// position is done here in double precision, so the shader works in camera-relative single precision.
+#pragma once
+
+#include <postfx/context.h>
+
+#include "common/shared.h"
+
+namespace postfx::fog {
+
+// `noiseEnabled`: a noise texture will be bound; `shadowMapEnabled`: a shadow map will be bound.
+gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth, bool noiseEnabled,
+                               bool shadowMapEnabled);
+
+// The camera's rotation-only view (translation removed): world directions -> view directions.
+glm::dmat4 rotationOnly(const glm::mat4& view);
+
+}  // namespace postfx::fog

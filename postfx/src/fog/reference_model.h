@@ -1,0 +1,43 @@
+// The pieces of the fog model (docs/effects/fog.md) in double precision, used by the CPU reference
+// (fog_reference.cpp) and exposed to its unit tests. Each function is one equation of the doc.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <span>
+
+namespace postfx::reference::detail {
+
+// Exponent of the height term, -height_falloff · (y - base_height), clamped to <= kMaxHeightExponent.
+double heightExponent(double y, double heightFalloff, double baseHeight);
+// h(y) = exp(heightExponent(y)).
+double heightTerm(double y, double heightFalloff, double baseHeight);
+
+// n(u): the noise texture (size³ texels, x fastest, then y, then z) sampled with trilinear filtering
+// and repeat addressing, texel centres at (i + 0.5) / size.
+double sampleNoise(std::span<const float> texels, uint32_t size, const glm::dvec3& u);
+
+// The host's shadow map as the reference reads it.
+struct ShadowMap {
+    std::span<const float> depth;  // width·height texels, row-major, row 0 at v = 0; empty: no map
+    uint32_t width = 0, height = 0;
+    glm::dmat4 worldToClip{1.0};
+    bool reversedZ = false;
+    double bias = 0.0;
+    uint32_t kernel = 1;  // odd
+};
+
+// V(x) at world position `world`: the mean of the kernel × kernel depth comparisons; 1 outside the map
+// or when there is no map.
+double shadowVisibility(const ShadowMap& map, const glm::dvec3& world);
+
+// Tsun(x) = exp(-τsun), τsun = density · h / (height_falloff · toSunY) when height_falloff · toSunY > 0,
+// otherwise ∞ (Tsun = 0). `h` is h(y) at x.
+double sunTransmittance(double density, double h, double heightFalloff, double toSunY);
+
+// τtail: optical depth of the height fog along t ∈ [t0, t0 + length] where the ray's height term is
+// exp(exponent0 - a·(t - t0)), a = height_falloff · d.y. `length` may be +∞.
+double tailOpticalDepth(double density, double exponent0, double a, double length);
+
+}  // namespace postfx::reference::detail

@@ -1,0 +1,79 @@
+// The one header shared by postfx's C++ and GLSL: uniform structs, binding numbers, workgroup sizes.
+// Only vec4/uvec4/mat4 members, so std140 and the C++ layout agree; sizes are static_asserted.
+#ifndef POSTFX_SHARED_H
+#define POSTFX_SHARED_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+
+#include <cstdint>
+namespace postfx::gpu {
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using mat4 = glm::mat4;
+using uint = uint32_t;
+#define PFX_CONST(type, name, value) inline constexpr type name = value
+#else
+#define PFX_CONST(type, name, value) const type name = value
+#endif
+
+// ---- fog (shaders/fog/) ----
+PFX_CONST(uint, kFogGroupSize, 8);  // raymarch workgroup: kFogGroupSize² pixels
+
+PFX_CONST(uint, kFogBindingColorIn, 0);    // storage image: host color (read)
+PFX_CONST(uint, kFogBindingColorOut, 1);   // storage image: output (host color itself when in place)
+PFX_CONST(uint, kFogBindingDepth, 2);      // sampler2D: host depth (texelFetch)
+PFX_CONST(uint, kFogBindingShadowMap, 3);  // sampler2D: host shadow map (texelFetch)
+PFX_CONST(uint, kFogBindingNoise, 4);      // sampler3D: noise, trilinear, repeat
+PFX_CONST(uint, kFogBindingUniforms, 5);   // uniform buffer: FogUniforms
+
+PFX_CONST(uint, kNoiseGroupSize, 4);  // noise generation workgroup: kNoiseGroupSize³ texels
+PFX_CONST(uint, kNoiseBindingTexture, 0);  // storage image: the r8 noise texture being generated
+
+// Flags in FogUniforms.flags.x
+PFX_CONST(uint, kFogFlagJitter, 1u);
+PFX_CONST(uint, kFogFlagNoise, 2u);
+PFX_CONST(uint, kFogFlagShadowMap, 4u);
+PFX_CONST(uint, kFogFlagShadowReversedZ, 8u);
+PFX_CONST(uint, kFogFlagSelfShadow, 16u);
+PFX_CONST(uint, kFogFlagAnalyticTail, 32u);
+PFX_CONST(uint, kFogFlagDepthReversedZ, 64u);
+
+struct FogUniforms {
+    mat4 clipToView;       // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))
+    mat4 viewToShadow;     // camera-relative world -> shadow clip (built in double on the host)
+    vec4 toSun;            // xyz: unit direction toward the sun
+    vec4 sunIlluminance;   // rgb [lux]
+    vec4 ambient;          // rgb: uniform incident radiance
+    vec4 albedo;           // rgb: σs/σt
+    vec4 medium;           // x: density [1/m], y: height falloff [1/m], z: HG g (clamped), w: max distance [m]
+    vec4 heights;          // x: camera y - base height [m]
+    vec4 noise;            // xyz: noise coordinate of the camera, wrapped to [0,1); w: 0.01·tiling [1/m]
+    vec4 noiseRemap;       // x: threshold, y: multiplier
+    vec4 shadow;           // x: depth bias, y: kernel radius in texels (kernel = 2r+1)
+    vec4 march;            // x: transmittance cutoff, y: depth of "no geometry" (0 or 1)
+    uvec4 extent;          // x, y: output size [px], z: steps, w: frame index (mod 2^32)
+    uvec4 flags;           // x: kFogFlag* bits
+};
+
+// ---- fog noise generation (shaders/fog/noise_generate.comp, shaders/common/noise.glsl) ----
+// Octave o of each fBm has a lattice of min(base << o, size) cells per tile: a power of two that
+// divides the (power-of-two) texture size, so the texture tiles.
+PFX_CONST(uint, kNoisePerlinOctaves, 4u);
+PFX_CONST(uint, kNoisePerlinBasePeriod, 4u);  // cells per tile of the first Perlin octave
+PFX_CONST(uint, kNoiseWorleyOctaves, 3u);
+PFX_CONST(uint, kNoiseWorleyBasePeriod, 4u);  // cells per tile of the first Worley octave
+// Perlin–Worley values below this map to 0 (stretches the used range to mean ~0.5; noise.glsl).
+PFX_CONST(float, kNoiseRangeLow, 0.3f);
+
+struct NoisePush {  // push constants of noise_generate.comp
+    uvec4 params;   // x: texture size [texels], y: seed
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(FogUniforms) == 2 * 64 + 12 * 16, "FogUniforms must match std140");
+static_assert(sizeof(NoisePush) == 16, "NoisePush must match the shader's push constants");
+}  // namespace postfx::gpu
+#endif
+
+#endif  // POSTFX_SHARED_H

@@ -1,0 +1,47 @@
+// A minimal host for driving postfx's fog directly in tests: color and depth images with chosen
+// contents and layouts, one record() call, color read back.
+#pragma once
+
+#include "core/gpu_resources.h"
+#include "gpu_test.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace test {
+
+struct FogHarnessImages {
+    uint32_t width = 0, height = 0;
+    VkFormat colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    std::vector<float> color;  // RGBA
+    std::vector<float> depth;  // one per pixel
+    VkImageLayout colorLayout = VK_IMAGE_LAYOUT_GENERAL;
+    VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+    bool separateOutput = false;  // write into FrameInfo.output instead of in place
+};
+
+class FogHarness {
+public:
+    FogHarness(demo::VulkanHost& host, const postfx::core::Gpu& gpu) : host_(host), gpu_(gpu) {}
+
+    // Uploads the images, records `frame` (its command buffer and images filled in here), submits,
+    // reads back the color image (and the output image when separate). Returns the record() status.
+    postfx::Status run(postfx::Context& context, const FogHarnessImages& images, postfx::FrameInfo frame,
+                       std::vector<float>& color, std::vector<float>* output = nullptr);
+
+private:
+    demo::VulkanHost& host_;
+    const postfx::core::Gpu& gpu_;
+};
+
+// A camera at `position` looking down -z with a reversed-Z (or standard) finite projection.
+postfx::CameraInput testCamera(glm::dvec3 position, float fovYDeg, float aspect, float nearPlane,
+                               float farPlane, bool reversedZ);
+
+// Unit direction (camera-relative world) through the centre of pixel (i, j), and the depth value of the
+// point at distance `distance` along it, for `camera`.
+glm::dvec3 pixelDirection(const postfx::CameraInput& camera, uint32_t i, uint32_t j, uint32_t w, uint32_t h);
+float depthAtDistance(const postfx::CameraInput& camera, glm::dvec3 direction, double distance);
+
+}  // namespace test
