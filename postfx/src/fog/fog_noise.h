@@ -45,6 +45,8 @@ public:
     // The texture exists and its generation for the current (size, seed) has been recorded.
     bool ready() const { return image_.handle() != VK_NULL_HANDLE && generated_ && !pending_; }
 
+    bool needsGeneration() const { return pending_; }  // recordGenerate() would record a dispatch
+
     void release();  // frees the image and the pipeline (no-op when nothing is held)
 
 private:

@@ -185,7 +185,7 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
         }
         standInsReady_ = true;
     }
-    if (generatedNoise) {
+    if (generatedNoise && noise_->needsGeneration()) {
         timer.beginPass(cmd, "fog.noise");
         Status s;
         noise_->recordGenerate(cmd, arena, s);
