@@ -2,9 +2,9 @@
 // Units: metres, lux (illuminance), cd/m² (radiance); directions in world space (right-handed, y up).
 #pragma once
 
+#include <postfx/fog.h>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
-#include <postfx/fog.h>
 
 #include <string>
 #include <vector>
@@ -31,7 +31,7 @@ enum class ObjectType { Plane, Box, Sphere };
 
 struct Object {
     ObjectType type = ObjectType::Plane;
-    glm::vec3 position{0.0f};  // plane: a point on it; box, sphere: centre [m]
+    glm::vec3 position{0.0f};            // plane: a point on it; box, sphere: centre [m]
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  // plane only, unit (normalised on load)
     glm::vec3 halfSize{0.5f};            // box only [m], > 0
     float radius = 0.5f;                 // sphere only [m], > 0

@@ -27,7 +27,7 @@ PFX_CONST(uint, kFogBindingShadowMap, 3);  // sampler2D: host shadow map (texelF
 PFX_CONST(uint, kFogBindingNoise, 4);      // sampler3D: noise, trilinear, repeat
 PFX_CONST(uint, kFogBindingUniforms, 5);   // uniform buffer: FogUniforms
 
-PFX_CONST(uint, kNoiseGroupSize, 4);  // noise generation workgroup: kNoiseGroupSize³ texels
+PFX_CONST(uint, kNoiseGroupSize, 4);       // noise generation workgroup: kNoiseGroupSize³ texels
 PFX_CONST(uint, kNoiseBindingTexture, 0);  // storage image: the r8 noise texture being generated
 
 // Flags in FogUniforms.flags.x
@@ -40,20 +40,20 @@ PFX_CONST(uint, kFogFlagAnalyticTail, 32u);
 PFX_CONST(uint, kFogFlagDepthReversedZ, 64u);
 
 struct FogUniforms {
-    mat4 clipToView;       // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))
-    mat4 viewToShadow;     // camera-relative world -> shadow clip (built in double on the host)
-    vec4 toSun;            // xyz: unit direction toward the sun
-    vec4 sunIlluminance;   // rgb [lux]
-    vec4 ambient;          // rgb: uniform incident radiance
-    vec4 albedo;           // rgb: σs/σt
-    vec4 medium;           // x: density [1/m], y: height falloff [1/m], z: HG g (clamped), w: max distance [m]
-    vec4 heights;          // x: camera y - base height [m]
-    vec4 noise;            // xyz: noise coordinate of the camera, wrapped to [0,1); w: 0.01·tiling [1/m]
-    vec4 noiseRemap;       // x: threshold, y: multiplier
-    vec4 shadow;           // x: depth bias, y: kernel radius in texels (kernel = 2r+1)
-    vec4 march;            // x: transmittance cutoff, y: depth of "no geometry" (0 or 1)
-    uvec4 extent;          // x, y: output size [px], z: steps, w: frame index (mod 2^32)
-    uvec4 flags;           // x: kFogFlag* bits
+    mat4 clipToView;      // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))
+    mat4 viewToShadow;    // camera-relative world -> shadow clip (built in double on the host)
+    vec4 toSun;           // xyz: unit direction toward the sun
+    vec4 sunIlluminance;  // rgb [lux]
+    vec4 ambient;         // rgb: uniform incident radiance
+    vec4 albedo;          // rgb: σs/σt
+    vec4 medium;          // x: density [1/m], y: height falloff [1/m], z: HG g (clamped), w: max distance [m]
+    vec4 heights;         // x: camera y - base height [m]
+    vec4 noise;           // xyz: noise coordinate of the camera, wrapped to [0,1); w: 0.01·tiling [1/m]
+    vec4 noiseRemap;      // x: threshold, y: multiplier
+    vec4 shadow;          // x: depth bias, y: kernel radius in texels (kernel = 2r+1)
+    vec4 march;           // x: transmittance cutoff, y: depth of "no geometry" (0 or 1)
+    uvec4 extent;         // x, y: output size [px], z: steps, w: frame index (mod 2^32)
+    uvec4 flags;          // x: kFogFlag* bits
 };
 
 // ---- fog noise generation (shaders/fog/noise_generate.comp, shaders/common/noise.glsl) ----

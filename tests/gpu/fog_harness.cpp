@@ -13,7 +13,9 @@ using postfx::core::GpuBuffer;
 using postfx::core::GpuImage;
 using postfx::core::ImageTransition;
 
-size_t texelBytes(VkFormat format) { return format == VK_FORMAT_R32G32B32A32_SFLOAT ? 16 : 8; }
+size_t texelBytes(VkFormat format) {
+    return format == VK_FORMAT_R32G32B32A32_SFLOAT ? 16 : 8;
+}
 
 void packColor(const std::vector<float>& rgba, VkFormat format, void* dst) {
     if (format == VK_FORMAT_R32G32B32A32_SFLOAT) {
@@ -21,7 +23,8 @@ void packColor(const std::vector<float>& rgba, VkFormat format, void* dst) {
         return;
     }
     uint16_t* out = static_cast<uint16_t*>(dst);
-    for (size_t i = 0; i < rgba.size(); ++i) out[i] = glm::packHalf1x16(rgba[i]);
+    for (size_t i = 0; i < rgba.size(); ++i)
+        out[i] = glm::packHalf1x16(rgba[i]);
 }
 
 void unpackColor(const void* src, VkFormat format, size_t count, std::vector<float>& rgba) {
@@ -31,7 +34,8 @@ void unpackColor(const void* src, VkFormat format, size_t count, std::vector<flo
         return;
     }
     const uint16_t* in = static_cast<const uint16_t*>(src);
-    for (size_t i = 0; i < count; ++i) rgba[i] = glm::unpackHalf1x16(in[i]);
+    for (size_t i = 0; i < count; ++i)
+        rgba[i] = glm::unpackHalf1x16(in[i]);
 }
 
 ImageTransition to(VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout layout,
@@ -51,8 +55,9 @@ ImageTransition to(VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
 
 }  // namespace
 
-postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages& images, postfx::FrameInfo frame,
-                               std::vector<float>& color, std::vector<float>* output) {
+postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages& images,
+                               postfx::FrameInfo frame, std::vector<float>& color,
+                               std::vector<float>* output) {
     const uint32_t w = images.width, h = images.height;
     const size_t pixels = size_t(w) * h;
     const size_t colorBytes = pixels * texelBytes(images.colorFormat);
@@ -78,7 +83,8 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
     std::memcpy(static_cast<char*>(upload.mapped()) + colorBytes, images.depth.data(), pixels * 4);
 
     constexpr VkImageAspectFlags kColor = VK_IMAGE_ASPECT_COLOR_BIT, kDepth = VK_IMAGE_ASPECT_DEPTH_BIT;
-    constexpr VkPipelineStageFlags kAll = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, kCopy = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    constexpr VkPipelineStageFlags kAll = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                                   kCopy = VK_PIPELINE_STAGE_TRANSFER_BIT;
     constexpr VkAccessFlags kAny = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
     postfx::Status recordStatus;
     std::string error;
@@ -88,22 +94,23 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
                                                                          {&depthImage, kDepth}};
             if (images.separateOutput) all.push_back({&outputImage, kColor});
             for (auto& [image, aspect] : all)
-                postfx::core::transition(gpu_, cmd,
-                                         to(image->handle(), aspect, VK_IMAGE_LAYOUT_UNDEFINED,
-                                            VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                                            0, kCopy, VK_ACCESS_TRANSFER_WRITE_BIT));
+                postfx::core::transition(
+                    gpu_, cmd,
+                    to(image->handle(), aspect, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, kCopy,
+                       VK_ACCESS_TRANSFER_WRITE_BIT));
             VkBufferImageCopy region{};
             region.imageSubresource = {kColor, 0, 0, 1};
             region.imageExtent = {w, h, 1};
-            vkCmdCopyBufferToImage(cmd, upload.handle(), colorImage.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                                   &region);
+            vkCmdCopyBufferToImage(cmd, upload.handle(), colorImage.handle(),
+                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
             if (images.separateOutput)
                 vkCmdCopyBufferToImage(cmd, upload.handle(), outputImage.handle(),
                                        VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
             region.bufferOffset = colorBytes;
             region.imageSubresource.aspectMask = kDepth;
-            vkCmdCopyBufferToImage(cmd, upload.handle(), depthImage.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                                   &region);
+            vkCmdCopyBufferToImage(cmd, upload.handle(), depthImage.handle(),
+                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
             // Into the layouts the "host" hands postfx.
             postfx::core::transition(gpu_, cmd,
                                      to(colorImage.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -112,13 +119,16 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
                                      to(depthImage.handle(), kDepth, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                                         images.depthLayout, kCopy, VK_ACCESS_TRANSFER_WRITE_BIT, kAll, kAny));
             if (images.separateOutput)
-                postfx::core::transition(gpu_, cmd,
-                                         to(outputImage.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                            images.colorLayout, kCopy, VK_ACCESS_TRANSFER_WRITE_BIT, kAll, kAny));
+                postfx::core::transition(
+                    gpu_, cmd,
+                    to(outputImage.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, images.colorLayout,
+                       kCopy, VK_ACCESS_TRANSFER_WRITE_BIT, kAll, kAny));
 
             frame.commandBuffer = cmd;
-            frame.color = {colorImage.handle(), colorImage.view(), images.colorFormat, extent, images.colorLayout};
-            frame.depth = {depthImage.handle(), depthImage.view(), VK_FORMAT_D32_SFLOAT, extent, images.depthLayout};
+            frame.color = {colorImage.handle(), colorImage.view(), images.colorFormat, extent,
+                           images.colorLayout};
+            frame.depth = {depthImage.handle(), depthImage.view(), VK_FORMAT_D32_SFLOAT, extent,
+                           images.depthLayout};
             if (images.separateOutput)
                 frame.output = {outputImage.handle(), outputImage.view(), images.colorFormat, extent,
                                 images.colorLayout};
@@ -130,29 +140,31 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
             region.imageExtent = {w, h, 1};
             for (GpuImage* image : {&colorImage, &outputImage}) {
                 if (!image->handle()) continue;
-                postfx::core::transition(gpu_, cmd,
-                                         to(image->handle(), kColor, images.colorLayout,
-                                            VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kAll, VK_ACCESS_MEMORY_WRITE_BIT,
-                                            kCopy, VK_ACCESS_TRANSFER_READ_BIT));
-                vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.handle(), 1,
-                                       &region);
+                postfx::core::transition(
+                    gpu_, cmd,
+                    to(image->handle(), kColor, images.colorLayout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       kAll, VK_ACCESS_MEMORY_WRITE_BIT, kCopy, VK_ACCESS_TRANSFER_READ_BIT));
+                vkCmdCopyImageToBuffer(cmd, image->handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                       readback.handle(), 1, &region);
                 region.bufferOffset = colorBytes;
             }
             VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
             toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
             toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-            vkCmdPipelineBarrier(cmd, kCopy, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
+            vkCmdPipelineBarrier(cmd, kCopy, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
+                                 nullptr);
         },
         error);
     if (!submitted) return {postfx::Result::VulkanError, error};
     unpackColor(readback.mapped(), images.colorFormat, pixels * 4, color);
     if (output && images.separateOutput)
-        unpackColor(static_cast<const char*>(readback.mapped()) + colorBytes, images.colorFormat, pixels * 4, *output);
+        unpackColor(static_cast<const char*>(readback.mapped()) + colorBytes, images.colorFormat, pixels * 4,
+                    *output);
     return recordStatus;
 }
 
-postfx::CameraInput testCamera(glm::dvec3 position, float fovYDeg, float aspect, float nearPlane, float farPlane,
-                               bool reversedZ) {
+postfx::CameraInput testCamera(glm::dvec3 position, float fovYDeg, float aspect, float nearPlane,
+                               float farPlane, bool reversedZ) {
     postfx::CameraInput camera;
     camera.position = position;
     camera.view = glm::mat4(1.0f);
@@ -178,7 +190,8 @@ glm::dvec3 pixelDirection(const postfx::CameraInput& camera, uint32_t i, uint32_
     glm::dmat4 rotation(camera.view);
     rotation[3] = glm::dvec4(0, 0, 0, 1);
     const glm::dmat4 clipToView = glm::inverse(glm::dmat4(camera.projection) * rotation);
-    const glm::dvec4 p = clipToView * glm::dvec4((i + 0.5) / w * 2.0 - 1.0, (j + 0.5) / h * 2.0 - 1.0, 0.5, 1.0);
+    const glm::dvec4 p =
+        clipToView * glm::dvec4((i + 0.5) / w * 2.0 - 1.0, (j + 0.5) / h * 2.0 - 1.0, 0.5, 1.0);
     return glm::normalize(glm::dvec3(p) / p.w);
 }
 

@@ -32,7 +32,8 @@ protected:
     postfx::FrameInfo homogeneousFrame(glm::dvec3 cameraPos) const {
         postfx::FrameInfo frame;
         frame.camera = testCamera(cameraPos, 60.0f, float(kWidth) / kHeight, 0.1f, 1000.0f, true);
-        frame.sun.toSun = glm::normalize(glm::vec3(0.2f, 0.3f, -1.0f));  // in front: forward scattering visible
+        frame.sun.toSun =
+            glm::normalize(glm::vec3(0.2f, 0.3f, -1.0f));  // in front: forward scattering visible
         frame.sun.illuminance = {1000.0f, 2000.0f, 500.0f};
         frame.ambient = {10.0f, 20.0f, 30.0f};
         postfx::FogSettings& fog = frame.fog;
@@ -71,20 +72,24 @@ protected:
     }
 
     // out = color·e^{-σt·D} + albedo·(E·p(θ) + ambient)·(1 - e^{-σt·D}), D = min(surface, max distance).
-    void expectClosedForm(const postfx::FrameInfo& frame, const FogHarnessImages& im, const std::vector<float>& out,
-                          double tolerance) const {
+    void expectClosedForm(const postfx::FrameInfo& frame, const FogHarnessImages& im,
+                          const std::vector<float>& out, double tolerance) const {
         const postfx::FogSettings& fog = frame.fog;
         for (uint32_t j = 0; j < kHeight; ++j)
             for (uint32_t i = 0; i < kWidth; ++i) {
                 const size_t p = size_t(j) * kWidth + i;
                 const glm::dvec3 d = pixelDirection(frame.camera, i, j, kWidth, kHeight);
-                const double distance = i < kWidth / 2 ? std::min<double>(kWall, fog.maxDistance) : fog.maxDistance;
+                const double distance =
+                    i < kWidth / 2 ? std::min<double>(kWall, fog.maxDistance) : fog.maxDistance;
                 const double T = std::exp(-double(fog.density) * distance);
-                const double phase = hg(glm::dot(d, glm::dvec3(glm::normalize(frame.sun.toSun))), fog.anisotropy);
+                const double phase =
+                    hg(glm::dot(d, glm::dvec3(glm::normalize(frame.sun.toSun))), fog.anisotropy);
                 for (int c = 0; c < 3; ++c) {
                     const double light = double(frame.sun.illuminance[c]) * phase + double(frame.ambient[c]);
-                    const double expected = im.color[p * 4 + c] * T + double(fog.albedo[c]) * light * (1.0 - T);
-                    ASSERT_NEAR(out[p * 4 + c], expected, tolerance * expected) << "pixel " << i << "," << j << " c" << c;
+                    const double expected =
+                        im.color[p * 4 + c] * T + double(fog.albedo[c]) * light * (1.0 - T);
+                    ASSERT_NEAR(out[p * 4 + c], expected, tolerance * expected)
+                        << "pixel " << i << "," << j << " c" << c;
                 }
                 ASSERT_EQ(out[p * 4 + 3], im.color[p * 4 + 3]);  // alpha untouched
             }
@@ -125,7 +130,8 @@ TEST_F(FogApiTest, SeparateOutputLeavesColorUntouched) {
     FogHarness harness(*host, gpu);
     postfx::Status s = harness.run(*context, im, frame, color, &output);
     ASSERT_TRUE(s.ok()) << s.message;
-    for (size_t k = 0; k < color.size(); ++k) ASSERT_NEAR(color[k], im.color[k], 1e-3f * im.color[k]);
+    for (size_t k = 0; k < color.size(); ++k)
+        ASSERT_NEAR(color[k], im.color[k], 1e-3f * im.color[k]);
     expectClosedForm(frame, im, output, 2e-3);
 }
 
@@ -155,11 +161,13 @@ TEST_F(FogApiTest, RejectsBadSettingsNamingTheField) {
         {"fog.steps", [](postfx::FrameInfo& f) { f.fog.steps = 0; }},
         {"fog.max_distance", [](postfx::FrameInfo& f) { f.fog.maxDistance = 0.0f; }},
         {"fog.shadow_kernel", [](postfx::FrameInfo& f) { f.fog.shadowKernel = 4; }},
-        {"fog.noise.tiling", [](postfx::FrameInfo& f) {
+        {"fog.noise.tiling",
+         [](postfx::FrameInfo& f) {
              f.fog.noise.enabled = true;
              f.fog.noise.tiling = 0.0f;
          }},
-        {"fog.noise.texture_size", [](postfx::FrameInfo& f) {
+        {"fog.noise.texture_size",
+         [](postfx::FrameInfo& f) {
              f.fog.noise.enabled = true;
              f.fog.noise.textureSize = 100;
          }},
@@ -167,9 +175,13 @@ TEST_F(FogApiTest, RejectsBadSettingsNamingTheField) {
         {"sun.toSun", [](postfx::FrameInfo& f) { f.sun.toSun = glm::vec3(0.0f); }},
         {"camera.position", [](postfx::FrameInfo& f) { f.camera.position.x = INFINITY; }},
         {"camera.projection", [](postfx::FrameInfo& f) { f.camera.projection = glm::mat4(0.0f); }},
-        {"shadowMap.image.format", [](postfx::FrameInfo& f) {
-             f.shadowMap.image = {reinterpret_cast<VkImage>(uintptr_t(1)), reinterpret_cast<VkImageView>(uintptr_t(1)),
-                                  VK_FORMAT_R8G8B8A8_UNORM, {4, 4}, VK_IMAGE_LAYOUT_GENERAL};
+        {"shadowMap.image.format",
+         [](postfx::FrameInfo& f) {
+             f.shadowMap.image = {reinterpret_cast<VkImage>(uintptr_t(1)),
+                                  reinterpret_cast<VkImageView>(uintptr_t(1)),
+                                  VK_FORMAT_R8G8B8A8_UNORM,
+                                  {4, 4},
+                                  VK_IMAGE_LAYOUT_GENERAL};
          }},
     };
     const postfx::FrameInfo base = homogeneousFrame({0.0, 1.5, 0.0});
@@ -183,7 +195,8 @@ TEST_F(FogApiTest, RejectsBadSettingsNamingTheField) {
         EXPECT_EQ(s.code, Result::InvalidArgument) << c.field;
         EXPECT_NE(s.message.find(c.field), std::string::npos) << s.message;
         // Nothing was recorded: the color comes back as it went in.
-        for (size_t k = 0; k < out.size(); ++k) ASSERT_NEAR(out[k], im.color[k], 1e-3f * im.color[k]) << c.field;
+        for (size_t k = 0; k < out.size(); ++k)
+            ASSERT_NEAR(out[k], im.color[k], 1e-3f * im.color[k]) << c.field;
     }
 }
 

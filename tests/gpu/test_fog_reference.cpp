@@ -15,8 +15,8 @@ const std::string kSourceDir = POSTFX_SOURCE_DIR;
 
 struct ReferenceCase {
     const char* scene;
-    double maxRelativeRmse;        // GPU with the scene's own settings (one frame, jittered) vs reference
-    double maxConvergedRmse;       // GPU at 512 steps without jitter vs reference: the same model
+    double maxRelativeRmse;   // GPU with the scene's own settings (one frame, jittered) vs reference
+    double maxConvergedRmse;  // GPU at 512 steps without jitter vs reference: the same model
 };
 
 class FogReferenceTest : public GpuTest, public ::testing::WithParamInterface<ReferenceCase> {
@@ -64,10 +64,13 @@ TEST_P(FogReferenceTest, GpuMatchesReference) {
 
     const ImageStats stats = compareImages(gpu.rgba, reference.rgba, gpu.width, gpu.height, 0.05, 1.0);
     const ImageStats model = compareImages(converged.rgba, reference.rgba, gpu.width, gpu.height, 0.05, 1.0);
-    const ImageStats fogEffect = compareImages(unfogged.rgba, reference.rgba, gpu.width, gpu.height, 0.05, 1.0);
-    std::printf("[ fog ] %s: GPU (%u steps) vs reference %s\n", c.scene, scene.fog.steps, stats.summary().c_str());
+    const ImageStats fogEffect =
+        compareImages(unfogged.rgba, reference.rgba, gpu.width, gpu.height, 0.05, 1.0);
+    std::printf("[ fog ] %s: GPU (%u steps) vs reference %s\n", c.scene, scene.fog.steps,
+                stats.summary().c_str());
     std::printf("[ fog ] %s: GPU (512 steps, no jitter) vs reference %s\n", c.scene, model.summary().c_str());
-    std::printf("[ fog ] %s: un-fogged vs reference: relative RMSE %.3g%%\n", c.scene, fogEffect.relativeRmse * 100);
+    std::printf("[ fog ] %s: un-fogged vs reference: relative RMSE %.3g%%\n", c.scene,
+                fogEffect.relativeRmse * 100);
     EXPECT_EQ(stats.nonFinite, 0u);
     EXPECT_LT(stats.relativeRmse, c.maxRelativeRmse) << stats.summary();
     EXPECT_LT(model.relativeRmse, c.maxConvergedRmse) << model.summary();

@@ -92,6 +92,11 @@ public:
     Status recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,
                                   uint32_t& size) const;
 
+    // The fog's generated noise texture (3D, R8_UNORM, repeat-tileable), for hosts that want to sample the
+    // same noise: in SHADER_READ_ONLY_OPTIMAL once the frame that generated it has executed.
+    // VK_NULL_HANDLE when none is held (fog or generated noise off).
+    VkImageView fogNoiseView() const;
+
     const ContextCreateInfo& createInfo() const;
 
     struct Impl;  // internal; defined in postfx/src/core

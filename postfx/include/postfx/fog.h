@@ -70,14 +70,14 @@ struct ShadowMapInput {
     ImageInput image;
     // World -> shadow clip space: x, y in [-1, 1] map to u, v = (x, y)/2 + 1/2, z/w is the stored depth.
     glm::dmat4 worldToClip{1.0};
-    bool reversedZ = false;   // true: larger stored depth is nearer the sun
-    float depthBias = 0.0f;   // added toward "lit" before comparing [shadow depth units]; >= 0
+    bool reversedZ = false;  // true: larger stored depth is nearer the sun
+    float depthBias = 0.0f;  // added toward "lit" before comparing [shadow depth units]; >= 0
 };
 
 // The camera that rendered color and depth.
 struct CameraInput {
-    glm::dvec3 position{0.0};  // world position [m] (double: postfx marches camera-relative)
-    glm::mat4 view{1.0f};      // world -> view; only its rotation is used (position gives the translation)
+    glm::dvec3 position{0.0};    // world position [m] (double: postfx marches camera-relative)
+    glm::mat4 view{1.0f};        // world -> view; only its rotation is used (position gives the translation)
     glm::mat4 projection{1.0f};  // view -> Vulkan clip, in the context's DepthConvention
 };
 

@@ -160,12 +160,18 @@ Status Context::record(const FrameInfo& frame) {
 Status Context::recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,
                                        uint32_t& size) const {
     const fog::FogNoise* noise = impl_->fog ? impl_->fog->noise() : nullptr;
-    if (!commandBuffer) return impl_->report(invalid("recordFogNoiseReadback: commandBuffer is VK_NULL_HANDLE"));
+    if (!commandBuffer)
+        return impl_->report(invalid("recordFogNoiseReadback: commandBuffer is VK_NULL_HANDLE"));
     if (!buffer) return impl_->report(invalid("recordFogNoiseReadback: buffer is VK_NULL_HANDLE"));
     if (!noise || !noise->ready())
         return impl_->report(invalid("recordFogNoiseReadback: no fog noise texture has been generated yet"));
     size = noise->size();
     return impl_->report(noise->recordReadback(commandBuffer, buffer, offset));
+}
+
+VkImageView Context::fogNoiseView() const {
+    const fog::FogNoise* noise = impl_->fog ? impl_->fog->noise() : nullptr;
+    return noise && noise->ready() ? noise->view() : VK_NULL_HANDLE;
 }
 
 Status Context::readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const {

@@ -20,8 +20,8 @@ struct Context::Impl {
     core::Gpu gpu;
     core::PassTimer timer;
     std::vector<std::unique_ptr<core::DescriptorArena>> arenas;  // one per frame in flight
-    std::unique_ptr<fog::FogPass> fog;  // null while the fog is off
-    core::Retirement retirement;        // objects frames in flight may still use; declared last, freed first
+    std::unique_ptr<fog::FogPass> fog;                           // null while the fog is off
+    core::Retirement retirement;  // objects frames in flight may still use; declared last, freed first
 
     // Sends a failed status to the host's message callback and returns it unchanged.
     Status report(Status status) const;

@@ -13,7 +13,9 @@
 namespace postfx::fog {
 namespace {
 
-Status invalid(std::string message) { return {Result::InvalidArgument, std::move(message)}; }
+Status invalid(std::string message) {
+    return {Result::InvalidArgument, std::move(message)};
+}
 
 bool finite(const glm::mat4& m) {
     for (int c = 0; c < 4; ++c)
@@ -30,7 +32,8 @@ bool isShadowFormat(VkFormat f) {
 // Layouts a compute shader can sample a (depth) image in without a transition.
 bool sampleableLayout(VkImageLayout l) {
     return l == VK_IMAGE_LAYOUT_GENERAL || l == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL ||
-           l == VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL || l == VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL ||
+           l == VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL ||
+           l == VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL ||
            l == VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL;
 }
 
@@ -120,7 +123,8 @@ Status FogPass::createResources(const core::Gpu& gpu, const ContextCreateInfo& i
     desc.spirv = spirv::fog_raymarch_comp_COLOR_RGBA32F;
     if (Status s = raymarch32_.create(gpu, desc); !s) return s;
 
-    const VkDeviceSize align = std::max<VkDeviceSize>(gpu.properties.limits.minUniformBufferOffsetAlignment, 16);
+    const VkDeviceSize align =
+        std::max<VkDeviceSize>(gpu.properties.limits.minUniformBufferOffsetAlignment, 16);
     uniformStride_ = (sizeof(gpu::FogUniforms) + align - 1) / align * align;
     slots_ = info.framesInFlight;
     if (Status s = uniforms_.create(gpu, uniformStride_ * slots_, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true,
@@ -131,15 +135,18 @@ Status FogPass::createResources(const core::Gpu& gpu, const ContextCreateInfo& i
     VkSamplerCreateInfo sampler{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
     sampler.magFilter = sampler.minFilter = VK_FILTER_NEAREST;
     sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    if (Status s = core::vulkanStatus(gpu.fn.vkCreateSampler(gpu.device, &sampler, gpu.allocator, &nearestClamp_),
-                                      "vkCreateSampler for fog");
+    sampler.addressModeU = sampler.addressModeV = sampler.addressModeW =
+        VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    if (Status s =
+            core::vulkanStatus(gpu.fn.vkCreateSampler(gpu.device, &sampler, gpu.allocator, &nearestClamp_),
+                               "vkCreateSampler for fog");
         !s)
         return s;
     sampler.magFilter = sampler.minFilter = VK_FILTER_LINEAR;
     sampler.addressModeU = sampler.addressModeV = sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    if (Status s = core::vulkanStatus(gpu.fn.vkCreateSampler(gpu.device, &sampler, gpu.allocator, &linearRepeat_),
-                                      "vkCreateSampler for fog noise");
+    if (Status s =
+            core::vulkanStatus(gpu.fn.vkCreateSampler(gpu.device, &sampler, gpu.allocator, &linearRepeat_),
+                               "vkCreateSampler for fog noise");
         !s)
         return s;
 
@@ -205,14 +212,17 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
     const bool inPlace = !frame.output.present();
     constexpr VkAccessFlags kRead = VK_ACCESS_SHADER_READ_BIT, kWrite = VK_ACCESS_SHADER_WRITE_BIT;
     const HostImageUse depth = useHostImage(frame.depth, false, kRead);
-    std::vector<HostImageUse> uses = {useHostImage(frame.color, true, inPlace ? kRead | kWrite : kRead), depth};
+    std::vector<HostImageUse> uses = {useHostImage(frame.color, true, inPlace ? kRead | kWrite : kRead),
+                                      depth};
     if (!inPlace) uses.push_back(useHostImage(frame.output, true, kWrite));
     if (shadowOn) uses.push_back(useHostImage(frame.shadowMap.image, false, kRead));
-    const VkImageLayout shadowLayout = shadowOn ? uses.back().layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    const VkImageLayout shadowLayout =
+        shadowOn ? uses.back().layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 
-    const VkImageView noiseView = !noiseOn ? noNoise_.view() : (generatedNoise ? noise_->view() : noise.hostTexture);
-    const VkImageLayout noiseLayout = noiseOn && !generatedNoise ? noise.hostTextureLayout
-                                                                  : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    const VkImageView noiseView =
+        !noiseOn ? noNoise_.view() : (generatedNoise ? noise_->view() : noise.hostTexture);
+    const VkImageLayout noiseLayout =
+        noiseOn && !generatedNoise ? noise.hostTextureLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     core::DescriptorWrites(set)
         .storageImage(gpu::kFogBindingColorIn, frame.color.view)
         .storageImage(gpu::kFogBindingColorOut, inPlace ? frame.color.view : frame.output.view)
@@ -223,14 +233,16 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
         .uniformBuffer(gpu::kFogBindingUniforms, uniforms_.handle(), offset, sizeof(gpu::FogUniforms))
         .apply(gpu);
 
-    for (const HostImageUse& use : uses) core::transition(gpu, cmd, use.acquire);
+    for (const HostImageUse& use : uses)
+        core::transition(gpu, cmd, use.acquire);
     timer.beginPass(cmd, "fog.raymarch");
     pipeline.bind(cmd, set, nullptr);
     const uint32_t groups = gpu::kFogGroupSize;
     gpu.fn.vkCmdDispatch(cmd, (frame.color.extent.width + groups - 1) / groups,
                          (frame.color.extent.height + groups - 1) / groups, 1);
     timer.endPass(cmd);
-    for (const HostImageUse& use : uses) core::transition(gpu, cmd, use.release);
+    for (const HostImageUse& use : uses)
+        core::transition(gpu, cmd, use.release);
     return Status::success();
 }
 

@@ -25,11 +25,15 @@ Status inRange(const char* field, double v, double lo, double hi) {
     return Status::success();
 }
 
-bool isPowerOfTwo(uint32_t v) { return v && !(v & (v - 1)); }
+bool isPowerOfTwo(uint32_t v) {
+    return v && !(v & (v - 1));
+}
 
 }  // namespace
 
-float clampedAnisotropy(float g) { return std::clamp(g, -kMaxAnisotropy, kMaxAnisotropy); }
+float clampedAnisotropy(float g) {
+    return std::clamp(g, -kMaxAnisotropy, kMaxAnisotropy);
+}
 
 Status validateSettings(const FogSettings& s) {
     if (Status r = inRange("fog.density", s.density, 0.0, 1e6); !r) return r;
@@ -40,7 +44,8 @@ Status validateSettings(const FogSettings& s) {
     if (!std::isfinite(s.baseHeight)) return bad("fog.base_height", "is not finite");
     if (Status r = inRange("fog.max_distance", s.maxDistance, 0.0, 1e7); !r) return r;
     if (s.maxDistance <= 0.0f) return bad("fog.max_distance", "must be > 0");
-    if (s.steps < 1 || s.steps > 4096) return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
+    if (s.steps < 1 || s.steps > 4096)
+        return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
     if (Status r = inRange("fog.transmittance_cutoff", s.transmittanceCutoff, 0.0, 1.0); !r) return r;
     if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
@@ -48,7 +53,8 @@ Status validateSettings(const FogSettings& s) {
     const FogNoiseSettings& n = s.noise;
     if (!n.enabled) return Status::success();
     if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
-        return bad("fog.noise.texture_size", std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
+        return bad("fog.noise.texture_size",
+                   std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
     if (Status r = inRange("fog.noise.tiling", n.tiling, 0.0, 1000.0); !r) return r;
     if (n.tiling <= 0.0f) return bad("fog.noise.tiling", "must be > 0");
     if (Status r = inRange("fog.noise.threshold", n.threshold, 0.0, 1.0); !r) return r;
@@ -71,5 +77,7 @@ Status validateLighting(const SunInput& sun, const glm::vec3& ambient) {
 }  // namespace postfx::fog
 
 namespace postfx {
-Status validateFogSettings(const FogSettings& settings) { return fog::validateSettings(settings); }
+Status validateFogSettings(const FogSettings& settings) {
+    return fog::validateSettings(settings);
+}
 }  // namespace postfx

@@ -6,7 +6,7 @@
 
 namespace postfx::fog {
 
-constexpr float kMaxAnisotropy = 0.999f;   // |g| is clamped to this
+constexpr float kMaxAnisotropy = 0.999f;    // |g| is clamped to this
 constexpr float kMaxHeightExponent = 80.f;  // -height_falloff·(y - base_height) is clamped to this
 
 // InvalidArgument naming the field ("fog.density: -1 is negative") for any value out of range or NaN.

@@ -19,7 +19,8 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
     const FogSettings& s = frame.fog;
     const glm::dvec3 camera = frame.camera.position;
     gpu::FogUniforms u{};
-    u.clipToView = glm::mat4(glm::inverse(glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view)));
+    u.clipToView =
+        glm::mat4(glm::inverse(glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view)));
     // camera-relative x -> world (x + camera) -> shadow clip
     u.viewToShadow = glm::mat4(frame.shadowMap.worldToClip * glm::translate(glm::dmat4(1.0), camera));
     u.toSun = glm::vec4(glm::normalize(frame.sun.toSun), 0.0f);
