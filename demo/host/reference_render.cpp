@@ -41,11 +41,16 @@ std::vector<float> floatsAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t
 
 }  // namespace
 
-bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel) {
+bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel,
+                               uint32_t stride) {
     Impl& r = *impl_;
     const VkDevice device = r.host.device;
     if (r.broken) {
         error = "the renderer is unusable after a failed submission";
+        return false;
+    }
+    if (stride == 0) {
+        error = "renderReference: stride must be at least 1";
         return false;
     }
     if (!setScene(scene, error)) return false;  // also waits for the device to be idle
@@ -139,14 +144,45 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const auto* half = static_cast<const uint16_t*>(r.readback.mapped);
     for (size_t i = 0; i < color.size(); ++i)
         color[i] = glm::unpackHalf1x16(half[i]);
+    std::vector<float> depth = floatsAt(buffer, depthOffset, pixels);
+    glm::mat4 projection = in.camera.projection;
     out.width = r.extent.width;
     out.height = r.extent.height;
+    if (stride > 1) {
+        const uint32_t w = (r.extent.width + stride - 1) / stride,
+                       h = (r.extent.height + stride - 1) / stride;
+        std::vector<float> subColor(size_t(w) * h * 4), subDepth(size_t(w) * h);
+        for (uint32_t j = 0; j < h; ++j) {
+            for (uint32_t i = 0; i < w; ++i) {
+                const size_t src = size_t(j) * stride * r.extent.width + size_t(i) * stride;
+                const size_t dst = size_t(j) * w + i;
+                std::memcpy(&subColor[dst * 4], &color[src * 4], 4 * sizeof(float));
+                subDepth[dst] = depth[src];
+            }
+        }
+        // The reference puts pixel i of a w-wide image at ndc (i + 0.5) / w · 2 - 1; the frame's pixel
+        // i·stride is at s·that + o with s = stride·w / W, o = s - 1 + (1 - stride) / W (and so for y).
+        // The same rays, then, with clip x, y mapped by the inverse of that before the projection's
+        // inverse: projection' = A⁻¹ · projection.
+        const double sx = double(stride) * w / r.extent.width, sy = double(stride) * h / r.extent.height;
+        const double ox = sx - 1.0 + (1.0 - stride) / double(r.extent.width);
+        const double oy = sy - 1.0 + (1.0 - stride) / double(r.extent.height);
+        glm::dmat4 inverseA(1.0);
+        inverseA[0][0] = 1.0 / sx;
+        inverseA[1][1] = 1.0 / sy;
+        inverseA[3][0] = -ox / sx;
+        inverseA[3][1] = -oy / sy;
+        projection = glm::mat4(inverseA * glm::dmat4(projection));
+        color = std::move(subColor);
+        depth = std::move(subDepth);
+        out.width = w;
+        out.height = h;
+    }
     if (!fog) {
         out.rgba = std::move(color);
         return true;
     }
 
-    const std::vector<float> depth = floatsAt(buffer, depthOffset, pixels);
     const std::vector<float> shadowDepth = floatsAt(buffer, shadowOffset, shadowTexels);
     std::vector<float> noiseTexels01(noiseTexels);
     const auto* bytes = static_cast<const uint8_t*>(buffer.mapped) + noiseOffset;
@@ -154,13 +190,14 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         noiseTexels01[i] = float(bytes[i]) / 255.0f;
 
     postfx::reference::FogInputs fi;
-    fi.width = r.extent.width;
-    fi.height = r.extent.height;
+    fi.width = out.width;
+    fi.height = out.height;
     fi.color = color;
     fi.depth = depth;
     fi.depthConvention.reversedZ = r.options.reversedZ;
     fi.depthConvention.infiniteFar = r.options.infiniteFar;
     fi.camera = in.camera;
+    fi.camera.projection = projection;
     fi.sun = in.sun;
     fi.ambient = in.ambient;
     fi.timeSeconds = in.timeSeconds;

@@ -13,14 +13,13 @@
 
 #include <glm/glm.hpp>
 
+#include <postfx/context.h>
+
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
-
-namespace postfx {
-class Context;
-}
 
 namespace demo {
 
@@ -31,6 +30,9 @@ struct RenderOptions {
     // accumulate). The frame index sets postfx's time (index / 60 s) and the fog's jitter pattern, so
     // render() and renderReference() show the same frame (index frames - 1).
     uint32_t frames = 1;
+    // When set, every frame is at this time [s] for postfx (the noise's wind offset), so that frames
+    // differ only in their index (the fog's jitter pattern); otherwise frame k is at k · kFrameSeconds.
+    std::optional<double> fixedTimeSeconds;
     bool reversedZ = true;     // depth convention of the G-buffer (and of the postfx context)
     bool infiniteFar = false;  // projection without a far plane
     uint32_t shadowMapSize = 2048;
@@ -84,7 +86,11 @@ public:
     // keeps the un-fogged scene. Read back: HDR color, depth, shadow map (when drawn), noise (when
     // on); the camera, sun, ambient, shadow and time inputs are those of the GPU frame. Without fog
     // the result is the un-fogged scene. `out` has render()'s layout. Calls setScene(scene) first.
-    bool renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel = 4096);
+    // `stride` > 1 evaluates the reference only at the pixels (x, y) with x and y multiples of
+    // `stride` (CPU time / stride²): `out` is then ceil(W / stride) x ceil(H / stride), its pixel
+    // (i, j) being the frame's pixel (i · stride, j · stride).
+    bool renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel = 4096,
+                         uint32_t stride = 1);
 
     // Builds and uploads the scene's meshes (planes are centred under the camera as it is now).
     // Waits for the device to be idle first, so it may be called between frames of a window loop.
@@ -100,6 +106,16 @@ public:
     // those stages and discards it. postfx reads depthImage() and shadowMap() in COMPUTE_SHADER; the
     // next frame's raster passes wait for COMPUTE_SHADER before overwriting them.
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex, std::string& error);
+    // The same with postfx writing to `fogOutput` (postfx::FrameInfo::output: same extent, RGBA16F or
+    // RGBA32F, usage STORAGE, in its `layout`) instead of compositing into hdrImage(), which then keeps
+    // the un-fogged scene (only read by postfx).
+    bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
+                     const postfx::ImageInput& fogOutput, std::string& error);
+    // What recordFrame(cmd, scene, frameIndex) gives postfx: images (HDR color in GENERAL, depth and
+    // shadow map in the layouts they rest in), time, camera, sun, ambient, shadow map, scene.fog. For a
+    // host pass that wants exactly postfx's inputs after recordFrame (the benchmark's baselines).
+    // Records nothing.
+    postfx::FrameInfo frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const;
 
     const ImageInfo& hdrImage() const;    // RGBA16F radiance; usage STORAGE | SAMPLED | TRANSFER_SRC
     const ImageInfo& depthImage() const;  // D32_SFLOAT, DEPTH_STENCIL_READ_ONLY_OPTIMAL

@@ -53,7 +53,8 @@ glm::mat4 Renderer::Impl::projection(const Scene& scene) const {
 PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit,
                                           bool shadows) const {
     PostfxInputs in;
-    in.timeSeconds = double(frameIndex) * kFrameSeconds;
+    in.timeSeconds =
+        options.fixedTimeSeconds ? *options.fixedTimeSeconds : double(frameIndex) * kFrameSeconds;
     in.camera.position = glm::dvec3(scene.camera.position);
     in.camera.view = cameraView(scene.camera);  // postfx uses its rotation; position is given above
     in.camera.projection = projection(scene);
@@ -78,8 +79,39 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     return in;
 }
 
+postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
+                                            const ShadowFit& fit, bool shadows,
+                                            const postfx::ImageInput& fogOutput) const {
+    const PostfxInputs in = postfxInputs(scene, frameIndex, fit, shadows);
+    postfx::FrameInfo frame;
+    frame.commandBuffer = cmd;
+    frame.frameIndex = frameIndex;
+    frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL};
+    frame.depth = {gbuffer.depth.image, gbuffer.depth.view, gbuffer.depth.format, extent,
+                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    frame.output = fogOutput;
+    frame.timeSeconds = in.timeSeconds;
+    frame.camera = in.camera;
+    frame.sun = in.sun;
+    frame.ambient = in.ambient;
+    frame.shadowMap = in.shadowMap;
+    frame.fog = in.fog;
+    return frame;
+}
+
 bool Renderer::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex, std::string& error) {
     return impl_->recordFrame(cmd, scene, frameIndex, postfx::ImageInput{}, error);
+}
+
+bool Renderer::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
+                           const postfx::ImageInput& fogOutput, std::string& error) {
+    return impl_->recordFrame(cmd, scene, frameIndex, fogOutput, error);
+}
+
+postfx::FrameInfo Renderer::frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const {
+    const ShadowFit fit = impl_->shadowFit(scene);
+    return impl_->frameInfo(cmd, scene, frameIndex, fit, impl_->drawsShadows(scene, fit),
+                            postfx::ImageInput{});
 }
 
 bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
@@ -114,20 +146,7 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
 
     // postfx reads depth and shadow map and composites into the HDR image (compute only), and
     // returns every image in the layout it was given.
-    const PostfxInputs in = postfxInputs(scene, frameIndex, fit, shadows);
-    postfx::FrameInfo frame;
-    frame.commandBuffer = cmd;
-    frame.frameIndex = frameIndex;
-    frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL};
-    frame.depth = {gbuffer.depth.image, gbuffer.depth.view, gbuffer.depth.format, extent,
-                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
-    frame.output = fogOutput;
-    frame.timeSeconds = in.timeSeconds;
-    frame.camera = in.camera;
-    frame.sun = in.sun;
-    frame.ambient = in.ambient;
-    frame.shadowMap = in.shadowMap;
-    frame.fog = in.fog;
+    const postfx::FrameInfo frame = frameInfo(cmd, scene, frameIndex, fit, shadows, fogOutput);
     if (postfx::Status s = postfx->record(frame); !s.ok()) {
         error = "postfx record: " + s.message;
         return false;

@@ -76,6 +76,10 @@ struct Renderer::Impl {
     // postfx's per-frame inputs for frame `frameIndex` of `scene`.
     PostfxInputs postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit,
                               bool shadows) const;
+    // postfx's FrameInfo for frame `frameIndex` of `scene` (Renderer::frameInputs), recorded into `cmd`.
+    postfx::FrameInfo frameInfo(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
+                                const ShadowFit& fit, bool shadows,
+                                const postfx::ImageInput& fogOutput) const;
     // Renderer::recordFrame, with postfx writing to `fogOutput` (FrameInfo::output) when present.
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                      const postfx::ImageInput& fogOutput, std::string& error);

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 
 namespace demo::window {
@@ -194,13 +195,16 @@ bool UiOverlay::wantsKeyboard() const {
     return context_ && ImGui::GetIO().WantCaptureKeyboard;
 }
 
-void UiOverlay::build(const OverlayStats& s) {
+void UiOverlay::build(const OverlayStats& s, const std::function<void()>& sections) {
     ImGui_ImplVulkan_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
 
     ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_Always);
     ImGui::SetNextWindowBgAlpha(0.75f);
+    // Never taller than the window (10 px margins): the panel scrolls instead (mouse wheel over it).
+    const float maxHeight = std::max(ImGui::GetIO().DisplaySize.y - 20.0f, 100.0f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(FLT_MAX, maxHeight));
     const ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoMove;
     if (ImGui::Begin("postfx demo", nullptr, flags)) {
@@ -210,6 +214,7 @@ void UiOverlay::build(const OverlayStats& s) {
         ImGui::Text("camera  %.2f, %.2f, %.2f m", s.cameraPosition.x, s.cameraPosition.y, s.cameraPosition.z);
         ImGui::Text("        yaw %.1f, pitch %.1f deg", s.yawDeg, s.pitchDeg);
         ImGui::Separator();
+        size_t lines = 1;
         if (!s.timingsValid) {
             ImGui::TextDisabled("postfx passes: (waiting for a frame)");
         } else if (s.passTimings.empty()) {
@@ -222,10 +227,19 @@ void UiOverlay::build(const OverlayStats& s) {
                 total += t.milliseconds;
             }
             ImGui::Text("  %-24s %7.3f ms", "total", total);
+            lines += s.passTimings.size() + 1;
         }
+        // Keep the block as tall as it has been, so that the widgets below do not move under the mouse
+        // when passes come and go (e.g. the fog switched off from the panel).
+        timingLines_ = std::max(timingLines_, lines);
+        if (lines < timingLines_)
+            ImGui::Dummy(ImVec2(0.0f, float(timingLines_ - lines) * ImGui::GetTextLineHeightWithSpacing()));
         ImGui::Separator();
-        ImGui::TextDisabled("WASD move, Q/E down/up, Shift faster");
-        ImGui::TextDisabled("right mouse button + drag: look, Esc: quit");
+        ImGui::TextDisabled("WASD, Q/E: move (Shift: fast)  right drag: look  Esc: quit");
+        if (sections) {
+            ImGui::Separator();
+            sections();
+        }
     }
     ImGui::End();
     ImGui::Render();

@@ -1,6 +1,7 @@
 // The windowed demo's Dear ImGui overlay (ImGui 1.86, GLFW + Vulkan backends): a small panel with the
-// device, frame time, camera and postfx pass timings, drawn over the swapchain image in a render pass
-// that loads the blitted frame (loadOp LOAD) and leaves the image ready to present.
+// device, frame time, camera and postfx pass timings, and the caller's sections (the fog controls),
+// drawn over the swapchain image in a render pass that loads the blitted frame (loadOp LOAD) and leaves
+// the image ready to present.
 #pragma once
 
 #include "host/vulkan_host.h"
@@ -9,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -48,8 +50,10 @@ public:
     bool wantsMouse() const;
     bool wantsKeyboard() const;
 
-    // Builds this frame's UI (call once per frame before record).
-    void build(const OverlayStats& stats);
+    // Builds this frame's UI (call once per frame before record). `sections`, when given, adds more
+    // widgets to the panel below the statistics (e.g. FogControls::build). The panel is at most as tall
+    // as the window and scrolls when its content is taller.
+    void build(const OverlayStats& stats, const std::function<void()>& sections = {});
     // Records the render pass over swapchain image `imageIndex`, which must be in TRANSFER_DST_OPTIMAL
     // after TRANSFER writes; leaves it in PRESENT_SRC_KHR.
     void record(VkCommandBuffer cmd, uint32_t imageIndex, VkExtent2D extent);
@@ -68,6 +72,7 @@ private:
     VkRenderPass renderPass_ = VK_NULL_HANDLE;
     std::vector<VkFramebuffer> framebuffers_;
     bool context_ = false, glfwBackend_ = false, vulkanBackend_ = false;
+    size_t timingLines_ = 0;  // the most lines the pass timings have taken (the block never shrinks)
 };
 
 }  // namespace demo::window

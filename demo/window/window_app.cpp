@@ -4,6 +4,7 @@
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
 #include "window/fly_camera.h"
+#include "window/fog_controls.h"
 #include "window/swapchain.h"
 #include "window/tonemap_pass.h"
 #include "window/ui_overlay.h"
@@ -50,7 +51,8 @@ bool sameExtent(VkExtent2D a, VkExtent2D b) {
 
 class App {
 public:
-    explicit App(const AppOptions& options, const Scene& scene) : options_(options), scene_(scene) {}
+    explicit App(const AppOptions& options, const Scene& scene)
+        : options_(options), scene_(scene), fogControls_(scene) {}
     ~App() { destroy(); }
 
     bool init(std::string& error);
@@ -82,6 +84,7 @@ private:
     VkExtent2D renderExtent_{0, 0};
     TonemapPass tonemap_;
     std::unique_ptr<UiOverlay> ui_;
+    FogControls fogControls_;  // edits scene_.fog and scene_.sun from the overlay's panel
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers_{};
     std::array<VkFence, kFramesInFlight> fences_{};              // signalled when the slot's frame completed
     std::array<VkSemaphore, kFramesInFlight> imageAvailable_{};  // acquire -> the slot's submission
@@ -280,7 +283,9 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         stats_.yawDeg = camera_.yawDeg();
         stats_.pitchDeg = camera_.pitchDeg();
         stats_.renderExtent = renderExtent_;
-        ui_->build(stats_);
+        // The fog controls edit scene_ before this frame records it (Renderer::recordFrame takes fog, sun
+        // and camera from scene_ every frame); their values are always valid for postfx.
+        ui_->build(stats_, [this] { fogControls_.build(scene_); });
     }
 
     VkCommandBuffer cmd = commandBuffers_[slot];
@@ -327,7 +332,8 @@ bool App::run(std::string& error) {
     double smoothedMs = 0.0;
     while (!glfwWindowShouldClose(window_)) {
         glfwPollEvents();
-        if (glfwGetKey(window_, GLFW_KEY_ESCAPE) == GLFW_PRESS) break;
+        // Esc quits, except while an ImGui widget has the keyboard (Esc cancels a typed value there).
+        if (glfwGetKey(window_, GLFW_KEY_ESCAPE) == GLFW_PRESS && !(ui_ && ui_->wantsKeyboard())) break;
         if (glfwGetWindowAttrib(window_, GLFW_ICONIFIED)) {  // nothing to show (X11 keeps the size)
             glfwWaitEventsTimeout(0.1);
             last = glfwGetTime();

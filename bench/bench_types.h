@@ -1,0 +1,74 @@
+// What postfx-bench measures: one setting of one method on one scene, and its result.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bench {
+
+enum class Method { Ours, SeedAsWritten, SeedFixedRiemann };
+const char* methodName(Method method);  // "postfx-fog", "seed-as-written", "seed-fixed-riemann"
+
+// One point of the sweep.
+struct Setting {
+    std::string scene;  // scene file name without .json
+    Method method = Method::Ours;
+    uint32_t steps = 0;         // Ours: fog.steps (march steps per pixel)
+    float stepLength = 0.0f;    // baselines: fixed step length [m]
+    bool jitter = false;        // fog.jitter: IGN start offset per pixel and frame (the baselines too)
+    uint32_t noiseSize = 0;     // fog.noise.textureSize; 0: noise off
+    uint32_t shadowKernel = 0;  // fog.shadowKernel when the frame has a shadow map, else 0
+
+    std::string label() const;  // "steps=64 jitter=on noise=128", "step=0.5m jitter=on noise=128"
+};
+
+// Error of linear radiance against the CPU reference (tests/common/image_compare).
+struct ErrorStats {
+    double relativeRmse = NAN;  // sqrt(Σ(a-b)²) / sqrt(Σ b²) over RGB
+    double maxAbsError = NAN;   // largest |a-b| of any RGB channel [radiance]
+    double fractionOff = NAN;   // fraction of pixels with a channel off by > 1% of the pixel's magnitude
+    uint64_t nonFinite = 0;     // NaN/Inf channels in the GPU image
+};
+
+// GPU time of the method's passes per frame, over the measured frames [ms].
+struct Timing {
+    double median = NAN, p10 = NAN, p90 = NAN, min = NAN, max = NAN;
+    uint32_t frames = 0;  // frames measured
+    // Median of each pass over the frames that recorded it, in recording order ("fog.raymarch").
+    std::vector<std::pair<std::string, double>> passMedians;
+};
+
+constexpr std::array<uint32_t, 3> kAveragedFrames = {1, 8, 16};
+
+struct Result {
+    Setting setting;
+    Timing timing;
+    std::array<ErrorStats, 3> error;  // one frame, mean of 8 frames, mean of 16 frames (kAveragedFrames)
+    double fetchesPerPixel = NAN;     // Ours: texture fetches per pixel (docs/accuracy-cost/README.md)
+    double floorMs = NAN;             // fetches · pixels / texture rate; NaN without --texture-rate
+    bool pareto1 = false;             // Ours: on the scene's Pareto front of (time, one-frame error)
+    bool pareto16 = false;            // Ours: on the front of (time, 16-frame error)
+};
+
+// What the report's header says about the run.
+struct RunInfo {
+    std::string device;  // VulkanHost::deviceDescription()
+    std::string vulkanApi;
+    std::string date;  // UTC, ISO 8601
+    std::string commandLine;
+    uint32_t width = 0, height = 0;
+    uint32_t errorStride = 1;
+    uint32_t referenceSteps = 0;
+    uint32_t warmup = 0, frames = 0;
+    double warmupMs = 0;
+    double textureRate = NAN;  // [GTexel/s]; NaN: not given
+    bool baselines = false;    // the baselines were run
+    // CPU time of each reference: scene, noise size, seconds.
+    std::vector<std::pair<std::string, double>> referenceSeconds;
+};
+
+}  // namespace bench

@@ -1,0 +1,431 @@
+// postfx-bench: the accuracy–cost benchmark of postfx's fog (docs/accuracy-cost/README.md). For each
+// scene it sweeps the fog's quality knobs (steps, jitter, noise texture size), times every postfx pass
+// with timestamp queries and measures the error of 1, 8 and 16 jittered frames against the CPU
+// reference; the two baselines (bench/baseline.h) run on the same frames. Writes results.csv,
+// results.md and plot.svg.
+#include "progress.h"
+#include "report.h"
+#include "runner.h"
+#include "stats.h"
+
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+const char* kUsage =
+    "usage: postfx-bench [--scenes a,b,...] [--scene-dir DIR] [--size WxH] [--warmup W] [--warmup-ms T]\n"
+    "                    [--frames N] [--reference-steps N] [--error-stride K] [--texture-rate GTEXELS]\n"
+    "                    [--out DIR] [--steps a,b,...] [--noise-sizes a,b,...] [--step-lengths a,b,...]\n"
+    "                    [--no-baselines] [--quick] [--validation]\n"
+    "Sweeps postfx's fog quality knobs on the named scenes, times each postfx pass on the GPU and measures\n"
+    "the error against the CPU reference; the seed's shader (as written, and fixed but still a Riemann sum)\n"
+    "runs on the same frames. Writes results.csv, results.md and plot.svg to --out.\n"
+    "options (defaults in brackets; --quick changes the defaults to a tiny sweep for CI):\n"
+    "  --scenes LIST          scene files in --scene-dir, without .json "
+    "[fog_default,fog_height,fog_shadowed]\n"
+    "  --scene-dir DIR        [demo/scenes if it exists here, else the source tree's demo/scenes]\n"
+    "  --size WxH             frame size [1920x1080; quick: 64x36]\n"
+    "  --warmup W             frames recorded before timing, per setting, at least [5; quick: 1]\n"
+    "  --warmup-ms T          ... and for at least T ms of wall time (GPU clocks ramp up) [200; quick: 0]\n"
+    "  --frames N             timed frames per setting: median, p10-p90, min-max [30; quick: 2]\n"
+    "  --reference-steps N    midpoint steps per pixel of the CPU reference [4096; quick: 1024]\n"
+    "  --error-stride K       error on every K-th pixel in x and y (the reference costs 1/K^2)\n"
+    "                         [max(1, width / 480): 4 at 1920x1080]\n"
+    "  --texture-rate G       the device's texture rate [GTexel/s] for the texture-fetch floor [none]\n"
+    "  --out DIR              output folder [docs/accuracy-cost]\n"
+    "  --steps LIST           postfx fog steps [4,8,16,32,64,128,256; quick: 4,16,64]\n"
+    "  --noise-sizes LIST     noise texture edges for scenes with noise [32,64,128; quick: 32]\n"
+    "  --step-lengths LIST    baseline step lengths [m] [4,2,1,0.5,0.25,0.125; quick: 4,1]\n"
+    "  --no-baselines         postfx's fog only\n"
+    "  --validation           Vulkan validation layer with synchronization validation; any message fails\n"
+    "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
+
+struct UsageError {
+    std::string message;
+};
+
+struct Args {
+    std::vector<std::string> scenes = {"fog_default", "fog_height", "fog_shadowed"};
+    std::string sceneDir;
+    bench::RunnerOptions runner;
+    uint32_t referenceSteps = 4096;
+    uint32_t errorStride = 0;  // 0: automatic
+    double textureRate = NAN;
+    std::string out = "docs/accuracy-cost";
+    std::vector<uint32_t> steps = {4, 8, 16, 32, 64, 128, 256};
+    std::vector<uint32_t> noiseSizes = {32, 64, 128};
+    std::vector<float> stepLengths = {4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.125f};
+    bool baselines = true;
+};
+
+bool parseUint(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
+    if (text.empty() || text.front() < '0' || text.front() > '9') return false;
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+    return ec == std::errc() && end == text.data() + text.size() && out >= lo && out <= hi;
+}
+
+bool parseDouble(const std::string& text, double& out) {
+    try {
+        size_t used = 0;
+        out = std::stod(text, &used);
+        return used == text.size() && std::isfinite(out);
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = text.find(',', start);
+        const std::string item =
+            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (!item.empty()) items.push_back(item);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return items;
+}
+
+Args parseArgs(int argc, char** argv) {
+    Args args;
+    bool quick = false;
+    bool sizeGiven = false, warmupGiven = false, warmupMsGiven = false, framesGiven = false, refGiven = false,
+         stepsGiven = false, noiseGiven = false, lengthsGiven = false;
+    auto value = [&](int& i) -> std::string {
+        if (i + 1 >= argc) throw UsageError{std::string(argv[i]) + " needs a value"};
+        return argv[++i];
+    };
+    auto uintList = [](const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
+        std::vector<uint32_t> out;
+        for (const std::string& item : splitList(text)) {
+            uint32_t v = 0;
+            if (!parseUint(item, lo, hi, v))
+                throw UsageError{option + " '" + text + "': expected integers in " + std::to_string(lo) +
+                                 ".." + std::to_string(hi) + ", comma-separated"};
+            out.push_back(v);
+        }
+        if (out.empty()) throw UsageError{option + " is empty"};
+        return out;
+    };
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "-h" || a == "--help") {
+            std::fputs(kUsage, stdout);
+            std::exit(0);
+        } else if (a == "--scenes") {
+            args.scenes = splitList(value(i));
+            if (args.scenes.empty()) throw UsageError{"--scenes is empty"};
+        } else if (a == "--scene-dir") {
+            args.sceneDir = value(i);
+        } else if (a == "--size") {
+            const std::string s = value(i);
+            const size_t x = s.find('x');
+            if (x == std::string::npos ||
+                !parseUint(std::string_view(s).substr(0, x), 1, 16384, args.runner.width) ||
+                !parseUint(std::string_view(s).substr(x + 1), 1, 16384, args.runner.height))
+                throw UsageError{"--size '" + s + "': expected WIDTHxHEIGHT, each 1..16384"};
+            sizeGiven = true;
+        } else if (a == "--warmup") {
+            const std::string s = value(i);
+            if (!parseUint(s, 0, 100000, args.runner.warmup))
+                throw UsageError{"--warmup '" + s + "': expected an integer in 0..100000"};
+            warmupGiven = true;
+        } else if (a == "--warmup-ms") {
+            const std::string s = value(i);
+            if (!parseDouble(s, args.runner.warmupMs) || args.runner.warmupMs < 0 ||
+                args.runner.warmupMs > 1e6)
+                throw UsageError{"--warmup-ms '" + s + "': expected a number of milliseconds in 0..1e6"};
+            warmupMsGiven = true;
+        } else if (a == "--frames") {
+            const std::string s = value(i);
+            if (!parseUint(s, 1, 100000, args.runner.frames))
+                throw UsageError{"--frames '" + s + "': expected an integer in 1..100000"};
+            framesGiven = true;
+        } else if (a == "--reference-steps") {
+            const std::string s = value(i);
+            if (!parseUint(s, 1, 1u << 20, args.referenceSteps))
+                throw UsageError{"--reference-steps '" + s + "': expected an integer in 1..1048576"};
+            refGiven = true;
+        } else if (a == "--error-stride") {
+            const std::string s = value(i);
+            if (!parseUint(s, 1, 4096, args.errorStride))
+                throw UsageError{"--error-stride '" + s + "': expected an integer in 1..4096"};
+        } else if (a == "--texture-rate") {
+            const std::string s = value(i);
+            if (!parseDouble(s, args.textureRate) || !(args.textureRate > 0))
+                throw UsageError{"--texture-rate '" + s + "': expected a number > 0 [GTexel/s]"};
+        } else if (a == "--out") {
+            args.out = value(i);
+        } else if (a == "--steps") {
+            args.steps = uintList(a, value(i), 1, 4096);
+            stepsGiven = true;
+        } else if (a == "--noise-sizes") {
+            args.noiseSizes = uintList(a, value(i), 16, 256);
+            for (uint32_t n : args.noiseSizes)
+                if (n & (n - 1))
+                    throw UsageError{"--noise-sizes: " + std::to_string(n) + " is not a power of two"};
+            noiseGiven = true;
+        } else if (a == "--step-lengths") {
+            const std::string text = value(i);
+            args.stepLengths.clear();
+            for (const std::string& item : splitList(text)) {
+                double v = 0;
+                if (!parseDouble(item, v) || !(v > 0))
+                    throw UsageError{"--step-lengths '" + text +
+                                     "': expected numbers > 0 [m], comma-separated"};
+                args.stepLengths.push_back(float(v));
+            }
+            if (args.stepLengths.empty()) throw UsageError{"--step-lengths is empty"};
+            lengthsGiven = true;
+        } else if (a == "--no-baselines") {
+            args.baselines = false;
+        } else if (a == "--quick") {
+            quick = true;
+        } else if (a == "--validation") {
+            args.runner.validation = true;
+        } else {
+            throw UsageError{"unknown argument '" + a + "' (see --help)"};
+        }
+    }
+    if (quick) {
+        if (!sizeGiven) args.runner.width = 64, args.runner.height = 36;
+        if (!warmupGiven) args.runner.warmup = 1;
+        if (!warmupMsGiven) args.runner.warmupMs = 0.0;
+        if (!framesGiven) args.runner.frames = 2;
+        if (!refGiven) args.referenceSteps = 1024;
+        if (!stepsGiven) args.steps = {4, 16, 64};
+        if (!noiseGiven) args.noiseSizes = {32};
+        if (!lengthsGiven) args.stepLengths = {4.0f, 1.0f};
+    }
+    if (args.errorStride == 0) args.errorStride = std::max(1u, args.runner.width / 480);
+    std::sort(args.steps.begin(), args.steps.end());
+    std::sort(args.noiseSizes.begin(), args.noiseSizes.end());
+    if (args.sceneDir.empty()) {
+        args.sceneDir =
+            std::filesystem::is_directory("demo/scenes") ? "demo/scenes" : POSTFX_SOURCE_DIR "/demo/scenes";
+    }
+    return args;
+}
+
+std::string commandLine(int argc, char** argv) {
+    std::string text;
+    for (int i = 0; i < argc; ++i) {
+        std::string a = i == 0 ? std::filesystem::path(argv[0]).filename().string() : argv[i];
+        if (a.find_first_of(" \t\"'") != std::string::npos) a = "'" + a + "'";
+        text += (i ? " " : "") + a;
+    }
+    return text;
+}
+
+std::string utcNow() {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return text;
+}
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "\npostfx-bench: %s\n", message.c_str());
+    return 1;
+}
+
+struct ScenePlan {
+    std::string name;
+    demo::Scene scene;
+    std::vector<uint32_t> noiseSizes;  // {0}: the scene has no noise
+    uint32_t baselineNoise = 0;        // the noise size the baselines run at
+};
+
+int run(const Args& args, const std::string& command) {
+    std::string error;
+    // Plan everything first: a bad scene name fails before the GPU work.
+    std::vector<ScenePlan> plans;
+    for (const std::string& name : args.scenes) {
+        ScenePlan p;
+        p.name = name;
+        const std::string path = args.sceneDir + "/" + name + ".json";
+        if (!demo::loadSceneFile(path, p.scene, error)) return fail(error);
+        if (!p.scene.fog.enabled) return fail(path + ": the scene has no fog (effects.fog)");
+        if (p.scene.fog.noise.enabled && !p.scene.fog.noise.hostTexture) {
+            p.noiseSizes = args.noiseSizes;
+            const uint32_t own = p.scene.fog.noise.textureSize;
+            p.baselineNoise =
+                std::count(p.noiseSizes.begin(), p.noiseSizes.end(), own) ? own : p.noiseSizes.back();
+        } else {
+            p.noiseSizes = {0};
+        }
+        plans.push_back(std::move(p));
+    }
+    const bool baselines = args.baselines && bench::Runner::hasBaselines();
+    if (args.baselines && !baselines)
+        std::fprintf(stderr,
+                     "postfx-bench: built without the baselines (bench/baseline.cmake): postfx only\n");
+
+    auto runner = bench::Runner::create(args.runner, error);
+    if (!runner) return fail(error);
+    const demo::VulkanHost& host = runner->host();
+
+    bench::RunInfo info;
+    info.device = host.deviceDescription();
+    const uint32_t api = host.properties.apiVersion;
+    info.vulkanApi = std::to_string(VK_API_VERSION_MAJOR(api)) + "." +
+                     std::to_string(VK_API_VERSION_MINOR(api)) + "." +
+                     std::to_string(VK_API_VERSION_PATCH(api));
+    info.date = utcNow();
+    info.commandLine = command;
+    info.width = args.runner.width;
+    info.height = args.runner.height;
+    info.errorStride = args.errorStride;
+    info.referenceSteps = args.referenceSteps;
+    info.warmup = args.runner.warmup;
+    info.warmupMs = args.runner.warmupMs;
+    info.frames = args.runner.frames;
+    info.textureRate = args.textureRate;
+    info.baselines = baselines;
+
+    size_t total = 0;
+    for (const ScenePlan& p : plans)
+        total +=
+            p.noiseSizes.size() * (1 + args.steps.size() * 2) + (baselines ? 2 * args.stepLengths.size() : 0);
+    std::fprintf(stderr, "postfx-bench on %s, %ux%u, %zu measurements\n", info.device.c_str(), info.width,
+                 info.height, total);
+
+    std::vector<bench::Result> results;
+    {
+        bench::Progress progress(total);
+        for (const ScenePlan& p : plans) {
+            if (!runner->setScene(p.scene, error)) return fail(p.name + ": " + error);
+            const bool shadows = runner->hasShadowMap(p.scene);
+            for (uint32_t noise : p.noiseSizes) {
+                demo::Scene scene = p.scene;
+                if (noise) scene.fog.noise.textureSize = noise;
+                const std::string noiseText = noise ? " noise=" + std::to_string(noise) : "";
+                progress.show(p.name + " CPU reference" + noiseText + " (" +
+                              std::to_string(args.referenceSteps) + " steps/pixel)");
+                demo::ImageF reference;
+                const auto start = std::chrono::steady_clock::now();
+                if (!runner->reference(scene, args.referenceSteps, args.errorStride, reference, error))
+                    return fail(p.name + " reference: " + error);
+                info.referenceSeconds.emplace_back(
+                    p.name + noiseText,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                progress.advance();
+
+                auto measure = [&](const demo::Scene& s, bench::Setting setting) -> bool {
+                    progress.show(p.name + " " + bench::methodName(setting.method) + " " + setting.label());
+                    bench::Result r;
+                    r.setting = setting;
+                    if (!runner->measure(s, setting.method, setting.stepLength, reference, args.errorStride,
+                                         r.timing, r.error, error)) {
+                        error = p.name + " " + bench::methodName(setting.method) + " " + setting.label() +
+                                ": " + error;
+                        return false;
+                    }
+                    if (setting.method == bench::Method::Ours) {
+                        // Texture fetches per pixel: per step one noise fetch (noise on) and kernel² shadow
+                        // texels (shadow map present); one depth fetch and one color load per pixel.
+                        const double perStep =
+                            (noise ? 1.0 : 0.0) + double(setting.shadowKernel) * double(setting.shadowKernel);
+                        r.fetchesPerPixel = double(setting.steps) * perStep + 2.0;
+                        r.floorMs = r.fetchesPerPixel * double(info.width) * double(info.height) /
+                                    (args.textureRate * 1e9) * 1e3;  // NaN without a rate
+                    }
+                    results.push_back(std::move(r));
+                    progress.advance();
+                    return true;
+                };
+                bench::Setting base;
+                base.scene = p.name;
+                base.noiseSize = noise;
+                base.shadowKernel = shadows ? scene.fog.shadowKernel : 0;
+                for (bool jitter : {true, false}) {
+                    for (uint32_t steps : args.steps) {
+                        demo::Scene s = scene;
+                        s.fog.steps = steps;
+                        s.fog.jitter = jitter;
+                        bench::Setting setting = base;
+                        setting.steps = steps;
+                        setting.jitter = jitter;
+                        if (!measure(s, setting)) return fail(error);
+                    }
+                }
+                if (baselines && noise == p.baselineNoise) {
+                    for (bench::Method method :
+                         {bench::Method::SeedAsWritten, bench::Method::SeedFixedRiemann}) {
+                        for (float length : args.stepLengths) {
+                            bench::Setting setting = base;
+                            setting.method = method;
+                            setting.stepLength = length;
+                            setting.jitter = scene.fog.jitter;  // the seed's start offset: IGN, as ours
+                            if (!measure(scene, setting)) return fail(error);
+                        }
+                    }
+                }
+            }
+        }
+        progress.show("writing the report");
+    }
+    bench::markParetoFronts(results);
+
+    const std::vector<std::string> messages = runner->validationMessages();
+    runner.reset();
+
+    std::error_code ec;
+    std::filesystem::create_directories(args.out, ec);
+    if (ec) return fail("cannot create '" + args.out + "': " + ec.message());
+    const std::string csv = args.out + "/results.csv", md = args.out + "/results.md",
+                      svg = args.out + "/plot.svg";
+    if (!bench::writeCsv(csv, info, results, error) || !bench::writeMarkdown(md, info, results, error) ||
+        !bench::writeSvg(svg, info, results, error))
+        return fail(error);
+
+    std::printf("postfx-bench: %s, %ux%u, error stride %u, reference %u steps\n", info.device.c_str(),
+                info.width, info.height, info.errorStride, info.referenceSteps);
+    std::printf("%-14s %-19s %-28s %10s %10s %10s %10s\n", "scene", "method", "setting", "GPU ms", "RMSE 1",
+                "RMSE 8", "RMSE 16");
+    for (const bench::Result& r : results) {
+        std::printf("%-14s %-19s %-28s %10s %9s%% %9s%% %9s%%%s\n", r.setting.scene.c_str(),
+                    bench::methodName(r.setting.method), r.setting.label().c_str(),
+                    bench::formatNumber(r.timing.median, 4).c_str(),
+                    bench::formatNumber(r.error[0].relativeRmse * 100, 3).c_str(),
+                    bench::formatNumber(r.error[1].relativeRmse * 100, 3).c_str(),
+                    bench::formatNumber(r.error[2].relativeRmse * 100, 3).c_str(),
+                    r.pareto1 ? "  pareto" : "");
+    }
+    std::printf("wrote %s, %s, %s\n", csv.c_str(), md.c_str(), svg.c_str());
+    if (!messages.empty()) {
+        for (const std::string& m : messages)
+            std::fprintf(stderr, "validation: %s\n", m.c_str());
+        return fail(std::to_string(messages.size()) + " validation message(s)");
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const Args args = parseArgs(argc, argv);
+        return run(args, commandLine(argc, argv));
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "postfx-bench: %s\n%s", e.message.c_str(), kUsage);
+        return 2;
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+}

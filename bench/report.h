@@ -1,0 +1,28 @@
+// The benchmark's report: results.csv (every number), results.md (tables, Pareto fronts) and plot.svg
+// (error against GPU time, log–log), each with the run's device, driver, date and command line.
+#pragma once
+
+#include "bench_types.h"
+
+#include <string>
+#include <vector>
+
+namespace bench {
+
+// The CSV's columns, in order (tests/bench parses them by name).
+const std::vector<std::string>& csvColumns();
+
+bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
+              std::string& error);
+bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
+                   std::string& error);
+bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
+              std::string& error);
+
+// Helpers shared by the writers.
+std::string formatNumber(double value, int digits = 4);  // "" for NaN
+std::string xmlEscape(const std::string& text);
+// The scenes in the order their first result appears.
+std::vector<std::string> sceneOrder(const std::vector<Result>& results);
+
+}  // namespace bench

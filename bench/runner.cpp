@@ -1,0 +1,397 @@
+#include "runner.h"
+
+#include "image_compare.h"
+#include "stats.h"
+
+#include "host/gpu_resources.h"
+
+#include <postfx/context.h>
+
+#if POSTFX_BENCH_BASELINES
+#include "baseline.h"
+#endif
+
+#include <glm/gtc/packing.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+
+namespace bench {
+namespace {
+
+constexpr uint32_t kFramesInFlight = demo::Renderer::kFramesInFlight;
+constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
+// Error frames start at a multiple of this (the fog's jitter pattern repeats every 64 frames), so every
+// setting averages the same jitter offsets.
+constexpr uint64_t kJitterPeriod = 64;
+// A pixel is "off" when a channel differs by more than this fraction of the pixel's magnitude
+// max(max_c |reference_c|, kMagnitudeFloor) [radiance; the scenes' values are in the thousands].
+constexpr double kPixelTolerance = 0.01;
+constexpr double kMagnitudeFloor = 1.0;
+
+demo::GpuImage colorImage(const demo::ImageInfo& info) {
+    demo::GpuImage image;  // a non-owning stand-in for the barrier helper
+    image.image = info.image;
+    image.format = info.format;
+    image.extent = info.extent;
+    image.aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+    return image;
+}
+
+}  // namespace
+
+struct Runner::Impl {
+    RunnerOptions options;
+    std::unique_ptr<demo::VulkanHost> host;
+    std::unique_ptr<demo::Renderer> renderer;
+#if POSTFX_BENCH_BASELINES
+    std::unique_ptr<BaselinePass> baseline;
+#endif
+    std::array<VkCommandBuffer, kFramesInFlight> commandBuffers{};
+    std::array<VkFence, kFramesInFlight> fences{};
+    VkQueryPool queries = VK_NULL_HANDLE;  // the baselines' timestamps: 2 per frame slot
+    double timestampPeriodNs = 1.0;
+    uint64_t timestampMask = 0;  // 0: the queue has no timestamps
+    demo::GpuBuffer readback;    // the HDR image, RGBA16F
+    demo::GpuImage fogScratch;  // baselines' frames: where postfx's (cheap) fog goes, keeping its noise alive
+    uint64_t nextFrame = kJitterPeriod;  // above renderReference()'s frame index 0
+    bool broken = false;
+
+    ~Impl();
+    bool create(std::string& error);
+    bool recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Method method, float stepLength,
+                     uint64_t frameIndex, size_t slot, bool withReadback, std::string& error);
+    bool submit(size_t slot, const std::function<bool(VkCommandBuffer)>& record, std::string& error);
+    bool wait(size_t slot, std::string& error);
+    void recordReadback(VkCommandBuffer cmd);
+};
+
+Runner::Impl::~Impl() {
+    if (!host) return;
+    const VkDevice device = host->device;
+    vkDeviceWaitIdle(device);
+#if POSTFX_BENCH_BASELINES
+    baseline.reset();
+#endif
+    renderer.reset();
+    for (VkFence f : fences)
+        if (f) vkDestroyFence(device, f, nullptr);
+    for (VkCommandBuffer c : commandBuffers)
+        if (c) vkFreeCommandBuffers(device, host->commandPool, 1, &c);
+    if (queries) vkDestroyQueryPool(device, queries, nullptr);
+    demo::destroyBuffer(device, readback);
+    demo::destroyImage(device, fogScratch);
+}
+
+bool Runner::Impl::create(std::string& error) {
+    demo::HostOptions hostOptions;
+    hostOptions.validation = options.validation;
+    host = demo::VulkanHost::create(hostOptions, error);
+    if (!host) {
+        error = "Vulkan: " + error;
+        return false;
+    }
+    demo::RenderOptions render;
+    render.width = options.width;
+    render.height = options.height;
+    render.frames = 1;
+    render.fixedTimeSeconds = 0.0;  // frames differ only in their jitter
+    renderer = demo::Renderer::create(*host, render, error);
+    if (!renderer) return false;
+#if POSTFX_BENCH_BASELINES
+    baseline = BaselinePass::create(*host, kFramesInFlight, error);
+    if (!baseline) return false;
+#endif
+    const VkDevice device = host->device;
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = host->commandPool;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = kFramesInFlight;
+    if (!demo::vkCheck(vkAllocateCommandBuffers(device, &ai, commandBuffers.data()),
+                       "vkAllocateCommandBuffers", error))
+        return false;
+    VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fci.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+    for (VkFence& f : fences)
+        if (!demo::vkCheck(vkCreateFence(device, &fci, nullptr, &f), "vkCreateFence", error)) return false;
+
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(host->physicalDevice, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(host->physicalDevice, &familyCount, families.data());
+    const uint32_t validBits = families[host->queueFamily].timestampValidBits;
+    timestampMask = validBits >= 64 ? ~0ull : validBits == 0 ? 0 : (1ull << validBits) - 1;
+    timestampPeriodNs = host->properties.limits.timestampPeriod;
+    VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    qci.queryCount = 2 * kFramesInFlight;
+    if (!demo::vkCheck(vkCreateQueryPool(device, &qci, nullptr, &queries), "vkCreateQueryPool", error))
+        return false;
+
+    const VkExtent2D extent{options.width, options.height};
+    return demo::createBuffer(*host, VkDeviceSize(extent.width) * extent.height * 8,
+                              VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, readback, error) &&
+           demo::createImage(*host, renderer->hdrImage().format, extent, VK_IMAGE_USAGE_STORAGE_BIT,
+                             fogScratch, error);
+}
+
+std::unique_ptr<Runner> Runner::create(const RunnerOptions& options, std::string& error) {
+    auto impl = std::make_unique<Impl>();
+    impl->options = options;
+    if (!impl->create(error)) return nullptr;
+    return std::unique_ptr<Runner>(new Runner(std::move(impl)));
+}
+
+Runner::Runner(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Runner::~Runner() = default;
+
+const demo::VulkanHost& Runner::host() const {
+    return *impl_->host;
+}
+
+bool Runner::hasBaselines() {
+    return POSTFX_BENCH_BASELINES != 0;
+}
+
+std::vector<std::string> Runner::validationMessages() const {
+    return impl_->host->validationMessages();
+}
+
+bool Runner::setScene(const demo::Scene& scene, std::string& error) {
+    return impl_->renderer->setScene(scene, error);
+}
+
+bool Runner::hasShadowMap(const demo::Scene& scene) const {
+    return impl_->renderer->frameInputs(VK_NULL_HANDLE, scene, 0).shadowMap.image.present();
+}
+
+bool Runner::reference(const demo::Scene& scene, uint32_t steps, uint32_t stride, demo::ImageF& out,
+                       std::string& error) {
+    // renderReference waits for the device to be idle first (setScene), so none of our frames is in flight.
+    return impl_->renderer->renderReference(scene, out, error, steps, stride);
+}
+
+// HDR image (GENERAL, compute writes) -> readback buffer -> host; left in TRANSFER_SRC_OPTIMAL (the next
+// frame discards it).
+void Runner::Impl::recordReadback(VkCommandBuffer cmd) {
+    const demo::ImageInfo& info = renderer->hdrImage();
+    const demo::GpuImage hdr = colorImage(info);
+    demo::imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kCompute,
+                       VK_ACCESS_SHADER_WRITE_BIT, kTransfer, VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {info.extent.width, info.extent.height, 1};
+    vkCmdCopyImageToBuffer(cmd, info.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1,
+                           &region);
+    demo::bufferBarrier(cmd, readback, kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
+                        VK_ACCESS_HOST_READ_BIT);
+}
+
+bool Runner::Impl::recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Method method, float stepLength,
+                               uint64_t frameIndex, size_t slot, bool withReadback, std::string& error) {
+    if (method == Method::Ours) {
+        if (!renderer->recordFrame(cmd, scene, frameIndex, error)) return false;
+    } else {
+#if POSTFX_BENCH_BASELINES
+        // postfx's fog runs too, cheaply (one step) and into a scratch image: it keeps the noise texture
+        // (Context::fogNoiseView) alive, which disabling the fog would retire, and leaves the HDR image
+        // un-fogged. Only the baseline's dispatch is timed.
+        demo::Scene cheap = scene;
+        cheap.fog.steps = 1;
+        cheap.fog.jitter = false;
+        cheap.fog.shadowKernel = 1;
+        demo::imageBarrier(cmd, fogScratch, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kCompute, 0,
+                           kCompute, VK_ACCESS_SHADER_WRITE_BIT);
+        const postfx::ImageInput scratch{fogScratch.image, fogScratch.view, fogScratch.format,
+                                         fogScratch.extent, VK_IMAGE_LAYOUT_GENERAL};
+        if (!renderer->recordFrame(cmd, cheap, frameIndex, scratch, error)) return false;
+        // The lighting's writes (and postfx's reads) before the baseline reads and writes in place.
+        demo::imageBarrier(cmd, colorImage(renderer->hdrImage()), VK_IMAGE_LAYOUT_GENERAL,
+                           VK_IMAGE_LAYOUT_GENERAL, kCompute, VK_ACCESS_SHADER_WRITE_BIT, kCompute,
+                           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        const uint32_t query = uint32_t(slot) * 2;
+        vkCmdResetQueryPool(cmd, queries, query, 2);
+        const postfx::FrameInfo frame = renderer->frameInputs(cmd, scene, frameIndex);
+        const VkImageView noise =
+            scene.fog.noise.enabled ? renderer->postfxContext().fogNoiseView() : VK_NULL_HANDLE;
+        if (scene.fog.noise.enabled && !noise) {
+            error = "postfx holds no fog noise texture for the baseline";
+            return false;
+        }
+        const Baseline which =
+            method == Method::SeedAsWritten ? Baseline::SeedAsWritten : Baseline::SeedFixedRiemann;
+        if (!baseline->record(cmd, frame, renderer->postfxContext().createInfo().depth, which, stepLength,
+                              noise, queries, query, error))
+            return false;
+#else
+        (void)stepLength;
+        (void)slot;
+        error = "postfx-bench was built without the baselines (bench/baseline.cmake)";
+        return false;
+#endif
+    }
+    if (withReadback) recordReadback(cmd);
+    return true;
+}
+
+bool Runner::Impl::wait(size_t slot, std::string& error) {
+    return demo::vkCheck(vkWaitForFences(host->device, 1, &fences[slot], VK_TRUE, UINT64_MAX),
+                         "vkWaitForFences", error);
+}
+
+// Records into the slot's command buffer and submits with its fence; the caller has waited for the slot.
+bool Runner::Impl::submit(size_t slot, const std::function<bool(VkCommandBuffer)>& record,
+                          std::string& error) {
+    if (broken) {
+        error = "a submission failed earlier";
+        return false;
+    }
+    VkCommandBuffer cmd = commandBuffers[slot];
+    vkResetCommandBuffer(cmd, 0);
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd, &bi);
+    const bool recorded = record(cmd);
+    if (!demo::vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
+    vkResetFences(host->device, 1, &fences[slot]);
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    if (!demo::vkCheck(vkQueueSubmit(host->queue, 1, &si, fences[slot]), "vkQueueSubmit", error)) {
+        broken = true;
+        return false;
+    }
+    return true;
+}
+
+bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, const demo::ImageF& reference,
+                     uint32_t stride, Timing& timing, std::array<ErrorStats, 3>& errors, std::string& error) {
+    Impl& m = *impl_;
+    const VkDevice device = m.host->device;
+    const postfx::Context& context = m.renderer->postfxContext();
+
+    // --- Timing: warm-up, then the timed frames, two in flight. A frame's timings are read after its
+    // fence, before its slot is recorded again.
+    std::vector<double> totals;
+    std::vector<std::pair<std::string, std::vector<double>>> passes;
+    auto addPass = [&](const std::string& name, double ms) {
+        auto it = std::find_if(passes.begin(), passes.end(), [&](const auto& p) { return p.first == name; });
+        if (it == passes.end()) it = passes.insert(passes.end(), {name, {}});
+        it->second.push_back(ms);
+    };
+    auto collect = [&](uint64_t frameIndex, size_t slot) -> bool {
+        if (method == Method::Ours) {
+            std::vector<postfx::PassTiming> timings;
+            const postfx::Status s = context.readPassTimings(frameIndex, timings);
+            if (s.code == postfx::Result::Unsupported) return true;  // no timestamps on this queue
+            if (!s.ok()) {
+                error = "readPassTimings(" + std::to_string(frameIndex) + "): " + s.message;
+                return false;
+            }
+            double total = 0.0;
+            for (const postfx::PassTiming& t : timings) {
+                addPass(t.name, t.milliseconds);
+                total += t.milliseconds;
+            }
+            totals.push_back(total);
+            return true;
+        }
+        if (m.timestampMask == 0) return true;
+        uint64_t stamps[2] = {0, 0};
+        if (!demo::vkCheck(
+                vkGetQueryPoolResults(device, m.queries, uint32_t(slot) * 2, 2, sizeof stamps, stamps,
+                                      sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                "vkGetQueryPoolResults", error))
+            return false;
+        const double ms = double((stamps[1] - stamps[0]) & m.timestampMask) * m.timestampPeriodNs * 1e-6;
+        addPass(methodName(method), ms);
+        totals.push_back(ms);
+        return true;
+    };
+    struct InFlight {
+        bool active = false;
+        bool timed = false;
+        uint64_t frame = 0;
+    };
+    std::array<InFlight, kFramesInFlight> inFlight{};
+    auto retire = [&](size_t slot) -> bool {
+        if (!m.wait(slot, error)) return false;
+        InFlight& f = inFlight[slot];
+        const bool ok = !f.active || !f.timed || collect(f.frame, slot);
+        f.active = false;
+        return ok;
+    };
+    const auto start = std::chrono::steady_clock::now();
+    uint32_t warmupFrames = 0, timedFrames = 0;
+    while (timedFrames < m.options.frames) {
+        bool timed =
+            warmupFrames >= m.options.warmup &&
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >=
+                m.options.warmupMs;
+        if (timedFrames > 0) timed = true;  // warm-up over
+        ++(timed ? timedFrames : warmupFrames);
+        const uint64_t frameIndex = m.nextFrame++;
+        const size_t slot = frameIndex % kFramesInFlight;
+        if (!retire(slot)) return false;
+        if (!m.submit(
+                slot,
+                [&](VkCommandBuffer cmd) {
+                    return m.recordFrame(cmd, scene, method, stepLength, frameIndex, slot, false, error);
+                },
+                error))
+            return false;
+        inFlight[slot] = {true, timed, frameIndex};
+    }
+    for (uint64_t f = m.nextFrame - kFramesInFlight; f < m.nextFrame; ++f)  // the last frames, oldest first
+        if (!retire(f % kFramesInFlight)) return false;
+    timing = summarize(totals, passes);
+
+    // --- Error: one frame at a time, read back; the reference's pixel (i, j) is the frame's
+    // (i·stride, j·stride).
+    const uint32_t width = m.options.width, height = m.options.height;
+    const uint32_t w = reference.width, h = reference.height;
+    if (stride == 0 || w != (width + stride - 1) / stride || h != (height + stride - 1) / stride) {
+        error = "the reference's size " + std::to_string(w) + "x" + std::to_string(h) +
+                " does not match stride " + std::to_string(stride);
+        return false;
+    }
+    m.nextFrame = (m.nextFrame + kJitterPeriod - 1) / kJitterPeriod * kJitterPeriod;
+    std::vector<double> sum(size_t(w) * h * 4, 0.0);
+    std::vector<float> image(sum.size());
+    const uint32_t frames = kAveragedFrames.back();
+    for (uint32_t k = 0; k < frames; ++k) {
+        const uint64_t frameIndex = m.nextFrame++;
+        const size_t slot = frameIndex % kFramesInFlight;
+        if (!m.wait(slot, error) ||
+            !m.submit(
+                slot,
+                [&](VkCommandBuffer cmd) {
+                    return m.recordFrame(cmd, scene, method, stepLength, frameIndex, slot, true, error);
+                },
+                error) ||
+            !m.wait(slot, error))
+            return false;
+        const auto* half = static_cast<const uint16_t*>(m.readback.mapped);
+        for (uint32_t j = 0; j < h; ++j) {
+            for (uint32_t i = 0; i < w; ++i) {
+                const size_t src = (size_t(j) * stride * width + size_t(i) * stride) * 4;
+                const size_t dst = (size_t(j) * w + i) * 4;
+                for (size_t c = 0; c < 4; ++c)
+                    sum[dst + c] += double(glm::unpackHalf1x16(half[src + c]));
+            }
+        }
+        for (size_t a = 0; a < kAveragedFrames.size(); ++a) {
+            if (k + 1 != kAveragedFrames[a]) continue;
+            for (size_t i = 0; i < sum.size(); ++i)
+                image[i] = float(sum[i] / double(k + 1));
+            const test::ImageStats s =
+                test::compareImages(image, reference.rgba, w, h, kPixelTolerance, kMagnitudeFloor);
+            errors[a] = {s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
+        }
+    }
+    return true;
+}
+
+}  // namespace bench

@@ -1,0 +1,66 @@
+// The benchmark's GPU side: the demo renderer driven frame by frame into the bench's own command buffers
+// (two frames in flight), postfx's pass timings (Context::readPassTimings) or the baselines' own
+// timestamp queries, and the error of 1, 8 and 16 jittered frames against the CPU reference.
+#pragma once
+
+#include "bench_types.h"
+
+#include "host/renderer.h"
+#include "host/vulkan_host.h"
+#include "scene/scene.h"
+
+#include <array>
+#include <memory>
+#include <string>
+
+namespace bench {
+
+struct RunnerOptions {
+    uint32_t width = 1920, height = 1080;
+    uint32_t warmup = 5;  // frames recorded before timing, at least
+    // ... and for at least this long [ms] (wall clock), so that the GPU's clocks have ramped up after the
+    // CPU reference or a lighter setting.
+    double warmupMs = 200.0;
+    uint32_t frames = 30;     // frames timed
+    bool validation = false;  // Khronos validation with synchronization validation
+};
+
+class Runner {
+public:
+    static std::unique_ptr<Runner> create(const RunnerOptions& options, std::string& error);
+    ~Runner();
+    Runner(const Runner&) = delete;
+    Runner& operator=(const Runner&) = delete;
+
+    const demo::VulkanHost& host() const;
+    // Whether the baselines (bench/baseline.h) were built in.
+    static bool hasBaselines();
+
+    // Uploads the scene's geometry (once per scene, before reference() and measure()).
+    bool setScene(const demo::Scene& scene, std::string& error);
+    // Whether the frames of `scene` give postfx a shadow map (sun.shadows and a caster).
+    bool hasShadowMap(const demo::Scene& scene) const;
+
+    // The CPU reference of `scene`'s frame (Renderer::renderReference: its fog as given, `steps` midpoint
+    // steps, no jitter) at every `stride`-th pixel in x and y. Time is frozen, so it fits every frame.
+    bool reference(const demo::Scene& scene, uint32_t steps, uint32_t stride, demo::ImageF& out,
+                   std::string& error);
+
+    // Times `method` on `scene` (warm-up, then the timed frames) and measures the error of one frame and
+    // of the mean of 8 and 16 frames (consecutive frame indices from a multiple of 64: only the jitter
+    // differs) against `reference` (from reference() with the same stride). Ours: postfx's fog with
+    // scene.fog as given. Baselines: `stepLength` [m] over the un-fogged frame with scene.fog's medium.
+    bool measure(const demo::Scene& scene, Method method, float stepLength, const demo::ImageF& reference,
+                 uint32_t stride, Timing& timing, std::array<ErrorStats, 3>& error, std::string& message);
+
+    // Validation messages so far (with RunnerOptions::validation).
+    std::vector<std::string> validationMessages() const;
+
+    struct Impl;
+
+private:
+    explicit Runner(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace bench

@@ -1,0 +1,98 @@
+#include "stats.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <set>
+
+namespace bench {
+
+const char* methodName(Method method) {
+    switch (method) {
+        case Method::Ours:
+            return "postfx-fog";
+        case Method::SeedAsWritten:
+            return "seed-as-written";
+        case Method::SeedFixedRiemann:
+            return "seed-fixed-riemann";
+    }
+    return "unknown";
+}
+
+std::string Setting::label() const {
+    char text[128];
+    std::string noise = noiseSize ? " noise=" + std::to_string(noiseSize) : std::string();
+    if (method == Method::Ours) {
+        std::snprintf(text, sizeof text, "steps=%u jitter=%s%s", steps, jitter ? "on" : "off", noise.c_str());
+    } else {
+        std::snprintf(text, sizeof text, "step=%gm jitter=%s%s", double(stepLength), jitter ? "on" : "off",
+                      noise.c_str());
+    }
+    return text;
+}
+
+double percentile(std::vector<double> values, double q) {
+    if (values.empty()) return NAN;
+    std::sort(values.begin(), values.end());
+    const double position = std::clamp(q, 0.0, 1.0) * double(values.size() - 1);
+    const size_t lo = size_t(std::floor(position));
+    const size_t hi = std::min(lo + 1, values.size() - 1);
+    return values[lo] + (values[hi] - values[lo]) * (position - double(lo));
+}
+
+Timing summarize(const std::vector<double>& frameTotals,
+                 const std::vector<std::pair<std::string, std::vector<double>>>& passes) {
+    Timing t;
+    t.frames = uint32_t(frameTotals.size());
+    t.median = percentile(frameTotals, 0.5);
+    t.p10 = percentile(frameTotals, 0.1);
+    t.p90 = percentile(frameTotals, 0.9);
+    t.min = percentile(frameTotals, 0.0);
+    t.max = percentile(frameTotals, 1.0);
+    for (const auto& [name, ms] : passes)
+        t.passMedians.emplace_back(name, percentile(ms, 0.5));
+    return t;
+}
+
+std::vector<size_t> paretoFront(std::span<const double> x, std::span<const double> y) {
+    std::vector<size_t> order;
+    for (size_t i = 0; i < x.size() && i < y.size(); ++i)
+        if (std::isfinite(x[i]) && std::isfinite(y[i])) order.push_back(i);
+    // By x, then y: a point is on the front when its y is below every y before it.
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return x[a] != x[b] ? x[a] < x[b] : y[a] < y[b]; });
+    std::vector<size_t> front;
+    double best = INFINITY;
+    for (size_t i : order) {
+        if (y[i] < best) {
+            front.push_back(i);
+            best = y[i];
+        }
+    }
+    return front;
+}
+
+void markParetoFronts(std::vector<Result>& results) {
+    std::set<std::string> scenes;
+    for (const Result& r : results)
+        scenes.insert(r.setting.scene);
+    for (const std::string& scene : scenes) {
+        std::vector<size_t> ours;
+        for (size_t i = 0; i < results.size(); ++i)
+            if (results[i].setting.scene == scene && results[i].setting.method == Method::Ours)
+                ours.push_back(i);
+        std::vector<double> time, error1, error16;
+        for (size_t i : ours) {
+            time.push_back(results[i].timing.median);
+            error1.push_back(results[i].error[0].relativeRmse);
+            error16.push_back(results[i].error[2].relativeRmse);
+        }
+        for (size_t k : paretoFront(time, error1))
+            results[ours[k]].pareto1 = true;
+        for (size_t k : paretoFront(time, error16))
+            results[ours[k]].pareto16 = true;
+    }
+}
+
+}  // namespace bench

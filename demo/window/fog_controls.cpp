@@ -1,0 +1,216 @@
+#include "window/fog_controls.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace demo::window {
+namespace {
+
+constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
+
+// The choices of the two combos (all values postfx accepts).
+constexpr std::array<uint32_t, 5> kTextureSizes{16, 32, 64, 128, 256};
+constexpr std::array<const char*, 5> kTextureSizeNames{"16", "32", "64", "128", "256"};
+constexpr std::array<uint32_t, 4> kShadowKernels{1, 3, 5, 7};
+constexpr std::array<const char*, 4> kShadowKernelNames{"1 x 1", "3 x 3", "5 x 5", "7 x 7"};
+
+// Limits postfx puts on the sun (SunInput): each illuminance channel in [0, 1e7] lux.
+constexpr float kMaxIlluminance = 1e7f;
+
+// v clamped to [lo, hi]; NaN becomes lo.
+float clampOrLow(float v, float lo, float hi) {
+    return v >= lo ? (v <= hi ? v : hi) : lo;
+}
+
+// Index of `value` in `choices`, or of the nearest one (by ratio: the choices are powers of two or odd).
+template <size_t N>
+int choiceIndex(const std::array<uint32_t, N>& choices, uint32_t value) {
+    int best = 0;
+    for (int i = 1; i < int(N); ++i) {
+        const double d = std::abs(std::log2(double(std::max(value, 1u)) / double(choices[i])));
+        const double dBest = std::abs(std::log2(double(std::max(value, 1u)) / double(choices[best])));
+        if (d < dBest) best = i;
+    }
+    return best;
+}
+
+bool sliderUint(const char* label, uint32_t& value, int lo, int hi) {
+    int v = int(std::min<uint32_t>(value, uint32_t(INT32_MAX)));
+    if (!ImGui::SliderInt(label, &v, lo, hi, "%d", kClamp)) return false;
+    value = uint32_t(std::clamp(v, lo, hi));
+    return true;
+}
+
+template <size_t N>
+bool combo(const char* label, uint32_t& value, const std::array<uint32_t, N>& choices,
+           const std::array<const char*, N>& names) {
+    int index = choiceIndex(choices, value);
+    if (!ImGui::Combo(label, &index, names.data(), int(N))) return false;
+    value = choices[size_t(std::clamp(index, 0, int(N) - 1))];
+    return true;
+}
+
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+bool buildNoise(postfx::FogNoiseSettings& n) {
+    bool changed = false;
+    changed |= ImGui::Checkbox("enabled", &n.enabled);
+    tooltip("modulate the extinction by a tileable Perlin-Worley noise texture");
+    changed |= combo("texture size [texels]", n.textureSize, kTextureSizes, kTextureSizeNames);
+    tooltip("edge of the cubic texture postfx generates (again when the size or seed changes)");
+    const uint32_t step = 1;
+    changed |= ImGui::InputScalar("seed", ImGuiDataType_U32, &n.seed, &step, nullptr, "%u");
+    changed |= ImGui::SliderFloat("tiling [1/(100 m)]", &n.tiling, 0.1f, 50.0f, "%.3g", kLog);
+    tooltip("the texture repeats every 100/tiling metres");
+    changed |= ImGui::SliderFloat("threshold", &n.threshold, 0.0f, 1.0f, "%.3f", kClamp);
+    tooltip("noise = clamp(texel - threshold, 0, 1) * multiplier");
+    changed |= ImGui::SliderFloat("multiplier", &n.multiplier, 0.0f, 10.0f, "%.2f", kClamp);
+    changed |= ImGui::DragFloat3("wind [m/s]", &n.wind.x, 0.05f, -100.0f, 100.0f, "%.2f", kClamp);
+    tooltip("velocity of the noise field");
+    return changed;
+}
+
+bool buildFog(postfx::FogSettings& f) {
+    bool changed = false;
+    changed |= ImGui::Checkbox("enabled", &f.enabled);
+    changed |= ImGui::SliderFloat("density [1/m]", &f.density, 1e-4f, 1.0f, "%.4g", kLog);
+    tooltip("extinction at the base height where noise = 1; 0.02/m: ~150 m visibility");
+    changed |= ImGui::ColorEdit3("albedo", &f.albedo.x, ImGuiColorEditFlags_Float);
+    tooltip("single-scattering albedo per RGB channel, plain numbers in [0, 1]");
+    changed |= ImGui::SliderFloat("anisotropy g", &f.anisotropy, -0.99f, 0.99f, "%.2f", kClamp);
+    tooltip("Henyey-Greenstein g; > 0 scatters forward (brightest toward the sun)");
+    changed |= ImGui::SliderFloat("height falloff [1/m]", &f.heightFalloff, 0.0f, 1.0f, "%.3g", kLog);
+    tooltip("density ~ exp(-falloff * (y - base height)); 0: homogeneous");
+    changed |= ImGui::SliderFloat("base height [m]", &f.baseHeight, -50.0f, 50.0f, "%.2f", kClamp);
+    changed |= ImGui::SliderFloat("max distance [m]", &f.maxDistance, 1.0f, 2000.0f, "%.1f", kLog);
+    tooltip("march length limit (then the analytic tail)");
+    changed |= sliderUint("steps", f.steps, 1, 256);
+    tooltip("march steps per pixel");
+    changed |= ImGui::Checkbox("jitter", &f.jitter);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("self shadow", &f.selfShadow);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("analytic tail", &f.analyticTail);
+    changed |= ImGui::SliderFloat("transmittance cutoff", &f.transmittanceCutoff, 0.0f, 0.1f, "%.4f", kClamp);
+    tooltip("stop marching below this transmittance; 0: never early");
+    changed |= combo("shadow kernel [texels]", f.shadowKernel, kShadowKernels, kShadowKernelNames);
+    if (ImGui::TreeNode("Noise")) {
+        changed |= buildNoise(f.noise);
+        ImGui::TreePop();
+    }
+    return changed;
+}
+
+}  // namespace
+
+FogControls::FogControls(const Scene& sceneFile) : fileFog_(sceneFile.fog), fileSun_(sceneFile.sun) {
+    takeSun(fileSun_);
+}
+
+void FogControls::takeSun(const Sun& sun) {
+    const glm::vec3 d = glm::dot(sun.direction, sun.direction) > 0.0f ? glm::normalize(sun.direction)
+                                                                      : glm::vec3(0.0f, 1.0f, 0.0f);
+    elevationDeg_ = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+    azimuthDeg_ = std::hypot(d.x, d.z) > 1e-6f ? glm::degrees(std::atan2(d.x, -d.z)) : 0.0f;
+    const float brightest = std::max({sun.illuminance.x, sun.illuminance.y, sun.illuminance.z});
+    if (brightest > 0.0f) {
+        illuminanceLux_ = brightest;
+        illuminanceColor_ = sun.illuminance / brightest;
+    } else {
+        illuminanceLux_ = 0.0f;
+        illuminanceColor_ = glm::vec3(1.0f);
+    }
+}
+
+glm::vec3 FogControls::sunDirection() const {
+    const float el = glm::radians(elevationDeg_), az = glm::radians(azimuthDeg_);
+    return {std::sin(az) * std::cos(el), std::sin(el), -std::cos(az) * std::cos(el)};
+}
+
+glm::vec3 FogControls::sunIlluminance() const {
+    glm::vec3 e = illuminanceColor_ * illuminanceLux_;
+    for (int c = 0; c < 3; ++c)
+        e[c] = clampOrLow(e[c], 0.0f, kMaxIlluminance);
+    return e;
+}
+
+void FogControls::sanitize(postfx::FogSettings& f) {
+    f.density = clampOrLow(f.density, 0.0f, 1e6f);
+    for (int c = 0; c < 3; ++c)
+        f.albedo[c] = clampOrLow(f.albedo[c], 0.0f, 1.0f);
+    f.anisotropy = clampOrLow(f.anisotropy, -1.0f, 1.0f);
+    f.heightFalloff = clampOrLow(f.heightFalloff, 0.0f, 10.0f);
+    if (!std::isfinite(f.baseHeight))
+        f.baseHeight = std::isnan(f.baseHeight) ? 0.0f : std::clamp(f.baseHeight, -1e6f, 1e6f);
+    if (!(f.maxDistance > 0.0f)) f.maxDistance = 1.0f;  // also NaN
+    f.maxDistance = std::min(f.maxDistance, 1e7f);
+    f.steps = std::clamp<uint32_t>(f.steps, 1, 4096);
+    f.transmittanceCutoff = clampOrLow(f.transmittanceCutoff, 0.0f, 0.999f);
+    f.shadowKernel = std::clamp<uint32_t>(f.shadowKernel | 1u, 1, 7);  // odd: even sizes round up
+    postfx::FogNoiseSettings& n = f.noise;
+    n.textureSize = kTextureSizes[size_t(choiceIndex(kTextureSizes, n.textureSize))];
+    if (!(n.tiling > 0.0f)) n.tiling = 0.1f;  // also NaN
+    n.tiling = std::min(n.tiling, 1000.0f);
+    n.threshold = clampOrLow(n.threshold, 0.0f, 1.0f);
+    n.multiplier = clampOrLow(n.multiplier, 0.0f, 1e3f);
+    for (int c = 0; c < 3; ++c)
+        n.wind[c] = clampOrLow(n.wind[c], -1e3f, 1e3f);
+}
+
+bool FogControls::build(Scene& scene) {
+    bool changed = false;
+    if (ImGui::Button("Reset to scene file")) {
+        scene.fog = fileFog_;
+        scene.sun.direction = fileSun_.direction;
+        scene.sun.illuminance = fileSun_.illuminance;
+        takeSun(fileSun_);
+        changed = true;
+    }
+    tooltip("fog and sun as the scene file has them (the camera stays)");
+
+    ImGui::PushID("fog");
+    if (ImGui::CollapsingHeader("Fog", ImGuiTreeNodeFlags_DefaultOpen)) {
+        postfx::FogSettings edited = scene.fog;
+        if (buildFog(edited)) {
+            sanitize(edited);
+            // sanitize makes every field valid; should a check ever disagree, keep the last settings.
+            if (postfx::validateFogSettings(edited).ok()) {
+                scene.fog = edited;
+                changed = true;
+            }
+        }
+    }
+    ImGui::PopID();
+
+    ImGui::PushID("sun");
+    if (ImGui::CollapsingHeader("Sun")) {
+        bool direction = false;
+        direction |= ImGui::SliderFloat("elevation [deg]", &elevationDeg_, 0.0f, 90.0f, "%.1f", kClamp);
+        tooltip("angle above the horizon");
+        direction |= ImGui::SliderFloat("azimuth [deg]", &azimuthDeg_, -180.0f, 180.0f, "%.1f", kClamp);
+        tooltip("about +y: 0 toward -z, 90 toward +x");
+        elevationDeg_ = clampOrLow(elevationDeg_, -90.0f, 90.0f);
+        azimuthDeg_ = clampOrLow(azimuthDeg_, -360.0f, 360.0f);
+        if (direction) {
+            scene.sun.direction = sunDirection();
+            changed = true;
+        }
+        if (ImGui::SliderFloat("illuminance [lux]", &illuminanceLux_, 0.0f, 1e6f, "%.0f", kLog)) {
+            illuminanceLux_ = clampOrLow(illuminanceLux_, 0.0f, kMaxIlluminance);
+            scene.sun.illuminance = sunIlluminance();
+            changed = true;
+        }
+        tooltip("the brightest channel; the scene file's colour is kept");
+    }
+    ImGui::PopID();
+    return changed;
+}
+
+}  // namespace demo::window

@@ -1,0 +1,43 @@
+// The windowed demo's fog and sun controls: the "Fog" and "Sun" sections of the ImGui panel, which edit
+// the live scene's postfx::FogSettings and sun every frame, and a "Reset to scene file" button.
+// Every value they leave in the scene is within the range postfx accepts (docs/effects/fog.md,
+// "Parameters"), so Context::record never fails because of the UI.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <postfx/fog.h>
+#include <glm/glm.hpp>
+
+namespace demo::window {
+
+class FogControls {
+public:
+    // `sceneFile`: the scene as loaded; "Reset to scene file" restores its fog and sun (direction,
+    // illuminance). The sun sliders start from its sun.
+    explicit FogControls(const Scene& sceneFile);
+
+    // Adds the button and the sections to the current ImGui window (call between Begin and End), editing
+    // scene.fog, scene.sun.direction and scene.sun.illuminance. "Fog" is open, its "Noise" subsection
+    // and "Sun" closed at first. Returns true if anything changed this frame.
+    bool build(Scene& scene);
+
+    // Brings every field into the range postfx accepts: NaN or out-of-range values are clamped (NaN to
+    // the lower end, steps >= 1, shadow kernel to the next odd size, texture size to the nearest power of
+    // two in [16, 256], max distance and tiling to > 0). Valid values are left exactly as they are.
+    static void sanitize(postfx::FogSettings& fog);
+
+private:
+    void takeSun(const Sun& sun);  // the slider values of `sun`
+    glm::vec3 sunDirection() const;
+    glm::vec3 sunIlluminance() const;
+
+    postfx::FogSettings fileFog_;
+    Sun fileSun_;
+    float elevationDeg_ = 90.0f;        // above the horizon
+    float azimuthDeg_ = 0.0f;           // about +y, 0 toward -z, positive toward +x (the fly camera's yaw)
+    float illuminanceLux_ = 0.0f;       // the brightest channel of sun.illuminance
+    glm::vec3 illuminanceColor_{1.0f};  // sun.illuminance / illuminanceLux_ (white for a dark sun)
+};
+
+}  // namespace demo::window

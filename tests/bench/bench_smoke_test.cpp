@@ -1,0 +1,183 @@
+// Smoke test of postfx-bench on lavapipe: runs `postfx-bench --quick` (64x36, steps 4/16/64, jitter on and
+// off, both baselines at two step lengths) under the validation layer and checks what it writes: the
+// CSV's columns, one row per setting, finite errors, error falling as postfx's steps grow; the markdown
+// and SVG exist. GPU times are not checked (lavapipe's mean nothing).
+// usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+std::string gBench, gSceneDir, gOut;
+
+const std::vector<std::string> kColumns = {
+    "scene",      "method",          "steps",         "step_length_m",
+    "jitter",     "noise_size",      "shadow_kernel", "width",
+    "height",     "warmup",          "frames",        "gpu_ms_median",
+    "gpu_ms_p10", "gpu_ms_p90",      "gpu_ms_min",    "gpu_ms_max",
+    "pass_ms",    "rel_rmse_1",      "max_abs_1",     "frac_off_1",
+    "rel_rmse_8", "max_abs_8",       "frac_off_8",    "rel_rmse_16",
+    "max_abs_16", "frac_off_16",     "non_finite",    "fetches_per_pixel",
+    "floor_ms",   "time_over_floor", "pareto_1",      "pareto_16",
+};
+const std::vector<std::string> kScenes = {"fog_default", "fog_shadowed"};
+const std::vector<int> kSteps = {4, 16, 64};  // --quick
+const size_t kStepLengths = 2;                // --quick: 4 m, 1 m
+
+std::vector<std::string> splitCsv(const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ','))
+        out.push_back(cell);
+    if (!line.empty() && line.back() == ',') out.push_back("");
+    return out;
+}
+
+std::string readFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+double number(const std::string& text) {
+    if (text.empty()) return NAN;
+    size_t used = 0;
+    const double v = std::stod(text, &used);
+    return used == text.size() ? v : NAN;
+}
+
+class BenchSmoke : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        std::filesystem::remove_all(gOut);
+        std::string scenes;
+        for (const std::string& s : kScenes)
+            scenes += (scenes.empty() ? "" : ",") + s;
+        const std::string command = "'" + gBench + "' --quick --size 64x36 --validation --scenes " + scenes +
+                                    " --scene-dir '" + gSceneDir + "' --out '" + gOut + "'";
+        std::printf("running: %s\n", command.c_str());
+        std::fflush(stdout);
+        status_ = std::system(command.c_str());
+    }
+    static int status_;
+};
+int BenchSmoke::status_ = -1;
+
+TEST_F(BenchSmoke, RunsAndWritesTheReport) {
+    ASSERT_EQ(status_, 0) << "postfx-bench failed (its output is above)";
+    for (const char* name : {"results.csv", "results.md", "plot.svg"})
+        EXPECT_TRUE(std::filesystem::is_regular_file(gOut + "/" + name)) << name;
+    const std::string svg = readFile(gOut + "/plot.svg");
+    EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+    for (const std::string& scene : kScenes)
+        EXPECT_NE(svg.find(scene), std::string::npos) << scene;
+    const std::string md = readFile(gOut + "/results.md");
+    EXPECT_NE(md.find("## fog_default"), std::string::npos);
+    EXPECT_NE(md.find("Pareto front"), std::string::npos);
+}
+
+TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
+    ASSERT_EQ(status_, 0);
+    std::ifstream in(gOut + "/results.csv");
+    ASSERT_TRUE(in) << gOut << "/results.csv";
+    std::string line;
+    std::vector<std::string> header;
+    std::vector<std::map<std::string, std::string>> rows;
+    bool sawDevice = false;
+    while (std::getline(in, line)) {
+        if (line.rfind("#", 0) == 0) {
+            sawDevice = sawDevice || line.rfind("# device: ", 0) == 0;
+            continue;
+        }
+        const std::vector<std::string> cells = splitCsv(line);
+        if (header.empty()) {
+            header = cells;
+            continue;
+        }
+        ASSERT_EQ(cells.size(), header.size()) << line;
+        std::map<std::string, std::string> row;
+        for (size_t i = 0; i < cells.size(); ++i)
+            row[header[i]] = cells[i];
+        rows.push_back(row);
+    }
+    EXPECT_TRUE(sawDevice);
+    ASSERT_EQ(header, kColumns);
+    // Per scene: steps × jitter on/off (one noise size in --quick) + 2 baselines × 2 step lengths.
+    ASSERT_EQ(rows.size(), kScenes.size() * (kSteps.size() * 2 + 2 * kStepLengths));
+
+    // (scene, jitter) -> rel_rmse_1 and rel_rmse_16 by steps, postfx-fog only.
+    std::map<std::pair<std::string, std::string>, std::map<int, std::pair<double, double>>> sweep;
+    std::map<std::string, int> methods;
+    std::map<std::string, int> paretoPoints;
+    for (const auto& row : rows) {
+        const std::string what = row.at("scene") + " " + row.at("method") + " steps=" + row.at("steps") +
+                                 " step=" + row.at("step_length_m") + " jitter=" + row.at("jitter");
+        ++methods[row.at("method")];
+        for (const char* column : {"rel_rmse_1", "max_abs_1", "frac_off_1", "rel_rmse_8", "max_abs_8",
+                                   "frac_off_8", "rel_rmse_16", "max_abs_16", "frac_off_16"}) {
+            const double v = number(row.at(column));
+            EXPECT_TRUE(std::isfinite(v) && v >= 0.0)
+                << what << ": " << column << " = '" << row.at(column) << "'";
+        }
+        EXPECT_EQ(row.at("non_finite"), "0") << what;
+        EXPECT_LE(number(row.at("frac_off_1")), 1.0) << what;
+        EXPECT_EQ(row.at("width"), "64");
+        EXPECT_EQ(row.at("height"), "36");
+        if (row.at("method") == "postfx-fog") {
+            EXPECT_TRUE(std::isfinite(number(row.at("fetches_per_pixel")))) << what;
+            EXPECT_TRUE(row.at("floor_ms").empty()) << what << ": no --texture-rate, no floor";
+            const int steps = int(number(row.at("steps")));
+            sweep[{row.at("scene"), row.at("jitter")}][steps] = {number(row.at("rel_rmse_1")),
+                                                                 number(row.at("rel_rmse_16"))};
+            paretoPoints[row.at("scene")] += row.at("pareto_1") == "1";
+        } else {
+            EXPECT_TRUE(std::isfinite(number(row.at("step_length_m")))) << what;
+        }
+    }
+    EXPECT_EQ(methods["postfx-fog"], int(kScenes.size() * kSteps.size() * 2));
+    EXPECT_EQ(methods["seed-as-written"], int(kScenes.size() * kStepLengths));
+    EXPECT_EQ(methods["seed-fixed-riemann"], int(kScenes.size() * kStepLengths));
+
+    // More steps, lower error: the one-frame error and the 16-frame mean's.
+    ASSERT_EQ(sweep.size(), kScenes.size() * 2);
+    for (const auto& [key, bySteps] : sweep) {
+        ASSERT_EQ(bySteps.size(), kSteps.size()) << key.first << " jitter=" << key.second;
+        for (size_t i = 1; i < kSteps.size(); ++i) {
+            const auto& fewer = bySteps.at(kSteps[i - 1]);
+            const auto& more = bySteps.at(kSteps[i]);
+            EXPECT_LT(more.first, fewer.first) << key.first << " jitter=" << key.second << ": steps "
+                                               << kSteps[i] << " vs " << kSteps[i - 1] << " (one frame)";
+            EXPECT_LT(more.second, fewer.second) << key.first << " jitter=" << key.second << ": steps "
+                                                 << kSteps[i] << " vs " << kSteps[i - 1] << " (16 frames)";
+        }
+    }
+    for (const std::string& scene : kScenes) {
+        // A front exists whenever the device has timestamps (lavapipe has).
+        EXPECT_GE(paretoPoints[scene], 1) << scene;
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    if (argc != 4) {
+        std::fprintf(stderr, "usage: %s POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]\n", argv[0]);
+        return 2;
+    }
+    gBench = argv[1];
+    gSceneDir = argv[2];
+    gOut = argv[3];
+    return RUN_ALL_TESTS();
+}
