@@ -1,6 +1,7 @@
 // postfx-demo: the windowed demo. Shows a demo scene (G-buffer, sun + shadow map, lighting, postfx,
 // GPU tonemap) in a GLFW window with a free-flight camera and an ImGui overlay. Without a display it
 // renders the scene headless, as postfx-render does, to out/<scene>.png.
+#include "cli_args.h"
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
 #include "scene/scene.h"
@@ -9,12 +10,13 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <string>
+
+namespace cli = demo::cli;
 
 namespace {
 
@@ -45,38 +47,19 @@ struct Args {
     bool sizeGiven = false;
 };
 
-struct UsageError {
-    std::string message;
-};
-
-bool parseUint(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
-    if (text.empty() || text.front() < '0' || text.front() > '9') return false;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-    return ec == std::errc() && end == text.data() + text.size() && out >= lo && out <= hi;
-}
-
 Args parseArgs(int argc, char** argv) {
     Args args;
     auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) throw UsageError{std::string(argv[i]) + " needs a value"};
+        if (i + 1 >= argc) throw cli::UsageError{std::string(argv[i]) + " needs a value"};
         return argv[++i];
     };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--size") {
-            const std::string s = value(i);
-            const size_t x = s.find('x');
-            if (x == std::string::npos ||
-                !parseUint(std::string_view(s).substr(0, x), 1, kMaxSize, args.window.width) ||
-                !parseUint(std::string_view(s).substr(x + 1), 1, kMaxSize, args.window.height))
-                throw UsageError{"--size '" + s + "': expected WIDTHxHEIGHT, each 1.." +
-                                 std::to_string(kMaxSize)};
+            cli::sizeOption(value(i), kMaxSize, args.window.width, args.window.height);
             args.sizeGiven = true;
         } else if (a == "--frames") {
-            const std::string s = value(i);
-            if (!parseUint(s, 1, kMaxFrames, args.window.frames))
-                throw UsageError{"--frames '" + s + "': expected an integer in 1.." +
-                                 std::to_string(kMaxFrames)};
+            cli::uintOption(a, value(i), 1, kMaxFrames, args.window.frames);
         } else if (a == "--no-ui") {
             args.window.ui = false;
         } else if (a == "--validation") {
@@ -84,14 +67,14 @@ Args parseArgs(int argc, char** argv) {
         } else if (a == "--hold") {
             args.window.hold = true;
         } else if (a.size() > 1 && a[0] == '-') {
-            throw UsageError{"unknown option '" + a + "' (see --help)"};
+            throw cli::UsageError{"unknown option '" + a + "' (see --help)"};
         } else if (args.scene.empty()) {
             args.scene = a;
         } else {
-            throw UsageError{"more than one scene file given ('" + args.scene + "', '" + a + "')"};
+            throw cli::UsageError{"more than one scene file given ('" + args.scene + "', '" + a + "')"};
         }
     }
-    if (args.window.hold && args.window.frames == 0) throw UsageError{"--hold needs --frames N"};
+    if (args.window.hold && args.window.frames == 0) throw cli::UsageError{"--hold needs --frames N"};
     return args;
 }
 
@@ -177,7 +160,7 @@ int main(int argc, char** argv) {
             }
         }
         return run(parseArgs(argc, argv));
-    } catch (const UsageError& e) {
+    } catch (const cli::UsageError& e) {
         return fail(e.message);
     } catch (const std::exception& e) {
         return fail(std::string("unexpected error: ") + e.what());

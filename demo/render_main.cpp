@@ -1,18 +1,20 @@
 // postfx-render: renders a demo scene headless (G-buffer, sun + shadow map, lighting, postfx) and
 // writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog comes from
 // postfx's CPU reference (Renderer::renderReference) instead of the GPU pass.
+#include "cli_args.h"
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
 #include "scene/scene.h"
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
 #include <thread>
+
+namespace cli = demo::cli;
 
 namespace {
 
@@ -49,20 +51,10 @@ struct Args {
     bool referenceStepsGiven = false;
 };
 
-struct UsageError {
-    std::string message;
-};
-
-bool parseUint(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
-    if (text.empty() || text.front() < '0' || text.front() > '9') return false;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-    return ec == std::errc() && end == text.data() + text.size() && out >= lo && out <= hi;
-}
-
 Args parseArgs(int argc, char** argv) {
     Args args;
     auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) throw UsageError{std::string(argv[i]) + " needs a value"};
+        if (i + 1 >= argc) throw cli::UsageError{std::string(argv[i]) + " needs a value"};
         return argv[++i];
     };
     for (int i = 1; i < argc; ++i) {
@@ -70,18 +62,9 @@ Args parseArgs(int argc, char** argv) {
         if (a == "-o" || a == "--output") {
             args.output = value(i);
         } else if (a == "--size") {
-            const std::string s = value(i);
-            const size_t x = s.find('x');
-            if (x == std::string::npos ||
-                !parseUint(std::string_view(s).substr(0, x), 1, kMaxSize, args.render.width) ||
-                !parseUint(std::string_view(s).substr(x + 1), 1, kMaxSize, args.render.height))
-                throw UsageError{"--size '" + s + "': expected WIDTHxHEIGHT, each 1.." +
-                                 std::to_string(kMaxSize)};
+            cli::sizeOption(value(i), kMaxSize, args.render.width, args.render.height);
         } else if (a == "--frames") {
-            const std::string s = value(i);
-            if (!parseUint(s, 1, kMaxFrames, args.render.frames))
-                throw UsageError{"--frames '" + s + "': expected an integer in 1.." +
-                                 std::to_string(kMaxFrames)};
+            cli::uintOption(a, value(i), 1, kMaxFrames, args.render.frames);
         } else if (a == "--standard-z") {
             args.render.reversedZ = false;
         } else if (a == "--infinite-far") {
@@ -91,27 +74,26 @@ Args parseArgs(int argc, char** argv) {
         } else if (a == "--reference") {
             args.reference = true;
         } else if (a == "--reference-steps") {
-            const std::string s = value(i);
-            if (!parseUint(s, 1, kMaxReferenceSteps, args.referenceSteps))
-                throw UsageError{"--reference-steps '" + s + "': expected an integer in 1.." +
-                                 std::to_string(kMaxReferenceSteps)};
+            cli::uintOption(a, value(i), 1, kMaxReferenceSteps, args.referenceSteps);
             args.referenceStepsGiven = true;
         } else if (a.size() > 1 && a[0] == '-') {
-            throw UsageError{"unknown option '" + a + "' (see --help)"};
+            throw cli::UsageError{"unknown option '" + a + "' (see --help)"};
         } else if (args.scene.empty()) {
             args.scene = a;
         } else {
-            throw UsageError{"more than one scene file given ('" + args.scene + "', '" + a + "')"};
+            throw cli::UsageError{"more than one scene file given ('" + args.scene + "', '" + a + "')"};
         }
     }
-    if (args.output.empty()) throw UsageError{"no output file given (-o OUT.exr or -o OUT.png; see --help)"};
-    if (args.referenceStepsGiven && !args.reference) throw UsageError{"--reference-steps needs --reference"};
+    if (args.output.empty())
+        throw cli::UsageError{"no output file given (-o OUT.exr or -o OUT.png; see --help)"};
+    if (args.referenceStepsGiven && !args.reference)
+        throw cli::UsageError{"--reference-steps needs --reference"};
     std::string ext = std::filesystem::path(args.output).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
     if (ext != ".exr" && ext != ".png")
-        throw UsageError{"output '" + args.output + "': unsupported extension '" +
-                         (ext.empty() ? "(none)" : ext) + "' (expected .exr or .png)"};
+        throw cli::UsageError{"output '" + args.output + "': unsupported extension '" +
+                              (ext.empty() ? "(none)" : ext) + "' (expected .exr or .png)"};
     return args;
 }
 
@@ -174,7 +156,7 @@ int main(int argc, char** argv) {
             }
         }
         return run(parseArgs(argc, argv));
-    } catch (const UsageError& e) {
+    } catch (const cli::UsageError& e) {
         return fail(e.message, 2);
     } catch (const std::exception& e) {
         return fail(std::string("unexpected error: ") + e.what());
