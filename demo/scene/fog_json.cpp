@@ -12,9 +12,33 @@ constexpr const char* kEffectsKeys[] = {"fog"};
 constexpr const char* kFogKeys[] = {
     "enabled",     "density",       "albedo",        "anisotropy", "height_falloff",
     "base_height", "max_distance",  "steps",         "jitter",     "transmittance_cutoff",
-    "self_shadow", "analytic_tail", "shadow_kernel", "noise"};
+    "self_shadow", "analytic_tail", "shadow_kernel", "quality",    "auto_budget_ms",
+    "noise"};
 constexpr const char* kNoiseKeys[] = {"enabled",   "texture_size", "seed", "tiling",
                                       "threshold", "multiplier",   "wind"};
+
+struct QualityName {
+    postfx::FogQuality quality;
+    const char* name;
+};
+constexpr QualityName kQualityNames[] = {
+    {postfx::FogQuality::Custom, "custom"}, {postfx::FogQuality::Low, "low"},
+    {postfx::FogQuality::Medium, "medium"}, {postfx::FogQuality::High, "high"},
+    {postfx::FogQuality::Ultra, "ultra"},   {postfx::FogQuality::Auto, "auto"},
+};
+
+postfx::FogQuality readQuality(const json& j, const std::string& path) {
+    if (j.is_string())
+        for (const QualityName& q : kQualityNames)
+            if (j.get<std::string>() == q.name) return q.quality;
+    fail(path, "expected \"custom\", \"low\", \"medium\", \"high\", \"ultra\" or \"auto\"" + got(j));
+}
+
+const char* qualityName(postfx::FogQuality quality) {
+    for (const QualityName& q : kQualityNames)
+        if (q.quality == quality) return q.name;
+    return "custom";
+}
 
 void readNoise(const json& j, const std::string& path, postfx::FogNoiseSettings& n) {
     expectObject(j, path);
@@ -50,6 +74,9 @@ postfx::FogSettings readFog(const json& j, const std::string& path) {
     if (const json* v = find(j, "analytic_tail")) s.analyticTail = readBool(*v, child(path, "analytic_tail"));
     if (const json* v = find(j, "shadow_kernel"))
         s.shadowKernel = readUint32(*v, child(path, "shadow_kernel"));
+    if (const json* v = find(j, "quality")) s.quality = readQuality(*v, child(path, "quality"));
+    if (const json* v = find(j, "auto_budget_ms"))
+        s.autoBudgetMs = readNumber(*v, child(path, "auto_budget_ms"));
     if (const json* v = find(j, "noise")) readNoise(*v, child(path, "noise"), s.noise);
 
     // Ranges: postfx's own check, so that the file accepts exactly what Context::record does. The
@@ -96,6 +123,8 @@ json effectsToJson(const postfx::FogSettings& s) {
                       {"self_shadow", s.selfShadow},
                       {"analytic_tail", s.analyticTail},
                       {"shadow_kernel", s.shadowKernel},
+                      {"quality", qualityName(s.quality)},
+                      {"auto_budget_ms", number(s.autoBudgetMs)},
                       {"noise", noise}};
     return json{{"fog", fog}};
 }

@@ -61,6 +61,8 @@ json everyKey() {
       "self_shadow": true,
       "analytic_tail": false,
       "shadow_kernel": 5,
+      "quality": "auto",
+      "auto_budget_ms": 1.25,
       "noise": {
         "enabled": true,
         "texture_size": 64,
@@ -87,6 +89,8 @@ void expectSameFog(const postfx::FogSettings& a, const postfx::FogSettings& b) {
     EXPECT_EQ(a.selfShadow, b.selfShadow);
     EXPECT_EQ(a.analyticTail, b.analyticTail);
     EXPECT_EQ(a.shadowKernel, b.shadowKernel);
+    EXPECT_EQ(a.quality, b.quality);
+    EXPECT_EQ(a.autoBudgetMs, b.autoBudgetMs);
     EXPECT_EQ(a.noise.enabled, b.noise.enabled);
     EXPECT_EQ(a.noise.textureSize, b.noise.textureSize);
     EXPECT_EQ(a.noise.seed, b.noise.seed);
@@ -154,6 +158,8 @@ TEST(SceneFog, EveryKeyIsRead) {
     EXPECT_TRUE(f.selfShadow);
     EXPECT_FALSE(f.analyticTail);
     EXPECT_EQ(f.shadowKernel, 5u);
+    EXPECT_EQ(f.quality, postfx::FogQuality::Auto);
+    EXPECT_EQ(f.autoBudgetMs, 1.25f);
     EXPECT_TRUE(f.noise.enabled);
     EXPECT_EQ(f.noise.textureSize, 64u);
     EXPECT_EQ(f.noise.seed, 4000000000u);
@@ -161,6 +167,26 @@ TEST(SceneFog, EveryKeyIsRead) {
     EXPECT_EQ(f.noise.threshold, 0.3f);
     EXPECT_EQ(f.noise.multiplier, 4.0f);
     EXPECT_EQ(f.noise.wind, glm::vec3(1.0f, -2.0f, 0.5f));
+}
+
+TEST(SceneFog, QualityDefaultsToCustomAndReadsEveryName) {
+    const Parsed defaults = parse(withFog(json::object()));
+    ASSERT_TRUE(defaults.ok) << defaults.error;
+    EXPECT_EQ(defaults.scene.fog.quality, postfx::FogQuality::Custom);
+    EXPECT_EQ(defaults.scene.fog.autoBudgetMs, 0.5f);
+    const std::pair<const char*, postfx::FogQuality> names[] = {
+        {"custom", postfx::FogQuality::Custom}, {"low", postfx::FogQuality::Low},
+        {"medium", postfx::FogQuality::Medium}, {"high", postfx::FogQuality::High},
+        {"ultra", postfx::FogQuality::Ultra},   {"auto", postfx::FogQuality::Auto},
+    };
+    for (const auto& [name, quality] : names) {
+        const Parsed p = parse(withFog({{"quality", name}, {"auto_budget_ms", 2}}));
+        ASSERT_TRUE(p.ok) << name << ": " << p.error;
+        EXPECT_EQ(p.scene.fog.quality, quality) << name;
+        EXPECT_EQ(p.scene.fog.autoBudgetMs, 2.0f) << name;
+        EXPECT_EQ(p.scene.fog.steps, 32u) << name << ": the preset is applied by postfx, not the loader";
+        EXPECT_EQ(demo::sceneToJson(p.scene)["effects"]["fog"]["quality"], name);
+    }
 }
 
 TEST(SceneFog, IntegersMayBeWrittenAsWholeDecimals) {
@@ -225,6 +251,8 @@ TEST(SceneFog, EachKeyRoundTripsAtItsBounds) {
         {"/transmittance_cutoff", 0.999},
         {"/shadow_kernel", 1},
         {"/shadow_kernel", 7},
+        {"/auto_budget_ms", 1e-6},
+        {"/auto_budget_ms", 1e6},
         {"/albedo", {0, 1, 0.1}},
         {"/noise/texture_size", 16},
         {"/noise/texture_size", 256},
@@ -279,7 +307,7 @@ std::vector<FogRejection> fogRejections() {
         {"UnknownFogKey", fog("/colour", {1, 1, 1}),
          "effects.fog.colour: unknown key (expected enabled, density, albedo, anisotropy, height_falloff, "
          "base_height, max_distance, steps, jitter, transmittance_cutoff, self_shadow, analytic_tail, "
-         "shadow_kernel or noise)"},
+         "shadow_kernel, quality, auto_budget_ms or noise)"},
         {"UnknownNoiseKey", fog("/noise/octaves", 4),
          "effects.fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, threshold, "
          "multiplier or wind)"},
@@ -301,11 +329,19 @@ std::vector<FogRejection> fogRejections() {
         {"SeedNegative", fog("/noise/seed", -5), "effects.fog.noise.seed: expected an integer in"},
         {"WindElement", fog("/noise/wind", {0, "x", 0}), "effects.fog.noise.wind[1]: expected a number"},
         {"DensityTooLarge", fog("/density", 1e39), "effects.fog.density: expected a number of magnitude"},
+        {"QualityUnknown", fog("/quality", "extreme"),
+         "effects.fog.quality: expected \"custom\", \"low\", \"medium\", \"high\", \"ultra\" or \"auto\", "
+         "got the string"},
+        {"QualityUpperCase", fog("/quality", "Low"), "effects.fog.quality: expected \"custom\""},
+        {"QualityNumber", fog("/quality", 2), "effects.fog.quality: expected \"custom\""},
+        {"AutoBudgetString", fog("/auto_budget_ms", "1"), "effects.fog.auto_budget_ms: expected a number"},
         // ranges, from postfx::validateFogSettings
         {"DensityNegative", fog("/density", -1), "effects.fog.density: -1 is outside [0, 1e+06]"},
         {"AnisotropyTwo", fog("/anisotropy", 2), "effects.fog.anisotropy: 2 is outside [-1, 1]"},
         {"HeightFalloffNegative", fog("/height_falloff", -0.1), "effects.fog.height_falloff: "},
         {"MaxDistanceZero", fog("/max_distance", 0), "effects.fog.max_distance: "},
+        {"AutoBudgetZero", fog("/auto_budget_ms", 0), "effects.fog.auto_budget_ms: 0 must be > 0"},
+        {"AutoBudgetNegative", fog("/auto_budget_ms", -1), "effects.fog.auto_budget_ms: -1 must be > 0"},
         {"StepsZero", fog("/steps", 0), "effects.fog.steps: 0 is outside [1, 4096]"},
         {"StepsTooMany", fog("/steps", 4097), "effects.fog.steps: 4097 is outside [1, 4096]"},
         {"CutoffOne", fog("/transmittance_cutoff", 1), "effects.fog.transmittance_cutoff: "},

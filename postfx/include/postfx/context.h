@@ -85,6 +85,11 @@ public:
     // framesInFlight ago) or were never written. Does not wait.
     Status readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const;
 
+    // The preset FogQuality::Auto chose for the last recorded frame's (color extent, noise on, shadow map
+    // present): NotReady while that key's presets are still being measured (or no Auto frame has been
+    // recorded). Medium when GPU timings are off.
+    Status fogAutoQuality(FogQuality& chosen) const;
+
     // Records a copy of the fog's generated noise texture (R8, size³ bytes, x fastest, then y, then z)
     // into `buffer` at `offset` (usage TRANSFER_DST); the host submits and reads it, e.g. to give the
     // CPU reference the same noise data. `size` receives the texture's edge. InvalidArgument when no

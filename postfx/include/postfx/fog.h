@@ -30,8 +30,29 @@ struct FogNoiseSettings {
     VkImageLayout hostTextureLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 };
 
+// Quality presets: each sets steps, jitter and shadowKernel (docs/effects/fog.md#quality-presets).
+//   Low = 8 steps, kernel 1; Medium = 16 steps, kernel 3; High = 32 steps, kernel 3;
+//   Ultra = 64 steps, kernel 3; all with jitter.
+enum class FogQuality {
+    Custom,  // steps, jitter and shadowKernel as set
+    Low,
+    Medium,
+    High,
+    Ultra,
+    // The context measures Low..Ultra on the running device (one frame each, the first four frames of
+    // every new (color extent, noise on, shadow map present)), then uses the highest preset whose fog
+    // passes take at most autoBudgetMs, or Low if none fits (see Context::fogAutoQuality). Without GPU
+    // timings: Medium.
+    Auto,
+};
+
 struct FogSettings {
     bool enabled = false;
+    // Custom uses steps/jitter/shadowKernel below; a preset replaces those three.
+    FogQuality quality = FogQuality::Custom;
+    // Auto only: GPU time budget for the fog's passes (excluding noise generation) [ms]; > 0 and finite
+    // (checked whatever the quality).
+    float autoBudgetMs = 0.5f;
     // Extinction σt at base_height where noise = 1 [1/m]; in [0, 1e6]. 0.02 gives a visibility of ~150 m.
     float density = 0.02f;
     glm::vec3 albedo{0.9f};  // single-scattering albedo σs/σt per RGB channel [1]; each in [0, 1]
@@ -84,5 +105,8 @@ struct CameraInput {
 // Checks every setting against its documented range; InvalidArgument naming the first bad field with
 // its scene-file name ("fog.noise.tiling: 0 must be > 0"). Context::record runs the same check.
 Status validateFogSettings(const FogSettings& settings);
+
+// `settings` with steps, jitter and shadowKernel set by preset `quality`; Custom and Auto: unchanged.
+FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality);
 
 }  // namespace postfx

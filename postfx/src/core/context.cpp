@@ -139,8 +139,29 @@ Status Context::record(const FrameInfo& frame) {
         return impl.report(invalid("FrameInfo.depth.extent " + extentText(frame.depth.extent) +
                                    " differs from FrameInfo.color.extent " + extentText(frame.color.extent)));
 
+    // Quality presets replace steps/jitter/shadowKernel before the checks; Auto picks the preset (reading
+    // finished frames' timings, so before the timer starts this frame).
+    FrameInfo resolved;
+    const FrameInfo* effective = &frame;
+    const fog::AutoQualityKey autoKey{frame.color.extent.width, frame.color.extent.height,
+                                      frame.fog.noise.enabled, frame.shadowMap.image.present()};
+    if (frame.fog.enabled && frame.fog.quality != FogQuality::Custom) {
+        FogQuality preset = frame.fog.quality;
+        if (preset == FogQuality::Auto) {
+            if (!impl.timer.enabled() && !impl.warnedAutoWithoutTimings) {
+                impl.warnedAutoWithoutTimings = true;
+                impl.warn(
+                    "fog quality Auto without GPU timings (gpuTimings off or unsupported): using Medium");
+            }
+            preset = impl.fogAutoQuality.select(autoKey, frame.fog.autoBudgetMs, impl.timer);
+        }
+        resolved = frame;
+        resolved.fog = applyFogQuality(frame.fog, preset);
+        resolved.fog.quality = preset;
+        effective = &resolved;
+    }
     if (frame.fog.enabled) {
-        if (Status s = fog::FogPass::validate(frame); !s) return impl.report(s);
+        if (Status s = fog::FogPass::validate(*effective); !s) return impl.report(s);
     }
 
     core::DescriptorArena& arena = impl.arena(frame.frameIndex);
@@ -149,12 +170,19 @@ Status Context::record(const FrameInfo& frame) {
     impl.retirement.collect(frame.frameIndex, impl.info.framesInFlight);
     if (frame.fog.enabled) {
         if (!impl.fog) impl.fog = std::make_unique<fog::FogPass>();
-        if (Status s = impl.fog->record(impl.gpu, impl.info, arena, impl.timer, impl.retirement, frame); !s)
+        if (Status s = impl.fog->record(impl.gpu, impl.info, arena, impl.timer, impl.retirement, *effective);
+            !s)
             return impl.report(s);
+        if (frame.fog.quality == FogQuality::Auto)
+            impl.fogAutoQuality.recorded(frame.frameIndex, autoKey, effective->fog.quality);
     } else {
         impl.retirement.retire(frame.frameIndex, std::move(impl.fog));  // its GPU objects go once unused
     }
     return Status::success();
+}
+
+Status Context::fogAutoQuality(FogQuality& chosen) const {
+    return impl_->fogAutoQuality.chosen(chosen);
 }
 
 Status Context::recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,

@@ -8,6 +8,7 @@
 #include "core/gpu.h"
 #include "core/pass_timer.h"
 #include "core/retirement.h"
+#include "fog/fog_auto_quality.h"
 #include "fog/fog_pass.h"
 
 #include <memory>
@@ -21,6 +22,8 @@ struct Context::Impl {
     core::PassTimer timer;
     std::vector<std::unique_ptr<core::DescriptorArena>> arenas;  // one per frame in flight
     std::unique_ptr<fog::FogPass> fog;                           // null while the fog is off
+    fog::AutoQuality fogAutoQuality;                             // FogQuality::Auto's measurements
+    bool warnedAutoWithoutTimings = false;
     core::Retirement retirement;  // objects frames in flight may still use; declared last, freed first
 
     // Sends a failed status to the host's message callback and returns it unchanged.

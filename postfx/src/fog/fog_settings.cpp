@@ -25,6 +25,20 @@ Status inRange(const char* field, double v, double lo, double hi) {
     return Status::success();
 }
 
+// The quality presets, the one place their values are written (docs/effects/fog.md#quality-presets).
+struct QualityPreset {
+    FogQuality quality;
+    uint32_t steps;
+    bool jitter;
+    uint32_t shadowKernel;
+};
+constexpr QualityPreset kQualityPresets[] = {
+    {FogQuality::Low, 8, true, 1},
+    {FogQuality::Medium, 16, true, 3},
+    {FogQuality::High, 32, true, 3},
+    {FogQuality::Ultra, 64, true, 3},
+};
+
 bool isPowerOfTwo(uint32_t v) {
     return v && !(v & (v - 1));
 }
@@ -46,6 +60,8 @@ Status validateSettings(const FogSettings& s) {
     if (s.maxDistance <= 0.0f) return bad("fog.max_distance", "must be > 0");
     if (s.steps < 1 || s.steps > 4096)
         return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
+    if (!std::isfinite(s.autoBudgetMs)) return bad("fog.auto_budget_ms", "is not finite");
+    if (s.autoBudgetMs <= 0.0f) return bad("fog.auto_budget_ms", text(s.autoBudgetMs) + " must be > 0");
     if (Status r = inRange("fog.transmittance_cutoff", s.transmittanceCutoff, 0.0, 1.0); !r) return r;
     if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
@@ -79,5 +95,16 @@ Status validateLighting(const SunInput& sun, const glm::vec3& ambient) {
 namespace postfx {
 Status validateFogSettings(const FogSettings& settings) {
     return fog::validateSettings(settings);
+}
+
+FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality) {
+    FogSettings s = settings;
+    for (const fog::QualityPreset& p : fog::kQualityPresets)
+        if (p.quality == quality) {
+            s.steps = p.steps;
+            s.jitter = p.jitter;
+            s.shadowKernel = p.shadowKernel;
+        }
+    return s;
 }
 }  // namespace postfx

@@ -1,0 +1,59 @@
+// FogQuality::Auto: measures the presets on the running device from real frames and picks the most
+// accurate one within the budget, cached per (color extent, noise on, shadow map present).
+#pragma once
+
+#include <postfx/context.h>
+#include <postfx/fog.h>
+#include <postfx/result.h>
+
+#include "core/pass_timer.h"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace postfx::fog {
+
+struct AutoQualityKey {
+    uint32_t width = 0, height = 0;  // color extent
+    bool noise = false;
+    bool shadowMap = false;
+    bool operator==(const AutoQualityKey&) const = default;
+};
+
+class AutoQuality {
+public:
+    static constexpr std::array<FogQuality, 4> kPresets = {FogQuality::Low, FogQuality::Medium,
+                                                           FogQuality::High, FogQuality::Ultra};
+
+    // The preset frame `frameIndex` with `key` uses. First collects the timings of pending measured
+    // frames that have finished (does not wait); call before the timer starts `frameIndex`. While
+    // `key` has unmeasured presets, returns the next one to measure; then the highest preset whose
+    // time <= budgetMs, or Low if none fits. Without timings (`timer` disabled): Medium.
+    FogQuality select(const AutoQualityKey& key, float budgetMs, const core::PassTimer& timer);
+    // After `frameIndex` was recorded with `preset` (as select returned): measure it if still needed.
+    void recorded(uint64_t frameIndex, const AutoQualityKey& key, FogQuality preset);
+    // The choice for the key of the last select(); NotReady while its presets are being measured.
+    Status chosen(FogQuality& out) const;
+
+private:
+    struct Entry {
+        AutoQualityKey key;
+        std::array<std::optional<double>, 4> ms;  // per kPresets
+        bool measured() const;
+    };
+    struct Pending {
+        uint64_t frameIndex;
+        AutoQualityKey key;
+        size_t preset;  // index into kPresets
+    };
+    Entry& entry(const AutoQualityKey& key);
+    void collect(const core::PassTimer& timer);
+
+    std::vector<Entry> cache_;
+    std::vector<Pending> pending_;
+    std::optional<FogQuality> last_;  // choice for the last select()'s key; empty while measuring
+};
+
+}  // namespace postfx::fog

@@ -1,0 +1,192 @@
+// Fog quality presets through postfx's public API: the preset table, a preset rendering exactly like
+// Custom with the same values, and FogQuality::Auto measuring the presets and choosing by budget.
+#include "fog_harness.h"
+
+#include <string>
+#include <vector>
+
+namespace test {
+namespace {
+
+using postfx::FogQuality;
+using postfx::Result;
+
+class FogQualityTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        ASSERT_TRUE(host);
+        ASSERT_TRUE(gpu.init(hostHandles()).ok());
+    }
+
+    std::unique_ptr<postfx::Context> newContext() {
+        postfx::ContextCreateInfo info;
+        info.depth.reversedZ = true;
+        std::unique_ptr<postfx::Context> context;
+        const postfx::Status s = createContext(context, info);
+        EXPECT_TRUE(s.ok()) << s.message;
+        return context;
+    }
+
+    // A height fog over a surface at 12 m on the left half, sky on the right.
+    postfx::FrameInfo fogFrame() const {
+        postfx::FrameInfo frame;
+        frame.camera = testCamera({0.0, 1.5, 0.0}, 60.0f, float(kWidth) / kHeight, 0.1f, 1000.0f, true);
+        frame.sun.toSun = glm::normalize(glm::vec3(0.2f, 0.3f, -1.0f));
+        frame.sun.illuminance = {1000.0f, 2000.0f, 500.0f};
+        frame.ambient = {10.0f, 20.0f, 30.0f};
+        frame.fog.enabled = true;
+        frame.fog.density = 0.05f;
+        frame.fog.maxDistance = 30.0f;
+        return frame;
+    }
+
+    FogHarnessImages images(const postfx::FrameInfo& frame) const {
+        FogHarnessImages im;
+        im.width = kWidth;
+        im.height = kHeight;
+        im.color.resize(kWidth * kHeight * 4);
+        im.depth.resize(kWidth * kHeight);
+        for (uint32_t j = 0; j < kHeight; ++j)
+            for (uint32_t i = 0; i < kWidth; ++i) {
+                const size_t p = size_t(j) * kWidth + i;
+                const glm::dvec3 d = pixelDirection(frame.camera, i, j, kWidth, kHeight);
+                im.depth[p] = i < kWidth / 2 ? depthAtDistance(frame.camera, d, 12.0) : 0.0f;
+                for (int c = 0; c < 4; ++c)
+                    im.color[p * 4 + c] = 1.0f + float(i + j + c);
+            }
+        return im;
+    }
+
+    static constexpr uint32_t kWidth = 24, kHeight = 16;
+    postfx::core::Gpu gpu;
+};
+
+TEST_F(FogQualityTest, ApplyFogQualitySetsThePresetTable) {
+    postfx::FogSettings custom;
+    custom.steps = 77;
+    custom.jitter = false;
+    custom.shadowKernel = 5;
+    custom.density = 0.125f;
+    struct Row {
+        FogQuality quality;
+        uint32_t steps;
+        bool jitter;
+        uint32_t kernel;
+    };
+    const Row rows[] = {{FogQuality::Low, 8, true, 1},      {FogQuality::Medium, 16, true, 3},
+                        {FogQuality::High, 32, true, 3},    {FogQuality::Ultra, 64, true, 3},
+                        {FogQuality::Custom, 77, false, 5}, {FogQuality::Auto, 77, false, 5}};
+    for (const Row& r : rows) {
+        const postfx::FogSettings s = postfx::applyFogQuality(custom, r.quality);
+        EXPECT_EQ(s.steps, r.steps) << int(r.quality);
+        EXPECT_EQ(s.jitter, r.jitter) << int(r.quality);
+        EXPECT_EQ(s.shadowKernel, r.kernel) << int(r.quality);
+        EXPECT_EQ(s.density, custom.density);  // nothing else changes
+        EXPECT_EQ(s.quality, custom.quality);
+    }
+}
+
+TEST_F(FogQualityTest, PresetRendersExactlyLikeCustomWithItsValues) {
+    std::unique_ptr<postfx::Context> context = newContext();
+    ASSERT_TRUE(context);
+    FogHarness harness(*host, gpu);
+    for (FogQuality q : {FogQuality::Low, FogQuality::High}) {
+        postfx::FrameInfo preset = fogFrame();
+        preset.frameIndex = 3;  // the same jitter for both
+        preset.fog.quality = q;
+        preset.fog.steps = 5;  // replaced by the preset
+        preset.fog.jitter = false;
+        postfx::FrameInfo custom = preset;
+        custom.fog = postfx::applyFogQuality(preset.fog, q);
+        custom.fog.quality = FogQuality::Custom;
+        ASSERT_NE(custom.fog.steps, 5u);
+        const FogHarnessImages im = images(preset);
+        std::vector<float> a, b;
+        postfx::Status s = harness.run(*context, im, preset, a);
+        ASSERT_TRUE(s.ok()) << s.message;
+        s = harness.run(*context, im, custom, b);
+        ASSERT_TRUE(s.ok()) << s.message;
+        ASSERT_EQ(a.size(), b.size());
+        EXPECT_EQ(a, b) << "quality " << int(q);
+        EXPECT_NE(a, im.color);  // the fog did something
+    }
+}
+
+TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
+    FogHarness harness(*host, gpu);
+    for (const auto& [budget, expected] :
+         {std::pair{1e-6f, FogQuality::Low}, std::pair{1e6f, FogQuality::Ultra}}) {
+        std::unique_ptr<postfx::Context> context = newContext();
+        ASSERT_TRUE(context);
+        FogQuality chosen = FogQuality::Custom;
+        EXPECT_EQ(context->fogAutoQuality(chosen).code, Result::NotReady);  // nothing recorded yet
+        postfx::FrameInfo frame = fogFrame();
+        frame.fog.quality = FogQuality::Auto;
+        frame.fog.autoBudgetMs = budget;
+        const FogHarnessImages im = images(frame);
+        std::vector<float> out;
+        for (uint64_t i = 0; i < 6; ++i) {
+            frame.frameIndex = i;
+            const postfx::Status s = harness.run(*context, im, frame, out);
+            ASSERT_TRUE(s.ok()) << s.message;
+            if (i == 0) {
+                std::vector<postfx::PassTiming> timings;
+                if (context->readPassTimings(0, timings).code == Result::Unsupported)
+                    GTEST_SKIP() << "no GPU timings on this device";
+            }
+            const postfx::Status c = context->fogAutoQuality(chosen);
+            if (i < 4) {
+                // Frames 0..3 measure Low, Medium, High, Ultra; frame 4 reads frame 3's timings.
+                EXPECT_EQ(c.code, Result::NotReady) << "frame " << i;
+            } else {
+                ASSERT_TRUE(c.ok()) << "frame " << i << ": " << c.message;
+                EXPECT_EQ(chosen, expected) << "budget " << budget;
+            }
+        }
+        // The chosen preset is what was rendered: the last frame equals Custom with its values.
+        postfx::FrameInfo custom = frame;
+        custom.fog = postfx::applyFogQuality(frame.fog, expected);
+        custom.fog.quality = FogQuality::Custom;
+        std::vector<float> reference;
+        const postfx::Status s = harness.run(*context, im, custom, reference);
+        ASSERT_TRUE(s.ok()) << s.message;
+        EXPECT_EQ(out, reference);
+        // A new key (another extent would need other images; noise on is one) measures again.
+        frame.fog.noise.enabled = true;
+        frame.frameIndex = 6;
+        ASSERT_TRUE(harness.run(*context, im, frame, out).ok());
+        EXPECT_EQ(context->fogAutoQuality(chosen).code, Result::NotReady);
+    }
+}
+
+TEST_F(FogQualityTest, AutoWithoutTimingsUsesMedium) {
+    postfx::ContextCreateInfo info;
+    info.depth.reversedZ = true;
+    info.gpuTimings = false;
+    struct Messages {
+        int warnings = 0;
+    } messages;
+    info.messageCallback = [](postfx::MessageSeverity severity, const char*, void* user) {
+        if (severity == postfx::MessageSeverity::Warning) ++static_cast<Messages*>(user)->warnings;
+    };
+    info.messageUserData = &messages;
+    std::unique_ptr<postfx::Context> context;
+    ASSERT_TRUE(createContext(context, info).ok());
+    FogHarness harness(*host, gpu);
+    postfx::FrameInfo frame = fogFrame();
+    frame.fog.quality = FogQuality::Auto;
+    const FogHarnessImages im = images(frame);
+    std::vector<float> out;
+    for (uint64_t i = 0; i < 2; ++i) {
+        frame.frameIndex = i;
+        ASSERT_TRUE(harness.run(*context, im, frame, out).ok());
+        FogQuality chosen = FogQuality::Custom;
+        ASSERT_TRUE(context->fogAutoQuality(chosen).ok());
+        EXPECT_EQ(chosen, FogQuality::Medium);
+    }
+    EXPECT_EQ(messages.warnings, 1);
+}
+
+}  // namespace
+}  // namespace test
