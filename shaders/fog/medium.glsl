@@ -22,16 +22,7 @@ float extinction(vec3 x) {
     return fog.medium.x * heightTerm(fog.heights.x + x.y) * noiseTerm(x);
 }
 
-// 1 when a stored shadow-map depth lets the sun reach shadow-space depth z (bias toward lit), else 0.
-float shadowLit(float stored, float z) {
-    bool lit = fogFlag(kFogFlagShadowReversedZ) ? z + fog.shadow.x >= stored : z - fog.shadow.x <= stored;
-    return lit ? 1.0 : 0.0;
-}
-
-// Shadow-map visibility: mean of the kernel² texel comparisons around the sample (1 outside the map).
-// The texels are read 2×2 at a time with textureGather: a gather at the corner shared by texels
-// (i, j) .. (i+1, j+1) returns exactly those four (clamp-to-edge clamps indices as the reference does),
-// so a 3×3 kernel costs 4 fetches instead of 9 and compares the same texels.
+// Shadow-map visibility: mean of kernel² texel comparisons around the sample (1 outside the map).
 float shadowVisibility(vec3 x) {
     if (!fogFlag(kFogFlagShadowMap)) return 1.0;
     vec4 clip = fog.viewToShadow * vec4(x, 1.0);
@@ -41,22 +32,17 @@ float shadowVisibility(vec3 x) {
     ivec2 size = textureSize(shadowMap, 0);
     ivec2 center = min(ivec2(uv * vec2(size)), size - 1);
     int r = int(fog.shadow.y);
-    if (r == 0) return shadowLit(texelFetch(shadowMap, center, 0).r, s.z);
-    int n = 2 * r + 1;
-    vec2 texelSize = 1.0 / vec2(size);
+    bool reversed = fogFlag(kFogFlagShadowReversedZ);
     float lit = 0.0;
-    for (int by = 0; by < n; by += 2) {
-        for (int bx = 0; bx < n; bx += 2) {
-            ivec2 corner = center - r + ivec2(bx, by);  // top-left texel of this 2×2 block
-            // Gather order: (i, j+1), (i+1, j+1), (i+1, j), (i, j).
-            vec4 d = textureGather(shadowMap, vec2(corner + 1) * texelSize, 0);
-            float right = bx + 1 < n ? 1.0 : 0.0;  // the block's second column is inside the kernel
-            float below = by + 1 < n ? 1.0 : 0.0;  // its second row is inside the kernel
-            lit += shadowLit(d.w, s.z) + right * shadowLit(d.z, s.z) + below * shadowLit(d.x, s.z) +
-                   right * below * shadowLit(d.y, s.z);
+    for (int b = -r; b <= r; ++b) {
+        for (int a = -r; a <= r; ++a) {
+            float stored = texelFetch(shadowMap, clamp(center + ivec2(a, b), ivec2(0), size - 1), 0).r;
+            bool isLit = reversed ? s.z + fog.shadow.x >= stored : s.z - fog.shadow.x <= stored;
+            lit += isLit ? 1.0 : 0.0;
         }
     }
-    return lit / float(n * n);
+    float taps = float(2 * r + 1);
+    return lit / (taps * taps);
 }
 
 // Self-shadowing: transmittance of the height fog from height y (above base) to the sun, closed form
