@@ -23,23 +23,17 @@
 
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 
-layout(binding = kFogBindingColorIn, rgba16f) uniform readonly image2D colorIn;
-layout(binding = kFogBindingColorOut, rgba16f) uniform writeonly image2D colorOut;
-layout(binding = kFogBindingDepth) uniform sampler2D depthTexture;
-layout(binding = kFogBindingShadowMap) uniform sampler2D shadowMap;
-layout(binding = kFogBindingNoise) uniform sampler3D noiseTexture;
-layout(binding = kFogBindingUniforms, std140) uniform Uniforms { FogUniforms fog; };
+#include "fog/bindings.glsl"
 layout(push_constant) uniform Push {
     float stepLength;  // Δ [m], > 0
 } push;
 
 #include "common/ign.glsl"
 #include "fog/medium.glsl"
+#include "fog/ray.glsl"
 
-const float kColorMax = 65504.0;        // largest finite half: never write Inf (as postfx)
 const uint kMaxIterations = 100000u;    // safety cap only; the seed has none
 const float kPi = 3.14159265358979;
-const float kInfinity = 1.0 / 0.0;
 
 // The seed's henyey_greenstein(angle, scattering), exactly as it computes it:
 //   (1 - cos²θ) / (4π (1 + g² - 2g·cosθ)^1.5)
@@ -53,15 +47,9 @@ void main() {
     if (any(greaterThanEqual(pixel, fog.extent.xy))) return;
     vec4 color = imageLoad(colorIn, ivec2(pixel));
 
-    // The ray exactly as postfx builds it: camera-relative surface position; no geometry: infinite.
-    float depth = texelFetch(depthTexture, ivec2(pixel), 0).r;
-    bool noGeometry = depth == fog.march.y;
-    vec2 ndc = (vec2(pixel) + 0.5) / vec2(fog.extent.xy) * 2.0 - 1.0;
-    vec4 p = fog.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);
-    vec3 surface = p.xyz / p.w;
-    float surfaceDistance = length(surface);
-    vec3 dir = surface / surfaceDistance;
-    if (noGeometry) surfaceDistance = kInfinity;
+    FogRay ray = fogRay(pixel);
+    vec3 dir = ray.dir;
+    float surfaceDistance = ray.surfaceDistance;
 
     float stepLength = push.stepLength;
     float distLimit = min(surfaceDistance, fog.medium.w);

@@ -9,41 +9,22 @@
 
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 
-#ifdef COLOR_RGBA32F
-layout(binding = kFogBindingColorIn, rgba32f) uniform readonly image2D colorIn;
-layout(binding = kFogBindingColorOut, rgba32f) uniform writeonly image2D colorOut;
-const float kColorMax = 3.402823466e38;
-#else
-layout(binding = kFogBindingColorIn, rgba16f) uniform readonly image2D colorIn;
-layout(binding = kFogBindingColorOut, rgba16f) uniform writeonly image2D colorOut;
-const float kColorMax = 65504.0;  // largest finite half: never write Inf
-#endif
-layout(binding = kFogBindingDepth) uniform sampler2D depthTexture;
-layout(binding = kFogBindingShadowMap) uniform sampler2D shadowMap;
-layout(binding = kFogBindingNoise) uniform sampler3D noiseTexture;
-layout(binding = kFogBindingUniforms, std140) uniform Uniforms { FogUniforms fog; };
+#include "fog/bindings.glsl"
 
 #include "common/ign.glsl"
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
 #include "fog/medium.glsl"
-
-const float kInfinity = 1.0 / 0.0;
+#include "fog/ray.glsl"
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, fog.extent.xy))) return;
     vec4 color = imageLoad(colorIn, ivec2(pixel));
 
-    // Camera-relative position of the surface; no geometry: direction only, distance infinite.
-    float depth = texelFetch(depthTexture, ivec2(pixel), 0).r;
-    bool noGeometry = depth == fog.march.y;
-    vec2 ndc = (vec2(pixel) + 0.5) / vec2(fog.extent.xy) * 2.0 - 1.0;
-    vec4 p = fog.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);
-    vec3 surface = p.xyz / p.w;
-    float surfaceDistance = length(surface);
-    vec3 dir = surface / surfaceDistance;
-    if (noGeometry) surfaceDistance = kInfinity;
+    FogRay ray = fogRay(pixel);
+    vec3 dir = ray.dir;
+    float surfaceDistance = ray.surfaceDistance;
 
     float maxDistance = fog.medium.w;
     float marchDistance = min(surfaceDistance, maxDistance);

@@ -1,0 +1,22 @@
+// The view ray of a pixel, camera-relative (docs/effects/fog.md, "Ray"). Expects `fog` and `depthTexture`.
+#ifndef POSTFX_FOG_RAY_GLSL
+#define POSTFX_FOG_RAY_GLSL
+
+const float kInfinity = 1.0 / 0.0;
+
+struct FogRay {
+    vec3 dir;               // unit direction from the camera
+    float surfaceDistance;  // to the reconstructed surface [m]; infinite for pixels with no geometry
+};
+
+FogRay fogRay(uvec2 pixel) {
+    float depth = texelFetch(depthTexture, ivec2(pixel), 0).r;
+    bool noGeometry = depth == fog.march.y;
+    vec2 ndc = (vec2(pixel) + 0.5) / vec2(fog.extent.xy) * 2.0 - 1.0;
+    vec4 p = fog.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);
+    vec3 surface = p.xyz / p.w;
+    float distance = length(surface);
+    return FogRay(surface / distance, noGeometry ? kInfinity : distance);
+}
+
+#endif
