@@ -182,19 +182,10 @@ bool BaselinePass::Impl::create(uint32_t framesInFlight, std::string& error) {
 
     const std::array<std::span<const uint32_t>, 2> spirv = {spirv::bench_shaders_seed_as_written_comp,
                                                             spirv::bench_shaders_seed_fixed_riemann_comp};
-    for (size_t i = 0; i < spirv.size(); ++i) {
-        VkShaderModule module = VK_NULL_HANDLE;
-        if (!demo::createShaderModule(device, spirv[i], module, error)) return false;
-        VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-        cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-        cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-        cpci.stage.module = module;
-        cpci.stage.pName = "main";
-        cpci.layout = pipelineLayout;
-        const VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipelines[i]);
-        vkDestroyShaderModule(device, module, nullptr);
-        if (!demo::vkCheck(r, "vkCreateComputePipelines (baseline)", error)) return false;
-    }
+    for (size_t i = 0; i < spirv.size(); ++i)
+        if (!demo::createComputePipeline(device, spirv[i], pipelineLayout,
+                                         "vkCreateComputePipelines (baseline)", pipelines[i], error))
+            return false;
 
     // The samplers of postfx's fog pass: nearest/clamp for texelFetch of depth and shadow map,
     // linear/repeat for the noise.

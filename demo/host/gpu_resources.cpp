@@ -113,6 +113,21 @@ bool createShaderModule(VkDevice device, std::span<const uint32_t> spirv, VkShad
     return vkCheck(vkCreateShaderModule(device, &ci, nullptr, &out), "vkCreateShaderModule", error);
 }
 
+bool createComputePipeline(VkDevice device, std::span<const uint32_t> spirv, VkPipelineLayout layout,
+                           const char* what, VkPipeline& out, std::string& error) {
+    VkShaderModule module = VK_NULL_HANDLE;
+    if (!createShaderModule(device, spirv, module, error)) return false;
+    VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    ci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    ci.stage.module = module;
+    ci.stage.pName = "main";
+    ci.layout = layout;
+    const VkResult r = vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &ci, nullptr, &out);
+    vkDestroyShaderModule(device, module, nullptr);
+    return vkCheck(r, what, error);
+}
+
 void imageBarrier(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout oldLayout,
                   VkImageLayout newLayout, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
                   VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {

@@ -36,6 +36,9 @@ void destroyImage(VkDevice device, GpuImage& image);
 
 bool createShaderModule(VkDevice device, std::span<const uint32_t> spirv, VkShaderModule& out,
                         std::string& error);
+// A compute pipeline of `spirv` (entry point main) with `layout`; `what` names it in errors.
+bool createComputePipeline(VkDevice device, std::span<const uint32_t> spirv, VkPipelineLayout layout,
+                           const char* what, VkPipeline& out, std::string& error);
 
 // One image memory barrier (whole image, the image's aspect).
 void imageBarrier(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout oldLayout,

@@ -92,18 +92,8 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
     plci.pSetLayouts = &setLayout_;
     if (!vkCheck(vkCreatePipelineLayout(device, &plci, nullptr, &layout_), "vkCreatePipelineLayout", error))
         return false;
-    VkShaderModule module = VK_NULL_HANDLE;
-    if (!createShaderModule(device, spirv::lighting_comp, module, error)) return false;
-    VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    cpci.stage.module = module;
-    cpci.stage.pName = "main";
-    cpci.layout = layout_;
-    const bool ok = vkCheck(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline_),
-                            "vkCreateComputePipelines", error);
-    vkDestroyShaderModule(device, module, nullptr);
-    return ok;
+    return createComputePipeline(device, spirv::lighting_comp, layout_, "vkCreateComputePipelines (lighting)",
+                                 pipeline_, error);
 }
 
 void LightingPass::destroy(VkDevice device) {

@@ -91,18 +91,8 @@ bool TonemapPass::create(const VulkanHost& host, const ImageInfo& hdr, std::stri
     plci.pPushConstantRanges = &range;
     if (!vkCheck(vkCreatePipelineLayout(device_, &plci, nullptr, &layout_), "vkCreatePipelineLayout", error))
         return false;
-    VkShaderModule module = VK_NULL_HANDLE;
-    if (!createShaderModule(device_, spirv::tonemap_comp, module, error)) return false;
-    VkComputePipelineCreateInfo cpci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    cpci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    cpci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    cpci.stage.module = module;
-    cpci.stage.pName = "main";
-    cpci.layout = layout_;
-    const bool ok = vkCheck(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &cpci, nullptr, &pipeline_),
-                            "vkCreateComputePipelines (tonemap)", error);
-    vkDestroyShaderModule(device_, module, nullptr);
-    return ok;
+    return createComputePipeline(device_, spirv::tonemap_comp, layout_, "vkCreateComputePipelines (tonemap)",
+                                 pipeline_, error);
 }
 
 void TonemapPass::destroy() {
