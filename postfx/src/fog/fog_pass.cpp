@@ -5,8 +5,10 @@
 #include "fog/fog_uniforms.h"
 #include "postfx_spirv.h"
 
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -212,10 +214,14 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
     const bool inPlace = !frame.output.present();
     constexpr VkAccessFlags kRead = VK_ACCESS_SHADER_READ_BIT, kWrite = VK_ACCESS_SHADER_WRITE_BIT;
     const HostImageUse depth = useHostImage(frame.depth, false, kRead);
-    std::vector<HostImageUse> uses = {useHostImage(frame.color, true, inPlace ? kRead | kWrite : kRead),
-                                      depth};
-    if (!inPlace) uses.push_back(useHostImage(frame.output, true, kWrite));
-    if (shadowOn) uses.push_back(useHostImage(frame.shadowMap.image, false, kRead));
+    // At most color, depth, output and shadow map: a fixed array, no allocation per frame.
+    std::array<HostImageUse, 4> useStorage{};
+    size_t useCount = 0;
+    useStorage[useCount++] = useHostImage(frame.color, true, inPlace ? kRead | kWrite : kRead);
+    useStorage[useCount++] = depth;
+    if (!inPlace) useStorage[useCount++] = useHostImage(frame.output, true, kWrite);
+    if (shadowOn) useStorage[useCount++] = useHostImage(frame.shadowMap.image, false, kRead);
+    const std::span<const HostImageUse> uses(useStorage.data(), useCount);
     const VkImageLayout shadowLayout =
         shadowOn ? uses.back().layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 
