@@ -10,7 +10,6 @@
 #include <cstring>
 #include <span>
 #include <string>
-#include <vector>
 
 namespace postfx::fog {
 namespace {
