@@ -17,13 +17,19 @@ const char* methodName(Method method);  // "postfx-fog", "seed-as-written", "see
 struct Setting {
     std::string scene;  // scene file name without .json
     Method method = Method::Ours;
-    uint32_t steps = 0;         // Ours: fog.steps (march steps per pixel)
-    float stepLength = 0.0f;    // baselines: fixed step length [m]
-    bool jitter = false;        // fog.jitter: IGN start offset per pixel and frame (the baselines too)
-    uint32_t noiseSize = 0;     // fog.noise.textureSize; 0: noise off
-    uint32_t shadowKernel = 0;  // fog.shadowKernel when the frame has a shadow map, else 0
+    uint32_t steps = 0;            // Ours: fog.steps (march steps per pixel)
+    float stepLength = 0.0f;       // baselines: fixed step length [m]
+    bool jitter = false;           // fog.jitter: IGN start offset per pixel and frame (the baselines too)
+    float resolutionScale = 1.0f;  // Ours: fog.resolution_scale (the baselines march every pixel)
+    uint32_t noiseSize = 0;        // fog.noise.textureSize; 0: noise off
+    uint32_t shadowKernel = 0;     // fog.shadowKernel when the frame has a shadow map, else 0
+    // Ours: a quality preset as the host selects it ("low", ...; the fields above are what it set);
+    // empty for the sweep's own points. Presets are not on the Pareto fronts (they repeat sweep points).
+    std::string preset;
 
-    std::string label() const;  // "steps=64 jitter=on noise=128", "step=0.5m jitter=on noise=128"
+    // "steps=64 jitter=on scale=0.5 noise=128", "preset=medium (steps=16 ...)", "step=0.5m jitter=on
+    // noise=128"
+    std::string label() const;
 };
 
 // Error of linear radiance against the CPU reference (tests/common/image_compare).

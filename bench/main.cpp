@@ -1,7 +1,8 @@
 // postfx-bench: the accuracy–cost benchmark of postfx's fog (docs/accuracy-cost/README.md). For each
-// scene it sweeps the fog's quality knobs (steps, jitter, noise texture size), times every postfx pass
-// with timestamp queries and measures the error of 1, 8 and 16 jittered frames against the CPU
-// reference; the two baselines (bench/baseline.h) run on the same frames. Writes results.csv,
+// scene it sweeps the fog's quality knobs (steps, jitter, resolution scale, noise texture size) and
+// measures the quality presets, times every postfx pass with timestamp queries and measures the error
+// of 1, 8 and 16 jittered frames against the CPU reference; the two baselines (bench/baseline.h) run
+// on the same frames. Writes results.csv,
 // results.md and plot.svg.
 #include "progress.h"
 #include "report.h"
@@ -9,6 +10,8 @@
 #include "stats.h"
 
 #include "scene/scene.h"
+
+#include <postfx/fog.h>
 
 #include <algorithm>
 #include <charconv>
@@ -26,8 +29,8 @@ namespace {
 const char* kUsage =
     "usage: postfx-bench [--scenes a,b,...] [--scene-dir DIR] [--size WxH] [--warmup W] [--warmup-ms T]\n"
     "                    [--frames N] [--reference-steps N] [--error-stride K] [--texture-rate GTEXELS]\n"
-    "                    [--out DIR] [--steps a,b,...] [--noise-sizes a,b,...] [--step-lengths a,b,...]\n"
-    "                    [--no-baselines] [--quick] [--validation]\n"
+    "                    [--out DIR] [--steps a,b,...] [--scales a,b,...] [--noise-sizes a,b,...]\n"
+    "                    [--step-lengths a,b,...] [--no-presets] [--no-baselines] [--quick] [--validation]\n"
     "Sweeps postfx's fog quality knobs on the named scenes, times each postfx pass on the GPU and measures\n"
     "the error against the CPU reference; the seed's shader (as written, and fixed but still a Riemann sum)\n"
     "runs on the same frames. Writes results.csv, results.md and plot.svg to --out.\n"
@@ -45,8 +48,10 @@ const char* kUsage =
     "  --texture-rate G       the device's texture rate [GTexel/s] for the texture-fetch floor [none]\n"
     "  --out DIR              output folder [docs/accuracy-cost]\n"
     "  --steps LIST           postfx fog steps [4,8,16,32,64,128,256; quick: 4,16,64]\n"
+    "  --scales LIST          postfx fog resolution scales, each in [0.25, 1] [1,0.5,0.25; quick: 1,0.5]\n"
     "  --noise-sizes LIST     noise texture edges for scenes with noise [32,64,128; quick: 32]\n"
     "  --step-lengths LIST    baseline step lengths [m] [4,2,1,0.5,0.25,0.125; quick: 4,1]\n"
+    "  --no-presets           do not measure the quality presets (low, medium, high, ultra) as such\n"
     "  --no-baselines         postfx's fog only\n"
     "  --validation           Vulkan validation layer with synchronization validation; any message fails\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
@@ -64,9 +69,11 @@ struct Args {
     double textureRate = NAN;
     std::string out = "docs/accuracy-cost";
     std::vector<uint32_t> steps = {4, 8, 16, 32, 64, 128, 256};
+    std::vector<float> scales = {1.0f, 0.5f, 0.25f};
     std::vector<uint32_t> noiseSizes = {32, 64, 128};
     std::vector<float> stepLengths = {4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.125f};
     bool baselines = true;
+    bool presets = true;
 };
 
 bool parseUint(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
@@ -103,7 +110,7 @@ Args parseArgs(int argc, char** argv) {
     Args args;
     bool quick = false;
     bool sizeGiven = false, warmupGiven = false, warmupMsGiven = false, framesGiven = false, refGiven = false,
-         stepsGiven = false, noiseGiven = false, lengthsGiven = false;
+         stepsGiven = false, noiseGiven = false, lengthsGiven = false, scalesGiven = false;
     auto value = [&](int& i) -> std::string {
         if (i + 1 >= argc) throw UsageError{std::string(argv[i]) + " needs a value"};
         return argv[++i];
@@ -172,6 +179,18 @@ Args parseArgs(int argc, char** argv) {
         } else if (a == "--steps") {
             args.steps = uintList(a, value(i), 1, 4096);
             stepsGiven = true;
+        } else if (a == "--scales") {
+            const std::string text = value(i);
+            args.scales.clear();
+            for (const std::string& item : splitList(text)) {
+                double v = 0;
+                if (!parseDouble(item, v) || v < 0.25 || v > 1.0)
+                    throw UsageError{"--scales '" + text +
+                                     "': expected numbers in [0.25, 1], comma-separated"};
+                args.scales.push_back(float(v));
+            }
+            if (args.scales.empty()) throw UsageError{"--scales is empty"};
+            scalesGiven = true;
         } else if (a == "--noise-sizes") {
             args.noiseSizes = uintList(a, value(i), 16, 256);
             for (uint32_t n : args.noiseSizes)
@@ -190,6 +209,8 @@ Args parseArgs(int argc, char** argv) {
             }
             if (args.stepLengths.empty()) throw UsageError{"--step-lengths is empty"};
             lengthsGiven = true;
+        } else if (a == "--no-presets") {
+            args.presets = false;
         } else if (a == "--no-baselines") {
             args.baselines = false;
         } else if (a == "--quick") {
@@ -208,11 +229,13 @@ Args parseArgs(int argc, char** argv) {
         if (!refGiven) args.referenceSteps = 1024;
         if (!stepsGiven) args.steps = {4, 16, 64};
         if (!noiseGiven) args.noiseSizes = {32};
+        if (!scalesGiven) args.scales = {1.0f, 0.5f};
         if (!lengthsGiven) args.stepLengths = {4.0f, 1.0f};
     }
     if (args.errorStride == 0) args.errorStride = std::max(1u, args.runner.width / 480);
     std::sort(args.steps.begin(), args.steps.end());
     std::sort(args.noiseSizes.begin(), args.noiseSizes.end());
+    std::sort(args.scales.begin(), args.scales.end(), std::greater<>());
     if (args.sceneDir.empty()) {
         args.sceneDir =
             std::filesystem::is_directory("demo/scenes") ? "demo/scenes" : POSTFX_SOURCE_DIR "/demo/scenes";
@@ -298,10 +321,15 @@ int run(const Args& args, const std::string& command) {
     info.textureRate = args.textureRate;
     info.baselines = baselines;
 
+    constexpr std::pair<postfx::FogQuality, const char*> kPresets[] = {{postfx::FogQuality::Low, "low"},
+                                                                       {postfx::FogQuality::Medium, "medium"},
+                                                                       {postfx::FogQuality::High, "high"},
+                                                                       {postfx::FogQuality::Ultra, "ultra"}};
+    const size_t presets = args.presets ? std::size(kPresets) : 0;
     size_t total = 0;
     for (const ScenePlan& p : plans)
-        total +=
-            p.noiseSizes.size() * (1 + args.steps.size() * 2) + (baselines ? 2 * args.stepLengths.size() : 0);
+        total += p.noiseSizes.size() * (1 + args.steps.size() * 2 * args.scales.size()) + presets +
+                 (baselines ? 2 * args.stepLengths.size() : 0);
     std::fprintf(stderr, "postfx-bench on %s, %ux%u, %zu measurements\n", info.device.c_str(), info.width,
                  info.height, total);
 
@@ -337,11 +365,18 @@ int run(const Args& args, const std::string& command) {
                         return false;
                     }
                     if (setting.method == bench::Method::Ours) {
-                        // Texture fetches per pixel: per step one noise fetch (noise on) and kernel² shadow
-                        // texels (shadow map present); one depth fetch and one color load per pixel.
+                        // Texture fetches per output pixel (docs/accuracy-cost/README.md): per march step
+                        // one noise fetch (noise on) and kernel² shadow texels (shadow map present), one
+                        // depth fetch per marched ray; per pixel one color load, and when the march is
+                        // reduced to w×h: the pixel's depth and its 2×2 texels' scatter and depth.
                         const double perStep =
                             (noise ? 1.0 : 0.0) + double(setting.shadowKernel) * double(setting.shadowKernel);
-                        r.fetchesPerPixel = double(setting.steps) * perStep + 2.0;
+                        const glm::uvec2 march =
+                            postfx::fogMarchExtent(info.width, info.height, setting.resolutionScale);
+                        const double marched = double(march.x) * march.y / (double(info.width) * info.height);
+                        const bool reduced = march.x != info.width || march.y != info.height;
+                        r.fetchesPerPixel =
+                            marched * (double(setting.steps) * perStep + 1.0) + 1.0 + (reduced ? 9.0 : 0.0);
                         r.floorMs = r.fetchesPerPixel * double(info.width) * double(info.height) /
                                     (args.textureRate * 1e9) * 1e3;  // NaN without a rate
                     }
@@ -353,16 +388,35 @@ int run(const Args& args, const std::string& command) {
                 base.scene = p.name;
                 base.noiseSize = noise;
                 base.shadowKernel = shadows ? scene.fog.shadowKernel : 0;
-                for (bool jitter : {true, false}) {
-                    for (uint32_t steps : args.steps) {
-                        demo::Scene s = scene;
-                        s.fog.steps = steps;
-                        s.fog.jitter = jitter;
-                        bench::Setting setting = base;
-                        setting.steps = steps;
-                        setting.jitter = jitter;
-                        if (!measure(s, setting)) return fail(error);
+                // The sweep varies steps, jitter and scale from the scene's own settings (no preset).
+                for (float scale : args.scales) {
+                    for (bool jitter : {true, false}) {
+                        for (uint32_t steps : args.steps) {
+                            demo::Scene s = scene;
+                            s.fog.quality = postfx::FogQuality::Custom;
+                            s.fog.steps = steps;
+                            s.fog.jitter = jitter;
+                            s.fog.resolutionScale = scale;
+                            bench::Setting setting = base;
+                            setting.steps = steps;
+                            setting.jitter = jitter;
+                            setting.resolutionScale = scale;
+                            if (!measure(s, setting)) return fail(error);
+                        }
                     }
+                }
+                // The presets as a host selects them (FogSettings::quality), at the scene's noise size.
+                for (size_t k = 0; k < presets && noise == p.baselineNoise; ++k) {
+                    demo::Scene s = scene;
+                    s.fog.quality = kPresets[k].first;
+                    const postfx::FogSettings applied = postfx::applyFogQuality(s.fog, s.fog.quality);
+                    bench::Setting setting = base;
+                    setting.preset = kPresets[k].second;
+                    setting.steps = applied.steps;
+                    setting.jitter = applied.jitter;
+                    setting.resolutionScale = applied.resolutionScale;
+                    setting.shadowKernel = shadows ? applied.shadowKernel : 0;
+                    if (!measure(s, setting)) return fail(error);
                 }
                 if (baselines && noise == p.baselineNoise) {
                     for (bench::Method method :

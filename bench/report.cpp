@@ -52,7 +52,8 @@ std::string warmupText(const RunInfo& info) {
            formatNumber(info.warmupMs, 4) + " ms per setting";
 }
 
-// Ours first (noise size, jitter on before off, steps), then each baseline by decreasing step length.
+// Ours first (sweep by noise size, scale, jitter on before off, steps; then the presets), then each
+// baseline by decreasing step length.
 std::vector<const Result*> sortedRows(const std::vector<Result>& results, const std::string& scene) {
     std::vector<const Result*> rows;
     for (const Result& r : results)
@@ -60,7 +61,10 @@ std::vector<const Result*> sortedRows(const std::vector<Result>& results, const 
     std::stable_sort(rows.begin(), rows.end(), [](const Result* a, const Result* b) {
         const Setting &x = a->setting, &y = b->setting;
         if (x.method != y.method) return int(x.method) < int(y.method);
+        if (x.preset.empty() != y.preset.empty()) return x.preset.empty();
+        if (!x.preset.empty()) return false;  // presets in the order measured (low .. ultra)
         if (x.noiseSize != y.noiseSize) return x.noiseSize < y.noiseSize;
+        if (x.resolutionScale != y.resolutionScale) return x.resolutionScale > y.resolutionScale;
         if (x.jitter != y.jitter) return x.jitter;
         if (x.steps != y.steps) return x.steps < y.steps;
         return x.stepLength > y.stepLength;
@@ -111,14 +115,13 @@ std::vector<std::string> sceneOrder(const std::vector<Result>& results) {
 
 const std::vector<std::string>& csvColumns() {
     static const std::vector<std::string> columns = {
-        "scene",      "method",          "steps",         "step_length_m",
-        "jitter",     "noise_size",      "shadow_kernel", "width",
-        "height",     "warmup",          "frames",        "gpu_ms_median",
-        "gpu_ms_p10", "gpu_ms_p90",      "gpu_ms_min",    "gpu_ms_max",
-        "pass_ms",    "rel_rmse_1",      "max_abs_1",     "frac_off_1",
-        "rel_rmse_8", "max_abs_8",       "frac_off_8",    "rel_rmse_16",
-        "max_abs_16", "frac_off_16",     "non_finite",    "fetches_per_pixel",
-        "floor_ms",   "time_over_floor", "pareto_1",      "pareto_16",
+        "scene",       "method",           "preset",      "steps",         "step_length_m",
+        "jitter",      "resolution_scale", "noise_size",  "shadow_kernel", "width",
+        "height",      "warmup",           "frames",      "gpu_ms_median", "gpu_ms_p10",
+        "gpu_ms_p90",  "gpu_ms_min",       "gpu_ms_max",  "pass_ms",       "rel_rmse_1",
+        "max_abs_1",   "frac_off_1",       "rel_rmse_8",  "max_abs_8",     "frac_off_8",
+        "rel_rmse_16", "max_abs_16",       "frac_off_16", "non_finite",    "fetches_per_pixel",
+        "floor_ms",    "time_over_floor",  "pareto_1",    "pareto_16",
     };
     return columns;
 }
@@ -148,9 +151,11 @@ bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Re
         std::vector<std::string> row = {
             s.scene,
             methodName(s.method),
+            s.preset,
             ours ? std::to_string(s.steps) : "",
             ours ? "" : formatNumber(s.stepLength, 6),
             s.jitter ? "1" : "0",
+            ours ? formatNumber(s.resolutionScale, 4) : "",
             std::to_string(s.noiseSize),
             std::to_string(s.shadowKernel),
             std::to_string(info.width),
@@ -175,8 +180,9 @@ bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Re
         row.push_back(formatNumber(r.fetchesPerPixel, 6));
         row.push_back(formatNumber(r.floorMs, 6));
         row.push_back(formatNumber(r.timing.median / r.floorMs, 4));
-        row.push_back(ours ? (r.pareto1 ? "1" : "0") : "");
-        row.push_back(ours ? (r.pareto16 ? "1" : "0") : "");
+        const bool swept = ours && s.preset.empty();
+        row.push_back(swept ? (r.pareto1 ? "1" : "0") : "");
+        row.push_back(swept ? (r.pareto16 ? "1" : "0") : "");
         for (size_t i = 0; i < row.size(); ++i)
             out << (i ? "," : "") << row[i];
         out << "\n";
@@ -228,7 +234,9 @@ bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vect
                 << percent(r->error[0].fractionOff) << " | " << orDash(formatNumber(r->fetchesPerPixel, 5))
                 << " | " << orDash(formatNumber(r->floorMs, 3)) << " | "
                 << orDash(formatNumber(r->timing.median / r->floorMs, 3)) << " | "
-                << (ours ? std::string(r->pareto1 ? "●" : "") + " / " + (r->pareto16 ? "●" : "") : "")
+                << (ours && r->setting.preset.empty()
+                        ? std::string(r->pareto1 ? "●" : "") + " / " + (r->pareto16 ? "●" : "")
+                        : "")
                 << " |\n";
         }
         out << "\n";
@@ -261,7 +269,7 @@ bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vect
             }
             const Result* best = nullptr;
             for (const Result* r : rows) {
-                if (r->setting.method != Method::Ours ||
+                if (r->setting.method != Method::Ours || !r->setting.preset.empty() ||
                     !(r->error[0].relativeRmse <= b->error[0].relativeRmse) ||
                     !std::isfinite(r->timing.median))
                     continue;

@@ -21,10 +21,12 @@ const char* methodName(Method method) {
 }
 
 std::string Setting::label() const {
-    char text[128];
+    char text[160];
     std::string noise = noiseSize ? " noise=" + std::to_string(noiseSize) : std::string();
     if (method == Method::Ours) {
-        std::snprintf(text, sizeof text, "steps=%u jitter=%s%s", steps, jitter ? "on" : "off", noise.c_str());
+        std::snprintf(text, sizeof text, "steps=%u jitter=%s scale=%g%s", steps, jitter ? "on" : "off",
+                      double(resolutionScale), noise.c_str());
+        if (!preset.empty()) return "preset=" + preset + " (" + text + ")";
     } else {
         std::snprintf(text, sizeof text, "step=%gm jitter=%s%s", double(stepLength), jitter ? "on" : "off",
                       noise.c_str());
@@ -80,7 +82,8 @@ void markParetoFronts(std::vector<Result>& results) {
     for (const std::string& scene : scenes) {
         std::vector<size_t> ours;
         for (size_t i = 0; i < results.size(); ++i)
-            if (results[i].setting.scene == scene && results[i].setting.method == Method::Ours)
+            if (results[i].setting.scene == scene && results[i].setting.method == Method::Ours &&
+                results[i].setting.preset.empty())
                 ours.push_back(i);
         std::vector<double> time, error1, error16;
         for (size_t i : ours) {

@@ -53,6 +53,11 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         error = "renderReference: stride must be at least 1";
         return false;
     }
+    if (stride > 1 && scene.fog.enabled && scene.fog.resolutionScale < 1.0f) {
+        // The subsampled image's pixels are not the reduced march's: only full resolution subsamples.
+        error = "renderReference: stride " + std::to_string(stride) + " needs fog.resolution_scale 1";
+        return false;
+    }
     if (!setScene(scene, error)) return false;  // also waits for the device to be idle
 
     const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns

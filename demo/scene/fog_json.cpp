@@ -9,11 +9,23 @@ namespace {
 using namespace json_read;
 
 constexpr const char* kEffectsKeys[] = {"fog"};
-constexpr const char* kFogKeys[] = {
-    "enabled",     "density",       "albedo",        "anisotropy", "height_falloff",
-    "base_height", "max_distance",  "steps",         "jitter",     "transmittance_cutoff",
-    "self_shadow", "analytic_tail", "shadow_kernel", "quality",    "auto_budget_ms",
-    "noise"};
+constexpr const char* kFogKeys[] = {"enabled",
+                                    "density",
+                                    "albedo",
+                                    "anisotropy",
+                                    "height_falloff",
+                                    "base_height",
+                                    "max_distance",
+                                    "steps",
+                                    "jitter",
+                                    "resolution_scale",
+                                    "transmittance_cutoff",
+                                    "self_shadow",
+                                    "analytic_tail",
+                                    "shadow_kernel",
+                                    "quality",
+                                    "auto_budget_ms",
+                                    "noise"};
 constexpr const char* kNoiseKeys[] = {"enabled",   "texture_size", "seed", "tiling",
                                       "threshold", "multiplier",   "wind"};
 
@@ -68,6 +80,8 @@ postfx::FogSettings readFog(const json& j, const std::string& path) {
     if (const json* v = find(j, "max_distance")) s.maxDistance = readNumber(*v, child(path, "max_distance"));
     if (const json* v = find(j, "steps")) s.steps = readUint32(*v, child(path, "steps"));
     if (const json* v = find(j, "jitter")) s.jitter = readBool(*v, child(path, "jitter"));
+    if (const json* v = find(j, "resolution_scale"))
+        s.resolutionScale = readNumber(*v, child(path, "resolution_scale"));
     if (const json* v = find(j, "transmittance_cutoff"))
         s.transmittanceCutoff = readNumber(*v, child(path, "transmittance_cutoff"));
     if (const json* v = find(j, "self_shadow")) s.selfShadow = readBool(*v, child(path, "self_shadow"));
@@ -119,6 +133,7 @@ json effectsToJson(const postfx::FogSettings& s) {
                       {"max_distance", number(s.maxDistance)},
                       {"steps", s.steps},
                       {"jitter", s.jitter},
+                      {"resolution_scale", number(s.resolutionScale)},
                       {"transmittance_cutoff", number(s.transmittanceCutoff)},
                       {"self_shadow", s.selfShadow},
                       {"analytic_tail", s.analyticTail},

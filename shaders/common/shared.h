@@ -26,6 +26,12 @@ PFX_CONST(uint, kFogBindingDepth, 2);      // sampler2D: host depth (texelFetch)
 PFX_CONST(uint, kFogBindingShadowMap, 3);  // sampler2D: host shadow map (texelFetch)
 PFX_CONST(uint, kFogBindingNoise, 4);      // sampler3D: noise, trilinear, repeat
 PFX_CONST(uint, kFogBindingUniforms, 5);   // uniform buffer: FogUniforms
+// storage image: the reduced-resolution march (rgb: in-scattered radiance, a: transmittance), postfx's own
+PFX_CONST(uint, kFogBindingScatter, 6);
+
+// Upsampling of a reduced-resolution march (shaders/fog/upsample.comp): a low-resolution sample
+// is used for a pixel when its surface distance is within this fraction of the pixel's [1].
+PFX_CONST(float, kFogUpsampleDistanceTolerance, 0.1f);
 
 PFX_CONST(uint, kNoiseGroupSize, 4);       // noise generation workgroup: kNoiseGroupSize³ texels
 PFX_CONST(uint, kNoiseBindingTexture, 0);  // storage image: the r8 noise texture being generated
@@ -53,6 +59,7 @@ struct FogUniforms {
     vec4 shadow;          // x: depth bias, y: kernel radius in texels (kernel = 2r+1)
     vec4 march;           // x: transmittance cutoff, y: depth of "no geometry" (0 or 1)
     uvec4 extent;         // x, y: output size [px], z: steps, w: frame index (mod 2^32)
+    uvec4 scatterExtent;  // x, y: size of the march [px]: extent.xy · resolution scale, rounded up
     uvec4 flags;          // x: kFogFlag* bits
 };
 
@@ -71,7 +78,7 @@ struct NoisePush {  // push constants of noise_generate.comp
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(FogUniforms) == 2 * 64 + 12 * 16, "FogUniforms must match std140");
+static_assert(sizeof(FogUniforms) == 2 * 64 + 13 * 16, "FogUniforms must match std140");
 static_assert(sizeof(NoisePush) == 16, "NoisePush must match the shader's push constants");
 }  // namespace postfx::gpu
 #endif

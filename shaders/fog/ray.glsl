@@ -19,4 +19,10 @@ FogRay fogRay(uvec2 pixel) {
     return FogRay(surface / distance, noGeometry ? kInfinity : distance);
 }
 
+// Reduced resolution: the full-resolution pixel whose ray the scatter texel `texel` marches, the one
+// nearest the texel's centre: floor((texel + 0.5) · extent / scatterExtent), in exact integers.
+uvec2 fogSourcePixel(uvec2 texel) {
+    return min((2u * texel + 1u) * fog.extent.xy / (2u * fog.scatterExtent.xy), fog.extent.xy - 1u);
+}
+
 #endif

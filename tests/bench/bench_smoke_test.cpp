@@ -1,7 +1,9 @@
 // Smoke test of postfx-bench on lavapipe: runs `postfx-bench --quick` (64x36, steps 4/16/64, jitter on and
-// off, both baselines at two step lengths) under the validation layer and checks what it writes: the
-// CSV's columns, one row per setting, finite errors, error falling as postfx's steps grow; the markdown
-// and SVG exist. GPU times are not checked (lavapipe's mean nothing).
+// off, resolution scale 1 and 0.5, the four presets, both baselines at two step lengths) under the
+// validation layer and checks what it writes: the CSV's columns, one row per setting, finite errors,
+// error falling as postfx's steps grow and from preset low to ultra, a preset giving exactly the errors
+// of the sweep point with its knobs; the markdown and SVG exist. GPU times are not checked (lavapipe's
+// mean nothing).
 // usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
 #include <gtest/gtest.h>
 
@@ -12,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace {
@@ -19,18 +22,19 @@ namespace {
 std::string gBench, gSceneDir, gOut;
 
 const std::vector<std::string> kColumns = {
-    "scene",      "method",          "steps",         "step_length_m",
-    "jitter",     "noise_size",      "shadow_kernel", "width",
-    "height",     "warmup",          "frames",        "gpu_ms_median",
-    "gpu_ms_p10", "gpu_ms_p90",      "gpu_ms_min",    "gpu_ms_max",
-    "pass_ms",    "rel_rmse_1",      "max_abs_1",     "frac_off_1",
-    "rel_rmse_8", "max_abs_8",       "frac_off_8",    "rel_rmse_16",
-    "max_abs_16", "frac_off_16",     "non_finite",    "fetches_per_pixel",
-    "floor_ms",   "time_over_floor", "pareto_1",      "pareto_16",
+    "scene",       "method",           "preset",      "steps",         "step_length_m",
+    "jitter",      "resolution_scale", "noise_size",  "shadow_kernel", "width",
+    "height",      "warmup",           "frames",      "gpu_ms_median", "gpu_ms_p10",
+    "gpu_ms_p90",  "gpu_ms_min",       "gpu_ms_max",  "pass_ms",       "rel_rmse_1",
+    "max_abs_1",   "frac_off_1",       "rel_rmse_8",  "max_abs_8",     "frac_off_8",
+    "rel_rmse_16", "max_abs_16",       "frac_off_16", "non_finite",    "fetches_per_pixel",
+    "floor_ms",    "time_over_floor",  "pareto_1",    "pareto_16",
 };
 const std::vector<std::string> kScenes = {"fog_default", "fog_shadowed"};
-const std::vector<int> kSteps = {4, 16, 64};  // --quick
-const size_t kStepLengths = 2;                // --quick: 4 m, 1 m
+const std::vector<int> kSteps = {4, 16, 64};            // --quick
+const std::vector<std::string> kScales = {"1", "0.5"};  // --quick
+const std::vector<std::string> kPresets = {"low", "medium", "high", "ultra"};
+const size_t kStepLengths = 2;  // --quick: 4 m, 1 m
 
 std::vector<std::string> splitCsv(const std::string& line) {
     std::vector<std::string> out;
@@ -113,11 +117,25 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
     }
     EXPECT_TRUE(sawDevice);
     ASSERT_EQ(header, kColumns);
-    // Per scene: steps × jitter on/off (one noise size in --quick) + 2 baselines × 2 step lengths.
-    ASSERT_EQ(rows.size(), kScenes.size() * (kSteps.size() * 2 + 2 * kStepLengths));
+    // Per scene: steps × jitter on/off × scales (one noise size in --quick) + the presets + 2 baselines ×
+    // 2 step lengths.
+    ASSERT_EQ(rows.size(),
+              kScenes.size() * (kSteps.size() * 2 * kScales.size() + kPresets.size() + 2 * kStepLengths));
 
-    // (scene, jitter) -> rel_rmse_1 and rel_rmse_16 by steps, postfx-fog only.
-    std::map<std::pair<std::string, std::string>, std::map<int, std::pair<double, double>>> sweep;
+    // (scene, jitter, scale) -> rel_rmse_1 and rel_rmse_16 by steps, postfx-fog's sweep only.
+    std::map<std::tuple<std::string, std::string, std::string>, std::map<int, std::pair<double, double>>>
+        sweep;
+    // (scene, steps, jitter, scale, kernel) -> "rel_rmse_1 rel_rmse_8 rel_rmse_16" of the sweep; scene ->
+    // the presets' rows in order.
+    auto knobs = [](const std::map<std::string, std::string>& row) {
+        return row.at("scene") + " steps=" + row.at("steps") + " jitter=" + row.at("jitter") +
+               " scale=" + row.at("resolution_scale") + " kernel=" + row.at("shadow_kernel");
+    };
+    auto errors = [](const std::map<std::string, std::string>& row) {
+        return row.at("rel_rmse_1") + " " + row.at("rel_rmse_8") + " " + row.at("rel_rmse_16");
+    };
+    std::map<std::string, std::string> sweepErrors;
+    std::map<std::string, std::vector<std::map<std::string, std::string>>> presetRows;
     std::map<std::string, int> methods;
     std::map<std::string, int> paretoPoints;
     for (const auto& row : rows) {
@@ -137,31 +155,59 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
         if (row.at("method") == "postfx-fog") {
             EXPECT_TRUE(std::isfinite(number(row.at("fetches_per_pixel")))) << what;
             EXPECT_TRUE(row.at("floor_ms").empty()) << what << ": no --texture-rate, no floor";
+            if (!row.at("preset").empty()) {
+                presetRows[row.at("scene")].push_back(row);
+                EXPECT_EQ(row.at("pareto_1"), "") << what << ": presets are not on the fronts";
+                continue;
+            }
             const int steps = int(number(row.at("steps")));
-            sweep[{row.at("scene"), row.at("jitter")}][steps] = {number(row.at("rel_rmse_1")),
-                                                                 number(row.at("rel_rmse_16"))};
+            sweep[{row.at("scene"), row.at("jitter"), row.at("resolution_scale")}][steps] = {
+                number(row.at("rel_rmse_1")), number(row.at("rel_rmse_16"))};
+            sweepErrors[knobs(row)] = errors(row);
             paretoPoints[row.at("scene")] += row.at("pareto_1") == "1";
         } else {
             EXPECT_TRUE(std::isfinite(number(row.at("step_length_m")))) << what;
         }
     }
-    EXPECT_EQ(methods["postfx-fog"], int(kScenes.size() * kSteps.size() * 2));
+    EXPECT_EQ(methods["postfx-fog"],
+              int(kScenes.size() * (kSteps.size() * 2 * kScales.size() + kPresets.size())));
     EXPECT_EQ(methods["seed-as-written"], int(kScenes.size() * kStepLengths));
     EXPECT_EQ(methods["seed-fixed-riemann"], int(kScenes.size() * kStepLengths));
 
-    // More steps, lower error: the one-frame error and the 16-frame mean's.
-    ASSERT_EQ(sweep.size(), kScenes.size() * 2);
+    // More steps, lower error: at full resolution the one-frame error and the 16-frame mean's at every
+    // step; at reduced resolution (whose upsampling error does not fall with steps) from fewest to most.
+    ASSERT_EQ(sweep.size(), kScenes.size() * 2 * kScales.size());
     for (const auto& [key, bySteps] : sweep) {
-        ASSERT_EQ(bySteps.size(), kSteps.size()) << key.first << " jitter=" << key.second;
-        for (size_t i = 1; i < kSteps.size(); ++i) {
-            const auto& fewer = bySteps.at(kSteps[i - 1]);
+        const auto& [scene, jitter, scale] = key;
+        const std::string what = scene + " jitter=" + jitter + " scale=" + scale;
+        ASSERT_EQ(bySteps.size(), kSteps.size()) << what;
+        const bool full = scale == "1";
+        for (size_t i = full ? 1 : kSteps.size() - 1; i < kSteps.size(); ++i) {
+            const auto& fewer = bySteps.at(kSteps[full ? i - 1 : 0]);
             const auto& more = bySteps.at(kSteps[i]);
-            EXPECT_LT(more.first, fewer.first) << key.first << " jitter=" << key.second << ": steps "
-                                               << kSteps[i] << " vs " << kSteps[i - 1] << " (one frame)";
-            EXPECT_LT(more.second, fewer.second) << key.first << " jitter=" << key.second << ": steps "
-                                                 << kSteps[i] << " vs " << kSteps[i - 1] << " (16 frames)";
+            EXPECT_LT(more.first, fewer.first) << what << ": steps " << kSteps[i] << " (one frame)";
+            EXPECT_LT(more.second, fewer.second) << what << ": steps " << kSteps[i] << " (16 frames)";
         }
     }
+    // The presets, as a host selects them: error falls from low to ultra; where a preset's knobs are a
+    // sweep point, the frames are the same, so are the errors.
+    int matchedSweep = 0;
+    for (const std::string& scene : kScenes) {
+        const auto& presets = presetRows[scene];
+        ASSERT_EQ(presets.size(), kPresets.size()) << scene;
+        for (size_t i = 0; i < presets.size(); ++i) {
+            EXPECT_EQ(presets[i].at("preset"), kPresets[i]) << scene;
+            if (i > 0) {
+                EXPECT_LT(number(presets[i].at("rel_rmse_1")), number(presets[i - 1].at("rel_rmse_1")))
+                    << scene << " preset " << kPresets[i];
+            }
+            const auto it = sweepErrors.find(knobs(presets[i]));
+            if (it == sweepErrors.end()) continue;
+            EXPECT_EQ(errors(presets[i]), it->second) << knobs(presets[i]) << " preset " << kPresets[i];
+            ++matchedSweep;
+        }
+    }
+    EXPECT_GE(matchedSweep, 1) << "no preset shares its knobs with a sweep point";
     for (const std::string& scene : kScenes) {
         // A front exists whenever the device has timestamps (lavapipe has).
         EXPECT_GE(paretoPoints[scene], 1) << scene;

@@ -122,6 +122,30 @@ TEST_F(FogApiTest, HomogeneousMediumMatchesClosedFormRgba32fFarFromOrigin) {
     expectClosedForm(frame, im, out, 1e-4);
 }
 
+// Reduced resolution: with g = 0 the light is the same in every direction, so (L, T) depend only on the
+// distance, and the depth-aware upsample must reproduce the closed form at every pixel: wall pixels blend
+// only wall texels, sky pixels only sky texels, including at the wall's edge and at non-integer ratios.
+TEST_F(FogApiTest, ReducedResolutionMatchesClosedFormEverywhere) {
+    for (VkFormat format : {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT}) {
+        for (float scale : {0.5f, 0.3f, 0.25f}) {
+            postfx::FrameInfo frame = homogeneousFrame({0.0, 1.5, 0.0});
+            frame.fog.anisotropy = 0.0f;
+            frame.fog.resolutionScale = scale;
+            FogHarnessImages im = images(frame, format);
+            im.separateOutput = scale == 0.3f;
+            std::vector<float> color, output;
+            FogHarness harness(*host, gpu);
+            const postfx::Status s =
+                harness.run(*context, im, frame, color, im.separateOutput ? &output : nullptr);
+            ASSERT_TRUE(s.ok()) << s.message;
+            SCOPED_TRACE("scale " + std::to_string(scale) +
+                         (format == VK_FORMAT_R16G16B16A16_SFLOAT ? " rgba16f" : " rgba32f"));
+            expectClosedForm(frame, im, im.separateOutput ? output : color,
+                             format == VK_FORMAT_R16G16B16A16_SFLOAT ? 2e-3 : 1e-4);
+        }
+    }
+}
+
 TEST_F(FogApiTest, SeparateOutputLeavesColorUntouched) {
     const postfx::FrameInfo frame = homogeneousFrame({0.0, 1.5, 0.0});
     FogHarnessImages im = images(frame, VK_FORMAT_R16G16B16A16_SFLOAT);
@@ -159,6 +183,8 @@ TEST_F(FogApiTest, RejectsBadSettingsNamingTheField) {
         {"fog.albedo", [](postfx::FrameInfo& f) { f.fog.albedo.g = NAN; }},
         {"fog.anisotropy", [](postfx::FrameInfo& f) { f.fog.anisotropy = 1.5f; }},
         {"fog.steps", [](postfx::FrameInfo& f) { f.fog.steps = 0; }},
+        {"fog.resolution_scale", [](postfx::FrameInfo& f) { f.fog.resolutionScale = 0.2f; }},
+        {"fog.resolution_scale", [](postfx::FrameInfo& f) { f.fog.resolutionScale = NAN; }},
         {"fog.max_distance", [](postfx::FrameInfo& f) { f.fog.maxDistance = 0.0f; }},
         {"fog.shadow_kernel", [](postfx::FrameInfo& f) { f.fog.shadowKernel = 4; }},
         {"fog.noise.tiling",

@@ -19,7 +19,7 @@ struct ReferenceCase {
     double maxConvergedRmse;  // GPU at 512 steps without jitter vs reference: the same model
 };
 
-class FogReferenceTest : public GpuTest, public ::testing::WithParamInterface<ReferenceCase> {
+class FogSceneTest : public GpuTest {
 protected:
     demo::Scene load(const std::string& name) {
         demo::Scene scene;
@@ -41,6 +41,8 @@ protected:
         return o;
     }
 };
+
+class FogReferenceTest : public FogSceneTest, public ::testing::WithParamInterface<ReferenceCase> {};
 
 TEST_P(FogReferenceTest, GpuMatchesReference) {
     const ReferenceCase& c = GetParam();
@@ -91,7 +93,62 @@ INSTANTIATE_TEST_SUITE_P(Scenes, FogReferenceTest,
                              return name;
                          });
 
-class FogImageTest : public FogReferenceTest {};
+// Resolution scale: the reduced march and its depth-aware upsample against the CPU reference doing the
+// same (tight: the same model), and against the full-resolution reference (what the scale costs).
+struct ScaleCase {
+    const char* scene;
+    float scale;
+    double maxUpsampledRmse;  // GPU at `scale` vs the full-resolution reference, 512 steps, no jitter
+    double maxFractionOff;    // ... of pixels off by more than 5% there
+};
+
+class FogResolutionScaleTest : public FogSceneTest, public ::testing::WithParamInterface<ScaleCase> {};
+
+TEST_P(FogResolutionScaleTest, MatchesReferenceAtTheSameScale) {
+    const ScaleCase& c = GetParam();
+    demo::Scene scene = load(c.scene);
+    scene.fog.steps = 512;
+    scene.fog.jitter = false;
+    demo::RenderOptions o = small();
+    o.width = 96;
+    o.height = 54;
+    auto r = renderer(o);
+    ASSERT_TRUE(r);
+    std::string error;
+    demo::ImageF full;
+    ASSERT_TRUE(r->renderReference(scene, full, error, 1024)) << error;
+    scene.fog.resolutionScale = c.scale;
+    demo::ImageF gpu, reference;
+    ASSERT_TRUE(r->render(scene, gpu, error)) << error;
+    ASSERT_TRUE(r->renderReference(scene, reference, error, 1024)) << error;
+
+    const ImageStats same = compareImages(gpu.rgba, reference.rgba, gpu.width, gpu.height, 0.01, 1.0);
+    const ImageStats cost = compareImages(gpu.rgba, full.rgba, gpu.width, gpu.height, 0.05, 1.0);
+    std::printf("[ fog ] %s at scale %g: GPU vs reference at that scale %s\n", c.scene, c.scale,
+                same.summary().c_str());
+    std::printf("[ fog ] %s at scale %g: GPU vs full-resolution reference %s\n", c.scene, c.scale,
+                cost.summary().c_str());
+    EXPECT_EQ(same.nonFinite, 0u);
+    // Float against double may pick another texel where a distance sits on the tolerance: a few pixels.
+    EXPECT_LT(same.relativeRmse, 0.002) << same.summary();
+    EXPECT_LT(same.fractionOff, 0.01) << same.summary();
+    EXPECT_LT(cost.relativeRmse, c.maxUpsampledRmse) << cost.summary();
+    EXPECT_LT(cost.fractionOff, c.maxFractionOff) << cost.summary();
+}
+
+// Thresholds: measured on lavapipe at 96x54 with about 2x margin (edges are many pixels at this size).
+INSTANTIATE_TEST_SUITE_P(Scales, FogResolutionScaleTest,
+                         ::testing::Values(ScaleCase{"fog_default.json", 0.5f, 0.05, 0.1},
+                                           ScaleCase{"fog_shadowed.json", 0.5f, 0.08, 0.25},
+                                           ScaleCase{"fog_default.json", 0.25f, 0.1, 0.2},
+                                           ScaleCase{"fog_noise.json", 0.7f, 0.05, 0.1}),
+                         [](const auto& info) {
+                             std::string name = info.param.scene;
+                             name = name.substr(4, name.find('.') - 4);
+                             return name + "_" + std::to_string(int(info.param.scale * 100));
+                         });
+
+class FogImageTest : public FogSceneTest {};
 
 // Standard and reversed Z, finite and infinite far plane: the same fogged image.
 TEST_F(FogImageTest, DepthConventionsGiveTheSameImage) {

@@ -57,6 +57,7 @@ json everyKey() {
       "max_distance": 321,
       "steps": 77,
       "jitter": false,
+      "resolution_scale": 0.5,
       "transmittance_cutoff": 0.01,
       "self_shadow": true,
       "analytic_tail": false,
@@ -154,6 +155,7 @@ TEST(SceneFog, EveryKeyIsRead) {
     EXPECT_EQ(f.maxDistance, 321.0f);
     EXPECT_EQ(f.steps, 77u);
     EXPECT_FALSE(f.jitter);
+    EXPECT_EQ(f.resolutionScale, 0.5f);
     EXPECT_EQ(f.transmittanceCutoff, 0.01f);
     EXPECT_TRUE(f.selfShadow);
     EXPECT_FALSE(f.analyticTail);
@@ -306,7 +308,8 @@ std::vector<FogRejection> fogRejections() {
         {"UnknownEffect", {{"clouds", json::object()}}, "effects.clouds: unknown key (expected fog)"},
         {"UnknownFogKey", fog("/colour", {1, 1, 1}),
          "effects.fog.colour: unknown key (expected enabled, density, albedo, anisotropy, height_falloff, "
-         "base_height, max_distance, steps, jitter, transmittance_cutoff, self_shadow, analytic_tail, "
+         "base_height, max_distance, steps, jitter, resolution_scale, transmittance_cutoff, self_shadow, "
+         "analytic_tail, "
          "shadow_kernel, quality, auto_budget_ms or noise)"},
         {"UnknownNoiseKey", fog("/noise/octaves", 4),
          "effects.fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, threshold, "
@@ -344,6 +347,10 @@ std::vector<FogRejection> fogRejections() {
         {"AutoBudgetNegative", fog("/auto_budget_ms", -1), "effects.fog.auto_budget_ms: -1 must be > 0"},
         {"StepsZero", fog("/steps", 0), "effects.fog.steps: 0 is outside [1, 4096]"},
         {"StepsTooMany", fog("/steps", 4097), "effects.fog.steps: 4097 is outside [1, 4096]"},
+        {"ResolutionScaleTooSmall", fog("/resolution_scale", 0.2),
+         "effects.fog.resolution_scale: 0.2 is outside [0.25, 1]"},
+        {"ResolutionScaleAboveOne", fog("/resolution_scale", 2),
+         "effects.fog.resolution_scale: 2 is outside [0.25, 1]"},
         {"CutoffOne", fog("/transmittance_cutoff", 1), "effects.fog.transmittance_cutoff: "},
         {"KernelEven", fog("/shadow_kernel", 4), "effects.fog.shadow_kernel: 4 must be odd, in [1, 7]"},
         {"KernelNine", fog("/shadow_kernel", 9), "effects.fog.shadow_kernel: "},

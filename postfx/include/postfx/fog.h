@@ -66,6 +66,10 @@ struct FogSettings {
     float maxDistance = 200.0f;
     uint32_t steps = 32;  // march steps per pixel, independent of distance; in [1, 4096]
     bool jitter = true;   // offset the march start by interleaved gradient noise of pixel and frame
+    // March at this fraction of the color image's width and height (rounded up), then composite at full
+    // resolution with a depth-aware upsample (docs/effects/fog.md#resolution-scale) [1]; in [0.25, 1].
+    // 1: every pixel marches its own ray in one pass; 0.5 marches a quarter of the rays.
+    float resolutionScale = 1.0f;
     // Stop marching once the transmittance is below this [1]; in [0, 1). 0 = never stop early.
     float transmittanceCutoff = 0.001f;
     // Sun visibility also includes the fog's own transmittance toward the sun (closed form of the
@@ -105,6 +109,10 @@ struct CameraInput {
 // Checks every setting against its documented range; InvalidArgument naming the first bad field with
 // its scene-file name ("fog.noise.tiling: 0 must be > 0"). Context::record runs the same check.
 Status validateFogSettings(const FogSettings& settings);
+
+// Size of the fog's march for a color image of `width`×`height` at `resolutionScale` [px]:
+// max(1, ceil(size · scale)) per axis; the image's own size at scale 1 (then the fog runs one pass).
+glm::uvec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale);
 
 // `settings` with steps, jitter and shadowKernel set by preset `quality`; Custom and Auto: unchanged.
 FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality);

@@ -102,28 +102,61 @@ Status FogPass::validate(const FrameInfo& frame) {
     return Status::success();
 }
 
-core::ComputePipeline& FogPass::pipelineFor(VkFormat colorFormat) {
-    return colorFormat == VK_FORMAT_R32G32B32A32_SFLOAT ? raymarch32_ : raymarch16_;
-}
-
-Status FogPass::createResources(const core::Gpu& gpu, const ContextCreateInfo& info) {
-    gpu_ = &gpu;
-    const core::Binding bindings[] = {
+Status FogPass::pipeline(Kernel kernel, VkFormat colorFormat, core::ComputePipeline*& out) {
+    const bool rgba32 = colorFormat == VK_FORMAT_R32G32B32A32_SFLOAT;
+    core::ComputePipeline& p = pipelines_[int(kernel)][rgba32 ? 1 : 0];
+    out = &p;
+    if (p.valid()) return Status::success();
+    // One layout for all three kernels; each reads the bindings it needs.
+    static constexpr core::Binding kBindings[] = {
         {gpu::kFogBindingColorIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
         {gpu::kFogBindingColorOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
         {gpu::kFogBindingDepth, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
         {gpu::kFogBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
         {gpu::kFogBindingNoise, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
         {gpu::kFogBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+        {gpu::kFogBindingScatter, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
     };
     core::ComputePipelineDesc desc;
-    desc.name = "fog.raymarch";
-    desc.bindings = bindings;
-    desc.spirv = spirv::fog_raymarch_comp;
-    if (Status s = raymarch16_.create(gpu, desc); !s) return s;
-    desc.spirv = spirv::fog_raymarch_comp_COLOR_RGBA32F;
-    if (Status s = raymarch32_.create(gpu, desc); !s) return s;
+    desc.bindings = kBindings;
+    switch (kernel) {
+        case Kernel::Raymarch:
+            desc.name = "fog.raymarch";
+            desc.spirv = rgba32 ? spirv::fog_raymarch_comp_COLOR_RGBA32F : spirv::fog_raymarch_comp;
+            break;
+        case Kernel::RaymarchReduced:
+            desc.name = "fog.raymarch";
+            desc.spirv =
+                rgba32 ? spirv::fog_raymarch_reduced_comp_COLOR_RGBA32F : spirv::fog_raymarch_reduced_comp;
+            break;
+        case Kernel::Upsample:
+            desc.name = "fog.upsample";
+            desc.spirv = rgba32 ? spirv::fog_upsample_comp_COLOR_RGBA32F : spirv::fog_upsample_comp;
+            break;
+    }
+    return p.create(*gpu_, desc);
+}
 
+Status FogPass::prepareScatter(core::Retirement& retirement, uint64_t frameIndex, VkFormat format,
+                               VkExtent3D extent) {
+    if (scatter_) {
+        const core::ImageDesc& d = scatter_->desc();
+        if (d.format == format && d.extent.width == extent.width && d.extent.height == extent.height)
+            return Status::success();
+        retirement.retire(frameIndex, std::move(scatter_));  // frames in flight may still read it
+    }
+    core::ImageDesc desc;
+    desc.format = format;
+    desc.extent = extent;
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    auto image = std::make_unique<core::GpuImage>();
+    if (Status s = image->create(*gpu_, desc, "fog.scatter"); !s) return s;
+    scatter_ = std::move(image);
+    return Status::success();
+}
+
+Status FogPass::createResources(const core::Gpu& gpu, const ContextCreateInfo& info) {
+    gpu_ = &gpu;
     const VkDeviceSize align =
         std::max<VkDeviceSize>(gpu.properties.limits.minUniformBufferOffsetAlignment, 16);
     uniformStride_ = (sizeof(gpu::FogUniforms) + align - 1) / align * align;
@@ -164,7 +197,7 @@ Status FogPass::createResources(const core::Gpu& gpu, const ContextCreateInfo& i
 
 Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core::DescriptorArena& arena,
                        core::PassTimer& timer, core::Retirement& retirement, const FrameInfo& frame) {
-    if (!raymarch16_.valid()) {
+    if (!uniforms_.handle()) {
         if (Status s = createResources(gpu, info); !s) {
             release();
             return s;
@@ -207,9 +240,30 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
     const VkDeviceSize offset = uniformStride_ * (frame.frameIndex % slots_);
     std::memcpy(static_cast<char*>(uniforms_.mapped()) + offset, &u, sizeof u);
 
-    core::ComputePipeline& pipeline = pipelineFor(frame.color.format);
-    VkDescriptorSet set = VK_NULL_HANDLE;
-    if (Status s = arena.allocate(pipeline.setLayout(), set); !s) return s;
+    // Resolution scale: march into scatter_ at the reduced size, then upsample; at full size, one pass.
+    const VkExtent2D full = frame.color.extent;
+    const glm::uvec2 marchSize = fogMarchExtent(full.width, full.height, frame.fog.resolutionScale);
+    const bool reduced = marchSize.x != full.width || marchSize.y != full.height;
+    core::ComputePipeline* march = nullptr;
+    core::ComputePipeline* upsample = nullptr;
+    if (Status s = pipeline(reduced ? Kernel::RaymarchReduced : Kernel::Raymarch, frame.color.format, march);
+        !s)
+        return s;
+    if (reduced) {
+        if (Status s = pipeline(Kernel::Upsample, frame.color.format, upsample); !s) return s;
+        if (Status s = prepareScatter(retirement, frame.frameIndex, frame.color.format,
+                                      {marchSize.x, marchSize.y, 1});
+            !s)
+            return s;
+    } else if (scatter_) {
+        retirement.retire(frame.frameIndex, std::move(scatter_));
+    }
+    VkDescriptorSet marchSet = VK_NULL_HANDLE, upsampleSet = VK_NULL_HANDLE;
+    if (Status s = arena.allocate(march->setLayout(), marchSet); !s) return s;
+    if (reduced) {
+        if (Status s = arena.allocate(upsample->setLayout(), upsampleSet); !s) return s;
+    }
+
     const bool inPlace = !frame.output.present();
     constexpr VkAccessFlags kRead = VK_ACCESS_SHADER_READ_BIT, kWrite = VK_ACCESS_SHADER_WRITE_BIT;
     const HostImageUse depth = useHostImage(frame.depth, false, kRead);
@@ -228,24 +282,50 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
         !noiseOn ? noNoise_.view() : (generatedNoise ? noise_->view() : noise.hostTexture);
     const VkImageLayout noiseLayout =
         noiseOn && !generatedNoise ? noise.hostTextureLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    core::DescriptorWrites(set)
-        .storageImage(gpu::kFogBindingColorIn, frame.color.view)
-        .storageImage(gpu::kFogBindingColorOut, inPlace ? frame.color.view : frame.output.view)
-        .sampledImage(gpu::kFogBindingDepth, frame.depth.view, depth.layout, nearestClamp_)
-        .sampledImage(gpu::kFogBindingShadowMap, shadowOn ? frame.shadowMap.image.view : noShadowMap_.view(),
-                      shadowLayout, nearestClamp_)
-        .sampledImage(gpu::kFogBindingNoise, noiseView, noiseLayout, linearRepeat_)
-        .uniformBuffer(gpu::kFogBindingUniforms, uniforms_.handle(), offset, sizeof(gpu::FogUniforms))
-        .apply(gpu);
+    for (VkDescriptorSet set : {marchSet, upsampleSet}) {
+        if (!set) continue;
+        core::DescriptorWrites writes(set);
+        writes.storageImage(gpu::kFogBindingColorIn, frame.color.view)
+            .storageImage(gpu::kFogBindingColorOut, inPlace ? frame.color.view : frame.output.view)
+            .sampledImage(gpu::kFogBindingDepth, frame.depth.view, depth.layout, nearestClamp_)
+            .sampledImage(gpu::kFogBindingShadowMap,
+                          shadowOn ? frame.shadowMap.image.view : noShadowMap_.view(), shadowLayout,
+                          nearestClamp_)
+            .sampledImage(gpu::kFogBindingNoise, noiseView, noiseLayout, linearRepeat_)
+            .uniformBuffer(gpu::kFogBindingUniforms, uniforms_.handle(), offset, sizeof(gpu::FogUniforms));
+        if (reduced) writes.storageImage(gpu::kFogBindingScatter, scatter_->view());
+        writes.apply(gpu);
+    }
 
     for (const HostImageUse& use : uses)
         core::transition(gpu, cmd, use.acquire);
-    timer.beginPass(cmd, "fog.raymarch");
-    pipeline.bind(cmd, set, nullptr);
     const uint32_t groups = gpu::kFogGroupSize;
-    gpu.fn.vkCmdDispatch(cmd, (frame.color.extent.width + groups - 1) / groups,
-                         (frame.color.extent.height + groups - 1) / groups, 1);
-    timer.endPass(cmd);
+    auto dispatch = [&](const core::ComputePipeline& p, VkDescriptorSet set, uint32_t w, uint32_t h) {
+        timer.beginPass(cmd, p.name());
+        p.bind(cmd, set, nullptr);
+        gpu.fn.vkCmdDispatch(cmd, (w + groups - 1) / groups, (h + groups - 1) / groups, 1);
+        timer.endPass(cmd);
+    };
+    if (!reduced) {
+        dispatch(*march, marchSet, full.width, full.height);
+    } else {
+        // The scatter image's old contents are discarded; its last reads (the previous frame's upsample)
+        // finish before the march writes it.
+        core::ImageTransition discard;
+        discard.image = scatter_->handle();
+        discard.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+        discard.dstAccess = kWrite;
+        core::transition(gpu, cmd, discard);
+        dispatch(*march, marchSet, marchSize.x, marchSize.y);
+        core::ImageTransition written;
+        written.image = scatter_->handle();
+        written.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
+        written.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+        written.srcAccess = kWrite;
+        written.dstAccess = kRead;
+        core::transition(gpu, cmd, written);
+        dispatch(*upsample, upsampleSet, full.width, full.height);
+    }
     for (const HostImageUse& use : uses)
         core::transition(gpu, cmd, use.release);
     return Status::success();
@@ -253,8 +333,10 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
 
 void FogPass::release() {
     noise_.reset();
-    raymarch16_.reset();
-    raymarch32_.reset();
+    scatter_.reset();
+    for (auto& kernel : pipelines_)
+        for (core::ComputePipeline& p : kernel)
+            p.reset();
     uniforms_.reset();
     noShadowMap_.reset();
     noNoise_.reset();

@@ -33,13 +33,23 @@ public:
 
     const FogNoise* noise() const { return noise_.get(); }  // null when no noise texture is held
 
+    // The reduced-resolution march's image (rgb L, a T), or null at resolution scale 1.
+    const core::GpuImage* scatterImage() const { return scatter_.get(); }
+
 private:
+    // The fog's compute shaders; each has an RGBA16F and an RGBA32F variant (the color format).
+    enum class Kernel { Raymarch, RaymarchReduced, Upsample };
     Status createResources(const core::Gpu& gpu, const ContextCreateInfo& info);
-    core::ComputePipeline& pipelineFor(VkFormat colorFormat);
+    // The pipeline of `kernel` for `colorFormat`, created on first use.
+    Status pipeline(Kernel kernel, VkFormat colorFormat, core::ComputePipeline*& out);
+    // Makes sure scatter_ is a `format` image of `extent`; an old one goes to `retirement`.
+    Status prepareScatter(core::Retirement& retirement, uint64_t frameIndex, VkFormat format,
+                          VkExtent3D extent);
 
     const core::Gpu* gpu_ = nullptr;
-    core::ComputePipeline raymarch16_, raymarch32_;
-    core::GpuBuffer uniforms_;  // one aligned slot per frame in flight, persistently mapped
+    core::ComputePipeline pipelines_[3][2];    // [Kernel][0: RGBA16F, 1: RGBA32F]
+    std::unique_ptr<core::GpuImage> scatter_;  // reduced resolution only
+    core::GpuBuffer uniforms_;                 // one aligned slot per frame in flight, persistently mapped
     VkDeviceSize uniformStride_ = 0;
     uint32_t slots_ = 0;
     VkSampler nearestClamp_ = VK_NULL_HANDLE;

@@ -1,5 +1,6 @@
 // Double-precision CPU reference of the ray-marched fog: the model of docs/effects/fog.md evaluated
 // with a converged midpoint march (no jitter, no early cutoff), multithreaded over rows.
+#include "common/shared.h"
 #include "fog/fog_settings.h"
 #include "fog/reference_model.h"
 
@@ -209,16 +210,97 @@ void tailContribution(const Model& m, const Ray& ray, const dvec3& sunPhase, Rad
     addSegment(m, sunPhase * sun + m.ambient, tau, r);
 }
 
-// Composite: out.rgb = color.rgb · T + L, out.a = color.a.
-void shadePixel(const Model& m, uint32_t i, uint32_t j, const float* color, float depth, float* out) {
-    const Ray ray = pixelRay(m, i, j, depth);
+// (L, T) along a pixel's ray: the march, then the analytic tail beyond max_distance.
+Radiance scatterAlong(const Model& m, const Ray& ray) {
     const dvec3 sunPhase = m.sunIlluminance * henyeyGreenstein(glm::dot(ray.d, m.toSun), m.g);  // E·p(cosθ)
     Radiance r;
     marchPixel(m, ray, sunPhase, r);
     if (m.analyticTail && ray.distance > m.maxDistance) tailContribution(m, ray, sunPhase, r);
+    return r;
+}
+
+// Composite: out.rgb = color.rgb · T + L, out.a = color.a.
+void composite(const Radiance& r, const float* color, float* out) {
     for (int c = 0; c < 3; ++c)
         out[c] = float(double(color[c]) * r.T + r.L[c]);
     out[3] = color[3];
+}
+
+// Runs `rowTask(j)` for rows 0..rows-1 on `threads` threads (0: all hardware threads). Rows are
+// independent, so the result does not depend on how they are shared out.
+template <class RowTask>
+void forEachRow(uint32_t rows, uint32_t threads, const RowTask& rowTask) {
+    std::atomic<uint32_t> nextRow{0};
+    auto work = [&] {
+        for (uint32_t j; (j = nextRow.fetch_add(1)) < rows;)
+            rowTask(j);
+    };
+    threads = std::min(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), rows);
+    std::vector<std::thread> pool;
+    try {
+        pool.reserve(threads - 1);
+        for (uint32_t t = 1; t < threads; ++t)
+            pool.emplace_back(work);
+    } catch (const std::exception&) {
+        // Fewer threads than asked for: the ones running (and this one) take all rows.
+    }
+    work();
+    for (std::thread& t : pool)
+        t.join();
+}
+
+// Reduced resolution, as the GPU does it (raymarch_reduced.comp, upsample.comp): texel (i, j) of the
+// w×h march marches the ray of pixel min(floor((i + 0.5)·W/w), W - 1) (same in y); each pixel blends the
+// 2×2 texels around its centre whose surface distance is within kFogUpsampleDistanceTolerance of its
+// own, with bilinear weights, or takes the texel of nearest distance when none is.
+struct ReducedMarch {
+    uint32_t w = 0, h = 0;
+    std::vector<Radiance> scatter;  // w·h
+    std::vector<double> distance;   // w·h: D_s of the texel's ray
+};
+
+uint32_t sourcePixel(uint32_t texel, uint32_t size, uint32_t marchSize) {
+    return std::min(uint32_t((2ull * texel + 1) * size / (2ull * marchSize)), size - 1);
+}
+
+// Texel t0 left of (or at) the pixel centre, the next one t1 (clamped), and the weight f of t1.
+void footprint(uint32_t pixel, uint32_t size, uint32_t marchSize, uint32_t& t0, uint32_t& t1, double& f) {
+    const uint64_t num = (2ull * pixel + 1) * marchSize, den = 2ull * size;
+    const uint64_t shifted = num >= size ? num - size : 0;
+    t0 = uint32_t(std::min<uint64_t>(shifted / den, marchSize - 1));
+    f = num >= size ? std::min(double(shifted - t0 * den) / double(den), 1.0) : 0.0;
+    t1 = std::min(t0 + 1, marchSize - 1);
+}
+
+double distanceDifference(double a, double b) {
+    return std::isinf(a) && std::isinf(b) ? 0.0 : std::abs(a - b);
+}
+
+Radiance upsample(const ReducedMarch& r, const Model& m, uint32_t i, uint32_t j, double distance) {
+    uint32_t x0, x1, y0, y1;
+    double fx, fy;
+    footprint(i, m.width, r.w, x0, x1, fx);
+    footprint(j, m.height, r.h, y0, y1, fy);
+    const size_t texels[4] = {size_t(y0) * r.w + x0, size_t(y0) * r.w + x1, size_t(y1) * r.w + x0,
+                              size_t(y1) * r.w + x1};
+    const double bilinear[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+    Radiance sum{dvec3(0.0), 0.0}, nearest;
+    double weight = 0.0, nearestDifference = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4; ++k) {
+        const Radiance& s = r.scatter[texels[k]];
+        const double difference = distanceDifference(r.distance[texels[k]], distance);
+        if (!std::isinf(difference) && difference <= double(gpu::kFogUpsampleDistanceTolerance) * distance) {
+            sum.L += bilinear[k] * s.L;
+            sum.T += bilinear[k] * s.T;
+            weight += bilinear[k];
+        }
+        if (k == 0 || difference < nearestDifference) {
+            nearest = s;
+            nearestDifference = difference;
+        }
+    }
+    if (weight <= 0.0) return nearest;
+    return {sum.L / weight, sum.T / weight};
 }
 
 }  // namespace
@@ -233,29 +315,40 @@ Status renderFog(const FogInputs& in, std::vector<float>& out) {
     }
     if (in.settings.enabled) {
         const Model m = makeModel(in);
-        // Pixels are independent, so the output does not depend on how rows are shared out.
-        std::atomic<uint32_t> nextRow{0};
-        auto work = [&] {
-            for (uint32_t j; (j = nextRow.fetch_add(1)) < m.height;) {
+        const glm::uvec2 size = fogMarchExtent(m.width, m.height, in.settings.resolutionScale);
+        if (size.x == m.width && size.y == m.height) {
+            forEachRow(m.height, in.threads, [&](uint32_t j) {
                 for (uint32_t i = 0; i < m.width; ++i) {
                     const size_t p = size_t(j) * m.width + i;
-                    shadePixel(m, i, j, &in.color[p * 4], in.depth[p], &result[p * 4]);
+                    composite(scatterAlong(m, pixelRay(m, i, j, in.depth[p])), &in.color[p * 4],
+                              &result[p * 4]);
                 }
+            });
+        } else {
+            ReducedMarch r{size.x, size.y, {}, {}};
+            try {
+                r.scatter.resize(size_t(r.w) * r.h);
+                r.distance.resize(size_t(r.w) * r.h);
+            } catch (const std::bad_alloc&) {
+                return {Result::OutOfMemory, "reference::renderFog: cannot allocate the reduced march"};
             }
-        };
-        uint32_t threads = in.threads ? in.threads : std::max(1u, std::thread::hardware_concurrency());
-        threads = std::min(threads, m.height);
-        std::vector<std::thread> pool;
-        try {
-            pool.reserve(threads - 1);
-            for (uint32_t t = 1; t < threads; ++t)
-                pool.emplace_back(work);
-        } catch (const std::exception&) {
-            // Fewer threads than asked for: the ones running (and this one) take all rows.
+            forEachRow(r.h, in.threads, [&](uint32_t j) {
+                const uint32_t y = sourcePixel(j, m.height, r.h);
+                for (uint32_t i = 0; i < r.w; ++i) {
+                    const uint32_t x = sourcePixel(i, m.width, r.w);
+                    const Ray ray = pixelRay(m, x, y, in.depth[size_t(y) * m.width + x]);
+                    r.scatter[size_t(j) * r.w + i] = scatterAlong(m, ray);
+                    r.distance[size_t(j) * r.w + i] = ray.distance;
+                }
+            });
+            forEachRow(m.height, in.threads, [&](uint32_t j) {
+                for (uint32_t i = 0; i < m.width; ++i) {
+                    const size_t p = size_t(j) * m.width + i;
+                    const double distance = pixelRay(m, i, j, in.depth[p]).distance;
+                    composite(upsample(r, m, i, j, distance), &in.color[p * 4], &result[p * 4]);
+                }
+            });
         }
-        work();
-        for (std::thread& t : pool)
-            t.join();
     }
     out.swap(result);
     return Status::success();

@@ -60,6 +60,7 @@ Status validateSettings(const FogSettings& s) {
     if (s.maxDistance <= 0.0f) return bad("fog.max_distance", "must be > 0");
     if (s.steps < 1 || s.steps > 4096)
         return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
+    if (Status r = inRange("fog.resolution_scale", s.resolutionScale, 0.25, 1.0); !r) return r;
     if (!std::isfinite(s.autoBudgetMs)) return bad("fog.auto_budget_ms", "is not finite");
     if (s.autoBudgetMs <= 0.0f) return bad("fog.auto_budget_ms", text(s.autoBudgetMs) + " must be > 0");
     if (Status r = inRange("fog.transmittance_cutoff", s.transmittanceCutoff, 0.0, 1.0); !r) return r;
@@ -95,6 +96,12 @@ Status validateLighting(const SunInput& sun, const glm::vec3& ambient) {
 namespace postfx {
 Status validateFogSettings(const FogSettings& settings) {
     return fog::validateSettings(settings);
+}
+
+glm::uvec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale) {
+    const double scale = std::isnan(resolutionScale) ? 1.0 : std::clamp(double(resolutionScale), 0.0, 1.0);
+    auto axis = [&](uint32_t size) { return std::max(1u, uint32_t(std::ceil(double(size) * scale))); };
+    return {axis(width), axis(height)};
 }
 
 FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality) {

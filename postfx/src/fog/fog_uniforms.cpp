@@ -41,6 +41,8 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
     u.march = glm::vec4(s.transmittanceCutoff, noGeometryDepth, 0.0f, 0.0f);
     u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, s.steps,
                           uint32_t(frame.frameIndex & 0xffffffffu));
+    u.scatterExtent = glm::uvec4(
+        fogMarchExtent(frame.color.extent.width, frame.color.extent.height, s.resolutionScale), 0u, 0u);
     uint32_t flags = 0;
     if (s.jitter) flags |= gpu::kFogFlagJitter;
     if (noiseEnabled) flags |= gpu::kFogFlagNoise;

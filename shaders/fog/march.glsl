@@ -1,0 +1,67 @@
+// The fog's march along one view ray (docs/effects/fog.md, "March"): a fixed number of steps from the
+// camera to the surface (or max distance), each step integrated in closed form, then the analytic
+// height-fog tail. Expects the fog's bindings and medium.glsl, ray.glsl, ign.glsl, integrate.glsl and
+// phase.glsl included.
+#ifndef POSTFX_FOG_MARCH_GLSL
+#define POSTFX_FOG_MARCH_GLSL
+
+struct FogScatter {
+    vec3 inScattered;     // L: radiance scattered toward the camera along the ray
+    float transmittance;  // T: from the camera to the surface (or through the whole medium)
+};
+
+// `jitterPixel` seeds the interleaved-gradient-noise start offset: the pixel of the image the march
+// writes, so that neighbours get decorrelated offsets at any resolution.
+FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
+    vec3 dir = ray.dir;
+    float surfaceDistance = ray.surfaceDistance;
+
+    float maxDistance = fog.medium.w;
+    float marchDistance = min(surfaceDistance, maxDistance);
+    uint steps = fog.extent.z;
+    float dt = marchDistance / float(steps);
+    float offset = fogFlag(kFogFlagJitter) ? interleavedGradientNoise(jitterPixel, fog.extent.w) : 0.5;
+
+    vec3 albedo = fog.albedo.rgb;
+    vec3 sunPhase = fog.sunIlluminance.rgb * henyeyGreenstein(dot(dir, fog.toSun.xyz), fog.medium.z);
+    vec3 ambient = fog.ambient.rgb;
+
+    float transmittance = 1.0;
+    vec3 inScattered = vec3(0.0);
+    bool cutOff = false;
+    for (uint k = 0u; k < steps; ++k) {
+        vec3 x = dir * ((float(k) + offset) * dt);
+        float sigmaT = extinction(x);
+        if (sigmaT <= 0.0) continue;
+        float visibility = shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y);
+        float opticalDepth = sigmaT * dt;
+        inScattered += integrateStep(transmittance, albedo * (sunPhase * visibility + ambient), opticalDepth);
+        transmittance *= exp(-opticalDepth);
+        if (transmittance < fog.march.x) {
+            cutOff = true;
+            break;
+        }
+    }
+
+    // Analytic tail: height fog from max distance to the surface (or infinity), no noise, no shadow map.
+    if (fogFlag(kFogFlagAnalyticTail) && surfaceDistance > maxDistance && !cutOff) {
+        float y0 = fog.heights.x + dir.y * maxDistance;
+        float a = fog.medium.y * dir.y;  // h(y(t)) = h0 · exp(-a (t - t0))
+        float densityAtStart = fog.medium.x * heightTerm(y0);
+        float opticalDepth;
+        if (isinf(surfaceDistance)) {
+            // Never leaving the medium (a <= 0) means infinite optical depth, unless there is none at all.
+            opticalDepth = a > 0.0 ? densityAtStart / a : (densityAtStart > 0.0 ? kInfinity : 0.0);
+        } else {
+            float len = surfaceDistance - maxDistance;
+            float ax = a * len;  // ∫0^len e^{-a s} ds = (1 - e^{-ax}) / a  ->  len (1 - ax/2) as ax -> 0
+            opticalDepth = densityAtStart * (abs(ax) < 1e-4 ? len * (1.0 - 0.5 * ax) : (1.0 - exp(-ax)) / a);
+        }
+        vec3 light = sunPhase * sunTransmittance(y0) + ambient;
+        inScattered += integrateStep(transmittance, albedo * light, opticalDepth);
+        transmittance *= exp(-opticalDepth);
+    }
+    return FogScatter(inScattered, transmittance);
+}
+
+#endif

@@ -1,0 +1,27 @@
+#version 450
+// Ray-marched fog at a reduced resolution (FogSettings::resolutionScale < 1): one invocation per texel
+// of the scatter image marches the view ray of the full-resolution pixel nearest the texel's centre
+// (fogSourcePixel) and stores (L, T) there; upsample.comp composites them over the host's color.
+// Variants: COLOR_RGBA32F selects the storage format (default rgba16f).
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/shared.h"
+
+layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
+
+#include "fog/bindings.glsl"
+#include "fog/scatter_image.glsl"
+
+#include "common/ign.glsl"
+#include "common/integrate.glsl"
+#include "common/phase.glsl"
+#include "fog/medium.glsl"
+#include "fog/ray.glsl"
+#include "fog/march.glsl"
+
+void main() {
+    uvec2 texel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(texel, fog.scatterExtent.xy))) return;
+    FogScatter s = marchFog(fogRay(fogSourcePixel(texel)), texel);
+    imageStore(scatterImage, ivec2(texel), vec4(min(s.inScattered, vec3(kColorMax)), s.transmittance));
+}

@@ -1,0 +1,64 @@
+#version 450
+// Composites a reduced-resolution march (raymarch_reduced.comp) over the host's color at full
+// resolution: out = color · T + L, with (L, T) upsampled depth-aware (docs/effects/fog.md,
+// "Resolution scale"). Of the 2×2 scatter texels around the pixel, those whose ray ends within
+// kFogUpsampleDistanceTolerance of the pixel's own surface distance are blended with bilinear
+// weights; when none does (an edge thinner than a texel), the texel of nearest distance is taken
+// (nearest-depth upsampling). The CPU reference does the same (fog_reference.cpp).
+// Variants: COLOR_RGBA32F selects the storage format of the images (default rgba16f).
+#extension GL_GOOGLE_include_directive : require
+
+#include "common/shared.h"
+
+layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
+
+#include "fog/bindings.glsl"
+#include "fog/scatter_image.glsl"
+
+#include "fog/ray.glsl"
+
+// |a - b|, 0 when both are infinite (pixels with no geometry match each other), ∞ when one is.
+float distanceDifference(float a, float b) {
+    return isinf(a) && isinf(b) ? 0.0 : abs(a - b);
+}
+
+void main() {
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(pixel, fog.extent.xy))) return;
+    vec4 color = imageLoad(colorIn, ivec2(pixel));
+    float distance = fogRay(pixel).surfaceDistance;
+
+    // The pixel centre in scatter texels, u = (pixel + 0.5) · w / W - 0.5, in exact integers:
+    // u = num / (2W) with num = (2·pixel + 1)·w - W; clamped to the image at its borders.
+    uvec2 size = fog.scatterExtent.xy;
+    uvec2 num = (2u * pixel + 1u) * size;
+    uvec2 den = 2u * fog.extent.xy;
+    bvec2 inside = greaterThanEqual(num, fog.extent.xy);
+    uvec2 shifted = num - min(num, fog.extent.xy);
+    uvec2 t0 = min(shifted / den, size - 1u);
+    vec2 f = mix(vec2(0.0), vec2(shifted - t0 * den) / vec2(den), inside);
+    f = min(f, vec2(1.0));
+    uvec2 t1 = min(t0 + 1u, size - 1u);
+
+    uvec2 texels[4] = uvec2[4](t0, uvec2(t1.x, t0.y), uvec2(t0.x, t1.y), t1);
+    float bilinear[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    vec4 sum = vec4(0.0);
+    float weight = 0.0;
+    vec4 nearest = vec4(0.0);
+    float nearestDifference = kInfinity;
+    for (int k = 0; k < 4; ++k) {
+        vec4 s = imageLoad(scatterImage, ivec2(texels[k]));
+        float difference = distanceDifference(fogRay(fogSourcePixel(texels[k])).surfaceDistance, distance);
+        if (!isinf(difference) && difference <= kFogUpsampleDistanceTolerance * distance) {
+            sum += bilinear[k] * s;
+            weight += bilinear[k];
+        }
+        if (k == 0 || difference < nearestDifference) {
+            nearest = s;
+            nearestDifference = difference;
+        }
+    }
+    vec4 scatter = weight > 0.0 ? sum / weight : nearest;
+    vec3 result = min(color.rgb * scatter.a + scatter.rgb, vec3(kColorMax));
+    imageStore(colorOut, ivec2(pixel), vec4(result, color.a));
+}
