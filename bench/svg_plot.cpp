@@ -4,6 +4,7 @@
 #include "report.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -14,10 +15,12 @@ namespace {
 constexpr double kPanelWidth = 440, kPanelHeight = 340;             // whole panel
 constexpr double kLeft = 62, kRight = 14, kTop = 30, kBottom = 46;  // plot area margins in a panel
 constexpr int kPanelsPerRow = 3;
-constexpr double kHeaderHeight = 86, kLegendHeight = 56;
+constexpr double kHeaderHeight = 86, kLegendHeight = 76;
 
 const char* kOursColor = "#1f6fb4";
 const char* kOurs16Color = "#2a9d3a";
+const char* kScaledColor = "#7b3294";  // postfx-fog at resolution scale < 1 (one frame)
+const char* kPresetColor = "#111111";  // the presets' letters
 const char* kAsWrittenColor = "#e8780c";
 const char* kFixedColor = "#c62828";
 
@@ -208,16 +211,30 @@ std::string panel(const std::string& scene, const std::vector<Result>& results, 
         if (r->setting.method != Method::Ours) continue;
         const double t = r->timing.median;
         const std::string what = "postfx-fog " + r->setting.label();
+        if (!r->setting.preset.empty()) {
+            // A preset repeats a sweep point (or a neighbour of one): its initial beside its one-frame point.
+            if (!plottable(t, r->error[0].relativeRmse)) continue;
+            const char initial = char(std::toupper(static_cast<unsigned char>(r->setting.preset[0])));
+            s << "<g><title>"
+              << xmlEscape(what + ": " + formatNumber(t, 4) + " ms, " +
+                           formatNumber(r->error[0].relativeRmse * 100, 3) + "% (one frame)")
+              << "</title><text x=\"" << num(ax.map(t) + 5) << "\" y=\""
+              << num(ay.map(r->error[0].relativeRmse) - 5)
+              << "\" font-size=\"11\" font-weight=\"bold\" fill=\"" << kPresetColor << "\">" << initial
+              << "</text></g>\n";
+            continue;
+        }
+        const char* oneFrameColor = r->setting.resolutionScale < 1.0f ? kScaledColor : kOursColor;
         if (r->setting.jitter && plottable(t, r->error[2].relativeRmse))
             s << marker("diamond", ax.map(t), ay.map(r->error[2].relativeRmse), kOurs16Color, true,
                         what + ", mean of 16 frames: " + formatNumber(t, 4) + " ms, " +
                             formatNumber(r->error[2].relativeRmse * 100, 3) + "%" +
                             (r->pareto16 ? " (Pareto)" : ""));
         if (plottable(t, r->error[0].relativeRmse))
-            s << marker("circle", ax.map(t), ay.map(r->error[0].relativeRmse), kOursColor, r->setting.jitter,
-                        what + ": " + formatNumber(t, 4) + " ms, " +
-                            formatNumber(r->error[0].relativeRmse * 100, 3) + "%" +
-                            (r->pareto1 ? " (Pareto)" : ""));
+            s << marker(
+                "circle", ax.map(t), ay.map(r->error[0].relativeRmse), oneFrameColor, r->setting.jitter,
+                what + ": " + formatNumber(t, 4) + " ms, " + formatNumber(r->error[0].relativeRmse * 100, 3) +
+                    "%" + (r->pareto1 ? " (Pareto)" : ""));
     }
     s << "</g>\n";
     return s.str();
@@ -270,10 +287,13 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
     const std::vector<Entry> entries = {
         {"circle", kOursColor, true, false, false, "postfx-fog, jitter on (1 frame)"},
         {"circle", kOursColor, false, false, false, "postfx-fog, jitter off"},
+        {"circle", kScaledColor, true, false, false,
+         "postfx-fog at resolution scale < 1 (hollow: jitter off)"},
         {"", kOursColor, false, true, false, "its Pareto front (1 frame)"},
         {"diamond", kOurs16Color, true, true, true, "postfx-fog, mean of 16 jittered frames; front dashed"},
         {"square", kAsWrittenColor, true, true, false, "seed shader as written (over step lengths)"},
         {"triangle", kFixedColor, true, true, false, "seed fixed, Riemann sum (over step lengths)"},
+        {"", kPresetColor, false, false, false, "L, M, H, U: the quality presets low … ultra (one frame)"},
     };
     double lx = 16;
     double row = ly;

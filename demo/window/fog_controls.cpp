@@ -93,6 +93,8 @@ bool buildFog(postfx::FogSettings& f) {
     tooltip("march length limit (then the analytic tail)");
     changed |= sliderUint("steps", f.steps, 1, 256);
     tooltip("march steps per pixel");
+    changed |= ImGui::SliderFloat("resolution scale", &f.resolutionScale, 0.25f, 1.0f, "%.2f", kClamp);
+    tooltip("march at this fraction of width and height, then upsample depth-aware");
     changed |= ImGui::Checkbox("jitter", &f.jitter);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("self shadow", &f.selfShadow);
@@ -152,6 +154,7 @@ void FogControls::sanitize(postfx::FogSettings& f) {
     if (!(f.maxDistance > 0.0f)) f.maxDistance = 1.0f;  // also NaN
     f.maxDistance = std::min(f.maxDistance, 1e7f);
     f.steps = std::clamp<uint32_t>(f.steps, 1, 4096);
+    f.resolutionScale = clampOrLow(f.resolutionScale, 0.25f, 1.0f);
     f.transmittanceCutoff = clampOrLow(f.transmittanceCutoff, 0.0f, 0.999f);
     f.shadowKernel = std::clamp<uint32_t>(f.shadowKernel | 1u, 1, 7);  // odd: even sizes round up
     postfx::FogNoiseSettings& n = f.noise;
