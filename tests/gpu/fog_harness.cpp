@@ -67,7 +67,9 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
     cd.format = images.colorFormat;
     cd.extent = {w, h, 1};
     cd.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    GpuImage colorImage, outputImage, depthImage;
+    GpuImage colorImage, outputImage, depthImage, shadowImage;
+    const bool shadow = !images.shadow.empty();
+    const size_t shadowBytes = size_t(images.shadowWidth) * images.shadowHeight * 4;
     postfx::Status s = colorImage.create(gpu_, cd, "test color");
     if (s && images.separateOutput) s = outputImage.create(gpu_, cd, "test output");
     postfx::core::ImageDesc dd = cd;
@@ -75,12 +77,22 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
     dd.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
     if (s) s = depthImage.create(gpu_, dd, "test depth");
+    postfx::core::ImageDesc sd = cd;
+    sd.format = VK_FORMAT_R32_SFLOAT;
+    sd.extent = {images.shadowWidth, images.shadowHeight, 1};
+    sd.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    if (s && shadow) s = shadowImage.create(gpu_, sd, "test shadow map");
     GpuBuffer upload, readback;
-    if (s) s = upload.create(gpu_, colorBytes + pixels * 4, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true, "upload");
+    if (s)
+        s = upload.create(gpu_, colorBytes + pixels * 4 + shadowBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true,
+                          "upload");
     if (s) s = readback.create(gpu_, colorBytes * 2, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback");
     if (!s) return s;
     packColor(images.color, images.colorFormat, upload.mapped());
     std::memcpy(static_cast<char*>(upload.mapped()) + colorBytes, images.depth.data(), pixels * 4);
+    if (shadow)
+        std::memcpy(static_cast<char*>(upload.mapped()) + colorBytes + pixels * 4, images.shadow.data(),
+                    shadowBytes);
 
     constexpr VkImageAspectFlags kColor = VK_IMAGE_ASPECT_COLOR_BIT, kDepth = VK_IMAGE_ASPECT_DEPTH_BIT;
     constexpr VkPipelineStageFlags kAll = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
@@ -93,6 +105,7 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
             std::vector<std::pair<GpuImage*, VkImageAspectFlags>> all = {{&colorImage, kColor},
                                                                          {&depthImage, kDepth}};
             if (images.separateOutput) all.push_back({&outputImage, kColor});
+            if (shadow) all.push_back({&shadowImage, kColor});
             for (auto& [image, aspect] : all)
                 postfx::core::transition(
                     gpu_, cmd,
@@ -111,6 +124,19 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
             region.imageSubresource.aspectMask = kDepth;
             vkCmdCopyBufferToImage(cmd, upload.handle(), depthImage.handle(),
                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+            if (shadow) {
+                VkBufferImageCopy shadowRegion{};
+                shadowRegion.bufferOffset = colorBytes + pixels * 4;
+                shadowRegion.imageSubresource = {kColor, 0, 0, 1};
+                shadowRegion.imageExtent = {images.shadowWidth, images.shadowHeight, 1};
+                vkCmdCopyBufferToImage(cmd, upload.handle(), shadowImage.handle(),
+                                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &shadowRegion);
+                postfx::core::transition(
+                    gpu_, cmd,
+                    to(shadowImage.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kCopy, VK_ACCESS_TRANSFER_WRITE_BIT, kAll,
+                       kAny));
+            }
             // Into the layouts the "host" hands postfx.
             postfx::core::transition(gpu_, cmd,
                                      to(colorImage.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -132,6 +158,12 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
             if (images.separateOutput)
                 frame.output = {outputImage.handle(), outputImage.view(), images.colorFormat, extent,
                                 images.colorLayout};
+            if (shadow)
+                frame.shadowMap.image = {shadowImage.handle(),
+                                         shadowImage.view(),
+                                         VK_FORMAT_R32_SFLOAT,
+                                         {images.shadowWidth, images.shadowHeight},
+                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
             recordStatus = context.record(frame);
 
             // Read back, trusting postfx to have returned the images in the layouts they came in.

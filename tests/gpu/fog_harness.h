@@ -19,6 +19,10 @@ struct FogHarnessImages {
     VkImageLayout colorLayout = VK_IMAGE_LAYOUT_GENERAL;
     VkImageLayout depthLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
     bool separateOutput = false;  // write into FrameInfo.output instead of in place
+    // Optional R32_SFLOAT shadow map (row-major, top row first), handed over in SHADER_READ_ONLY_OPTIMAL
+    // as FrameInfo.shadowMap.image; the caller sets the frame's shadowMap matrix, bias and convention.
+    std::vector<float> shadow;
+    uint32_t shadowWidth = 0, shadowHeight = 0;
 };
 
 class FogHarness {
