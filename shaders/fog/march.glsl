@@ -23,7 +23,7 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
     float offset = fogFlag(kFogFlagJitter) ? interleavedGradientNoise(jitterPixel, fog.extent.w) : 0.5;
 
     vec3 albedo = fog.albedo.rgb;
-    vec3 sunPhase = fog.sunIlluminance.rgb * henyeyGreenstein(dot(dir, fog.toSun.xyz), fog.medium.z);
+    vec3 sunPhase = fog.sunIlluminance.rgb * henyeyGreensteinDirections(dir, fog.toSun.xyz, fog.medium.z);
     vec3 ambient = fog.ambient.rgb;
 
     float transmittance = 1.0;

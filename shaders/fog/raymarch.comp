@@ -15,6 +15,7 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 #include "common/phase.glsl"
 #include "fog/medium.glsl"
 #include "fog/ray.glsl"
+#include "fog/composite.glsl"
 #include "fog/march.glsl"
 
 void main() {
@@ -22,6 +23,5 @@ void main() {
     if (any(greaterThanEqual(pixel, fog.extent.xy))) return;
     vec4 color = imageLoad(colorIn, ivec2(pixel));
     FogScatter s = marchFog(fogRay(pixel), pixel);
-    vec3 result = min(color.rgb * s.transmittance + s.inScattered, vec3(kColorMax));
-    imageStore(colorOut, ivec2(pixel), vec4(result, color.a));
+    imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, s.transmittance, s.inScattered), color.a));
 }

@@ -16,6 +16,7 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 #include "fog/scatter_image.glsl"
 
 #include "fog/ray.glsl"
+#include "fog/composite.glsl"
 
 // |a - b|, 0 when both are infinite (pixels with no geometry match each other), ∞ when one is.
 float distanceDifference(float a, float b) {
@@ -59,6 +60,5 @@ void main() {
         }
     }
     vec4 scatter = weight > 0.0 ? sum / weight : nearest;
-    vec3 result = min(color.rgb * scatter.a + scatter.rgb, vec3(kColorMax));
-    imageStore(colorOut, ivec2(pixel), vec4(result, color.a));
+    imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, scatter.a, scatter.rgb), color.a));
 }

@@ -123,7 +123,7 @@ Model makeModel(const FogInputs& in) {
     m.ambient = dvec3(in.ambient);
     m.g = s.anisotropy;  // clamped by henyeyGreenstein
     m.selfShadow = s.selfShadow;
-    m.analyticTail = s.analyticTail;
+    m.analyticTail = s.analyticTail && !fog::fogNoiseEmptiesMedium(s, s.noise.enabled);
     m.noise = s.noise.enabled;
     m.noiseTexels = in.noise;
     m.noiseSize = in.noiseSize;
@@ -219,10 +219,18 @@ Radiance scatterAlong(const Model& m, const Ray& ray) {
     return r;
 }
 
-// Composite: out.rgb = color.rgb · T + L, out.a = color.a.
+// Composite: out.rgb = color.rgb · T + L, out.a = color.a, as the GPU does it (shaders/fog/composite.glsl):
+// ±Inf color counts as ±FLT_MAX, the result is clamped to ±FLT_MAX, a NaN channel stays NaN.
 void composite(const Radiance& r, const float* color, float* out) {
-    for (int c = 0; c < 3; ++c)
-        out[c] = float(double(color[c]) * r.T + r.L[c]);
+    constexpr double kMax = std::numeric_limits<float>::max();
+    for (int c = 0; c < 3; ++c) {
+        if (std::isnan(color[c])) {
+            out[c] = color[c];
+            continue;
+        }
+        const double bounded = std::clamp(double(color[c]), -kMax, kMax);
+        out[c] = float(std::clamp(bounded * r.T + r.L[c], -kMax, kMax));
+    }
     out[3] = color[3];
 }
 

@@ -14,6 +14,12 @@ Status validateSettings(const FogSettings& settings);
 // The sun and ambient inputs (finite, non-negative illuminance, non-zero direction).
 Status validateLighting(const SunInput& sun, const glm::vec3& ambient);
 
+// The noise makes the medium empty everywhere (multiplier 0, or a threshold at or above the texels'
+// maximum of 1): then the analytic tail, which assumes noise = 1, is left out too.
+inline bool fogNoiseEmptiesMedium(const FogSettings& s, bool noiseEnabled) {
+    return noiseEnabled && (s.noise.multiplier <= 0.0f || s.noise.threshold >= 1.0f);
+}
+
 // g clamped to [-kMaxAnisotropy, kMaxAnisotropy].
 float clampedAnisotropy(float g);
 

@@ -49,7 +49,7 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
     if (shadowMapEnabled) flags |= gpu::kFogFlagShadowMap;
     if (shadowMapEnabled && frame.shadowMap.reversedZ) flags |= gpu::kFogFlagShadowReversedZ;
     if (s.selfShadow) flags |= gpu::kFogFlagSelfShadow;
-    if (s.analyticTail) flags |= gpu::kFogFlagAnalyticTail;
+    if (s.analyticTail && !fogNoiseEmptiesMedium(s, noiseEnabled)) flags |= gpu::kFogFlagAnalyticTail;
     if (depth.reversedZ) flags |= gpu::kFogFlagDepthReversedZ;
     u.flags = glm::uvec4(flags, 0u, 0u, 0u);
     return u;
