@@ -321,10 +321,8 @@ int run(const Args& args, const std::string& command) {
     info.textureRate = args.textureRate;
     info.baselines = baselines;
 
-    constexpr std::pair<postfx::FogQuality, const char*> kPresets[] = {{postfx::FogQuality::Low, "low"},
-                                                                       {postfx::FogQuality::Medium, "medium"},
-                                                                       {postfx::FogQuality::High, "high"},
-                                                                       {postfx::FogQuality::Ultra, "ultra"}};
+    constexpr postfx::FogQuality kPresets[] = {postfx::FogQuality::Low, postfx::FogQuality::Medium,
+                                               postfx::FogQuality::High, postfx::FogQuality::Ultra};
     const size_t presets = args.presets ? std::size(kPresets) : 0;
     size_t total = 0;
     for (const ScenePlan& p : plans)
@@ -408,10 +406,10 @@ int run(const Args& args, const std::string& command) {
                 // The presets as a host selects them (FogSettings::quality), at the scene's noise size.
                 for (size_t k = 0; k < presets && noise == p.baselineNoise; ++k) {
                     demo::Scene s = scene;
-                    s.fog.quality = kPresets[k].first;
+                    s.fog.quality = kPresets[k];
                     const postfx::FogSettings applied = postfx::applyFogQuality(s.fog, s.fog.quality);
                     bench::Setting setting = base;
-                    setting.preset = kPresets[k].second;
+                    setting.preset = demo::fogQualityName(kPresets[k]);
                     setting.steps = applied.steps;
                     setting.jitter = applied.jitter;
                     setting.resolutionScale = applied.resolutionScale;

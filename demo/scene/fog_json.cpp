@@ -2,6 +2,7 @@
 #include "scene/fog_json.h"
 
 #include "scene/json_read.h"
+#include "scene/scene.h"
 
 namespace demo {
 namespace {
@@ -44,12 +45,6 @@ postfx::FogQuality readQuality(const json& j, const std::string& path) {
         for (const QualityName& q : kQualityNames)
             if (j.get<std::string>() == q.name) return q.quality;
     fail(path, "expected \"custom\", \"low\", \"medium\", \"high\", \"ultra\" or \"auto\"" + got(j));
-}
-
-const char* qualityName(postfx::FogQuality quality) {
-    for (const QualityName& q : kQualityNames)
-        if (q.quality == quality) return q.name;
-    return "custom";
 }
 
 void readNoise(const json& j, const std::string& path, postfx::FogNoiseSettings& n) {
@@ -108,6 +103,12 @@ postfx::FogSettings readFog(const json& j, const std::string& path) {
 
 }  // namespace
 
+const char* fogQualityName(postfx::FogQuality quality) {
+    for (const QualityName& q : kQualityNames)
+        if (q.quality == quality) return q.name;
+    return "custom";
+}
+
 void readEffects(const json& effects, const std::string& path, postfx::FogSettings& fog) {
     expectObject(effects, path);
     checkKeys(effects, path, kEffectsKeys);
@@ -138,7 +139,7 @@ json effectsToJson(const postfx::FogSettings& s) {
                       {"self_shadow", s.selfShadow},
                       {"analytic_tail", s.analyticTail},
                       {"shadow_kernel", s.shadowKernel},
-                      {"quality", qualityName(s.quality)},
+                      {"quality", fogQualityName(s.quality)},
                       {"auto_budget_ms", number(s.autoBudgetMs)},
                       {"noise", noise}};
     return json{{"fog", fog}};

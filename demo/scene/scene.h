@@ -58,6 +58,9 @@ bool loadSceneFile(const std::string& path, Scene& scene, std::string& error);
 // back s exactly: floats are written in their shortest form that reads back as the same float.
 nlohmann::json sceneToJson(const Scene& scene);
 
+// The scene-file name of a fog quality (`effects.fog.quality`): "custom", "low", ... "auto".
+const char* fogQualityName(postfx::FogQuality quality);
+
 // The built-in scene: ground plane, a few boxes and pillars, a low sun casting long shadows.
 Scene defaultScene();
 // The built-in scene as JSON text (the same scene; committed as scenes/default.json too).

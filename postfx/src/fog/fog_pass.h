@@ -33,9 +33,6 @@ public:
 
     const FogNoise* noise() const { return noise_.get(); }  // null when no noise texture is held
 
-    // The reduced-resolution march's image (rgb L, a T), or null at resolution scale 1.
-    const core::GpuImage* scatterImage() const { return scatter_.get(); }
-
 private:
     // The fog's compute shaders; each has an RGBA16F and an RGBA32F variant (the color format).
     enum class Kernel { Raymarch, RaymarchReduced, Upsample };
