@@ -13,14 +13,16 @@ float henyeyGreenstein(float cosTheta, float g) {
     return kInvFourPi * (1.0 - g2) / (denom * sqrt(denom));
 }
 
-// The same for unit vectors `viewDir` and `toLight`, without cancellation near cos θ = 1 (docs/stability.md):
-// 1 + g² - 2g·cosθ = (1 - g)² + 2g·(1 - cosθ) and 1 - cosθ = |viewDir - toLight|² / 2, so for g -> 1 the
-// peak (1 - g)² ~ 1e-6 is not the difference of two numbers near 2 (float would lose ~20% there).
+// The same for unit vectors `viewDir` and `toLight`, without cancellation at either peak (docs/stability.md):
+// with s = sign(g), 1 + g² - 2g·cosθ = (1 - |g|)² + |g|·|viewDir - s·toLight|², because
+// |d ∓ l|² = 2 ∓ 2cosθ. So for |g| -> 1 the peak's (1 - |g|)² ~ 1e-6 is a sum of two non-negative terms,
+// not the difference of two numbers near 2 (float would lose ~20% there).
 float henyeyGreensteinDirections(vec3 viewDir, vec3 toLight, float g) {
-    vec3 d = viewDir - toLight;
-    float oneMinusG = 1.0 - g;
-    float denom = oneMinusG * oneMinusG + g * dot(d, d);
-    return kInvFourPi * (1.0 - g * g) / (denom * sqrt(denom));
+    float absG = abs(g);
+    vec3 d = viewDir - (g < 0.0 ? -toLight : toLight);
+    float oneMinusG = 1.0 - absG;
+    float denom = oneMinusG * oneMinusG + absG * dot(d, d);
+    return kInvFourPi * oneMinusG * (1.0 + absG) / (denom * sqrt(denom));  // 1 - g² without cancellation
 }
 
 #endif

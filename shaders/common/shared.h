@@ -15,6 +15,7 @@ using uint = uint32_t;
 #define PFX_CONST(type, name, value) inline constexpr type name = value
 #else
 #define PFX_CONST(type, name, value) const type name = value
+const float kInfinity = 1.0 / 0.0;
 #endif
 
 // ---- fog (shaders/fog/) ----
@@ -35,6 +36,10 @@ PFX_CONST(float, kFogUpsampleDistanceTolerance, 0.1f);
 
 PFX_CONST(uint, kNoiseGroupSize, 4);       // noise generation workgroup: kNoiseGroupSize³ texels
 PFX_CONST(uint, kNoiseBindingTexture, 0);  // storage image: the r8 noise texture being generated
+
+// The height term's exponent -height_falloff·(y - base_height) is clamped to at most this, so that
+// h(y) = e^80 ≈ 5.5e34 stays finite in float far below the base height (fog.md, "Model").
+PFX_CONST(float, kMaxHeightExponent, 80.0f);
 
 // Flags in FogUniforms.flags.x
 PFX_CONST(uint, kFogFlagJitter, 1u);

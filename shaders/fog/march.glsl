@@ -46,17 +46,7 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
     // Analytic tail: height fog from max distance to the surface (or infinity), no noise, no shadow map.
     if (fogFlag(kFogFlagAnalyticTail) && surfaceDistance > maxDistance && !cutOff) {
         float y0 = fog.heights.x + dir.y * maxDistance;
-        float a = fog.medium.y * dir.y;  // h(y(t)) = h0 · exp(-a (t - t0))
-        float densityAtStart = fog.medium.x * heightTerm(y0);
-        float opticalDepth;
-        if (isinf(surfaceDistance)) {
-            // Never leaving the medium (a <= 0) means infinite optical depth, unless there is none at all.
-            opticalDepth = a > 0.0 ? densityAtStart / a : (densityAtStart > 0.0 ? kInfinity : 0.0);
-        } else {
-            float len = surfaceDistance - maxDistance;
-            float ax = a * len;  // ∫0^len e^{-a s} ds = (1 - e^{-ax}) / a  ->  len (1 - ax/2) as ax -> 0
-            opticalDepth = densityAtStart * (abs(ax) < 1e-4 ? len * (1.0 - 0.5 * ax) : (1.0 - exp(-ax)) / a);
-        }
+        float opticalDepth = heightFogOpticalDepth(y0, dir.y, surfaceDistance - maxDistance);
         vec3 light = sunPhase * sunTransmittance(y0) + ambient;
         inScattered += integrateStep(transmittance, albedo * light, opticalDepth);
         transmittance *= exp(-opticalDepth);

@@ -3,11 +3,13 @@
 #ifndef POSTFX_FOG_MEDIUM_GLSL
 #define POSTFX_FOG_MEDIUM_GLSL
 
+#include "common/integrate.glsl"
+
 bool fogFlag(uint flag) { return (fog.flags.x & flag) != 0u; }
 
 // h(y) = exp(-height_falloff · (y - base_height)), exponent clamped so far below the base it stays finite.
 float heightTerm(float heightAboveBase) {
-    return exp(min(-fog.medium.y * heightAboveBase, 80.0));
+    return exp(min(-fog.medium.y * heightAboveBase, kMaxHeightExponent));
 }
 
 // noise(x) = clamp(n(u) - threshold, 0, 1) · multiplier, u = camera's noise coordinate + x · 0.01 · tiling.
@@ -52,6 +54,28 @@ float sunTransmittance(float heightAboveBase) {
     float a = fog.medium.y * fog.toSun.y;
     if (a <= 0.0) return 0.0;
     return exp(-fog.medium.x * heightTerm(heightAboveBase) / a);
+}
+
+// Optical depth of the height fog (no noise) along a ray segment that starts at `heightAboveBase0`, climbs
+// `dirY` per metre and is `len` long (+Inf: to infinity): density · ∫0^len h(y0 + dirY·s) ds in closed
+// form (the reference's tailOpticalDepth). With x = a·len, a = height_falloff · dirY, the integral is
+// h_low · len · (1 - e^{-|x|}) / |x| where h_low is h at the segment's lower end, so that no term
+// overflows while another underflows (a ray descending from far above: h0 = 0, e^{-x} = ∞ would be 0·∞).
+float heightFogOpticalDepth(float heightAboveBase0, float dirY, float len) {
+    float density = fog.medium.x;
+    if (density <= 0.0 || len <= 0.0) return 0.0;
+    float a = fog.medium.y * dirY;
+    float exponent0 = min(-fog.medium.y * heightAboveBase0, kMaxHeightExponent);
+    // Never leaving the medium (a <= 0 to infinity) means infinite optical depth. Otherwise density · h_low
+    // · len · (1 - e^{-|x|})/|x| with x = a·len, where the lower end's exponent is exponent0 - x when
+    // descending (x < 0), not clamped along the segment, like the reference (for len = ∞: density · h0 / a).
+    // The small factors first and e^E as (e^{E/2})², so that the product under- or overflows only when the
+    // optical depth itself is beyond float (an infinite one gives T = 0, which is what it is).
+    if (isinf(len) && a <= 0.0) return kInfinity;
+    float x = a * len;
+    float factors = isinf(len) ? density / a : density * len * oneMinusExpOverX(abs(x));
+    float halfExponent = 0.5 * (isinf(len) ? exponent0 : exponent0 + max(-x, 0.0));
+    return factors * exp(halfExponent) * exp(halfExponent);
 }
 
 #endif

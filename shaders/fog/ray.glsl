@@ -2,8 +2,6 @@
 #ifndef POSTFX_FOG_RAY_GLSL
 #define POSTFX_FOG_RAY_GLSL
 
-const float kInfinity = 1.0 / 0.0;
-
 struct FogRay {
     vec3 dir;               // unit direction from the camera
     float surfaceDistance;  // to the reconstructed surface [m]; infinite for pixels with no geometry

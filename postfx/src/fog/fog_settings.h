@@ -4,10 +4,12 @@
 #include <postfx/fog.h>
 #include <postfx/result.h>
 
+#include "common/shared.h"
+
 namespace postfx::fog {
 
-constexpr float kMaxAnisotropy = 0.999f;    // |g| is clamped to this
-constexpr float kMaxHeightExponent = 80.f;  // -height_falloff·(y - base_height) is clamped to this
+constexpr float kMaxAnisotropy = 0.999f;                       // |g| is clamped to this
+constexpr float kMaxHeightExponent = gpu::kMaxHeightExponent;  // -height_falloff·(y - base_height) <= this
 
 // InvalidArgument naming the field ("fog.density: -1 is negative") for any value out of range or NaN.
 Status validateSettings(const FogSettings& settings);
