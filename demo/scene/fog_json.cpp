@@ -23,6 +23,7 @@ constexpr const char* kFogKeys[] = {"enabled",
                                     "transmittance_cutoff",
                                     "self_shadow",
                                     "analytic_tail",
+                                    "skip_empty_space",
                                     "shadow_kernel",
                                     "quality",
                                     "auto_budget_ms",
@@ -81,6 +82,8 @@ postfx::FogSettings readFog(const json& j, const std::string& path) {
         s.transmittanceCutoff = readNumber(*v, child(path, "transmittance_cutoff"));
     if (const json* v = find(j, "self_shadow")) s.selfShadow = readBool(*v, child(path, "self_shadow"));
     if (const json* v = find(j, "analytic_tail")) s.analyticTail = readBool(*v, child(path, "analytic_tail"));
+    if (const json* v = find(j, "skip_empty_space"))
+        s.skipEmptySpace = readBool(*v, child(path, "skip_empty_space"));
     if (const json* v = find(j, "shadow_kernel"))
         s.shadowKernel = readUint32(*v, child(path, "shadow_kernel"));
     if (const json* v = find(j, "quality")) s.quality = readQuality(*v, child(path, "quality"));
@@ -138,6 +141,7 @@ json effectsToJson(const postfx::FogSettings& s) {
                       {"transmittance_cutoff", number(s.transmittanceCutoff)},
                       {"self_shadow", s.selfShadow},
                       {"analytic_tail", s.analyticTail},
+                      {"skip_empty_space", s.skipEmptySpace},
                       {"shadow_kernel", s.shadowKernel},
                       {"quality", fogQualityName(s.quality)},
                       {"auto_budget_ms", number(s.autoBudgetMs)},

@@ -49,6 +49,7 @@ PFX_CONST(uint, kFogFlagShadowReversedZ, 8u);
 PFX_CONST(uint, kFogFlagSelfShadow, 16u);
 PFX_CONST(uint, kFogFlagAnalyticTail, 32u);
 PFX_CONST(uint, kFogFlagDepthReversedZ, 64u);
+PFX_CONST(uint, kFogFlagSkipEmptySpace, 128u);
 
 struct FogUniforms {
     mat4 clipToView;      // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))
@@ -58,7 +59,7 @@ struct FogUniforms {
     vec4 ambient;         // rgb: uniform incident radiance
     vec4 albedo;          // rgb: σs/σt
     vec4 medium;          // x: density [1/m], y: height falloff [1/m], z: HG g (clamped), w: max distance [m]
-    vec4 heights;         // x: camera y - base height [m]
+    vec4 heights;         // x: camera y - base height [m], y: the medium's top above base [m] (may be +Inf)
     vec4 noise;           // xyz: noise coordinate of the camera, wrapped to [0,1); w: 0.01·tiling [1/m]
     vec4 noiseRemap;      // x: threshold, y: multiplier
     vec4 shadow;          // x: depth bias, y: kernel radius in texels (kernel = 2r+1)

@@ -10,6 +10,18 @@ struct FogScatter {
     float transmittance;  // T: from the camera to the surface (or through the whole medium)
 };
 
+// Empty-space skipping (fog.md, "Empty space"): the part [tEnter, tExit] of [0, marchDistance] where the
+// ray is below the medium's top (fog.heights.y, above base); above it the extinction is negligible. The
+// ray's height above base is heights.x + dirY·t, so it crosses the top at t = (top - heights.x) / dirY.
+// An empty interval (tExit <= tEnter) means the ray crosses no medium and takes no step.
+vec2 mediumInterval(float dirY, float marchDistance) {
+    if (!fogFlag(kFogFlagSkipEmptySpace)) return vec2(0.0, marchDistance);
+    float below = fog.heights.y - fog.heights.x;  // how far the top is above the camera (< 0: camera above)
+    if (dirY == 0.0) return vec2(0.0, below > 0.0 ? marchDistance : 0.0);
+    float tCross = below / dirY;
+    return dirY > 0.0 ? vec2(0.0, clamp(tCross, 0.0, marchDistance)) : vec2(clamp(tCross, 0.0, marchDistance), marchDistance);
+}
+
 // `jitterPixel` seeds the interleaved-gradient-noise start offset: the pixel of the image the march
 // writes, so that neighbours get decorrelated offsets at any resolution.
 FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
@@ -19,7 +31,9 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
     float maxDistance = fog.medium.w;
     float marchDistance = min(surfaceDistance, maxDistance);
     uint steps = fog.extent.z;
-    float dt = marchDistance / float(steps);
+    vec2 interval = mediumInterval(dir.y, marchDistance);
+    float dt = max(interval.y - interval.x, 0.0) / float(steps);
+    if (dt <= 0.0) steps = 0u;  // no medium along the ray (or a zero-length march)
     float offset = fogFlag(kFogFlagJitter) ? interleavedGradientNoise(jitterPixel, fog.extent.w) : 0.5;
 
     vec3 albedo = fog.albedo.rgb;
@@ -30,7 +44,7 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
     vec3 inScattered = vec3(0.0);
     bool cutOff = false;
     for (uint k = 0u; k < steps; ++k) {
-        vec3 x = dir * ((float(k) + offset) * dt);
+        vec3 x = dir * (interval.x + (float(k) + offset) * dt);
         float sigmaT = extinction(x);
         if (sigmaT <= 0.0) continue;
         float visibility = shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y);

@@ -61,6 +61,7 @@ json everyKey() {
       "transmittance_cutoff": 0.01,
       "self_shadow": true,
       "analytic_tail": false,
+      "skip_empty_space": false,
       "shadow_kernel": 5,
       "quality": "auto",
       "auto_budget_ms": 1.25,
@@ -159,6 +160,7 @@ TEST(SceneFog, EveryKeyIsRead) {
     EXPECT_EQ(f.transmittanceCutoff, 0.01f);
     EXPECT_TRUE(f.selfShadow);
     EXPECT_FALSE(f.analyticTail);
+    EXPECT_FALSE(f.skipEmptySpace);
     EXPECT_EQ(f.shadowKernel, 5u);
     EXPECT_EQ(f.quality, postfx::FogQuality::Auto);
     EXPECT_EQ(f.autoBudgetMs, 1.25f);
@@ -309,7 +311,7 @@ std::vector<FogRejection> fogRejections() {
         {"UnknownFogKey", fog("/colour", {1, 1, 1}),
          "effects.fog.colour: unknown key (expected enabled, density, albedo, anisotropy, height_falloff, "
          "base_height, max_distance, steps, jitter, resolution_scale, transmittance_cutoff, self_shadow, "
-         "analytic_tail, "
+         "analytic_tail, skip_empty_space, "
          "shadow_kernel, quality, auto_budget_ms or noise)"},
         {"UnknownNoiseKey", fog("/noise/octaves", 4),
          "effects.fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, threshold, "

@@ -78,6 +78,11 @@ struct FogSettings {
     // Beyond max_distance (up to the surface, or to infinity for pixels with no geometry), add the
     // height fog's closed-form contribution (no noise, no shadow map), so fog does not end at a wall.
     bool analyticTail = true;
+    // Empty-space skipping (docs/effects/fog.md#empty-space): march only the part of each ray below the
+    // height above which the medium's extinction is negligible (its optical depth over max_distance below
+    // 1e-4), spending every step there; rays that never go below it take no step. false marches all of
+    // [0, min(surface, max_distance)] (for comparison; the image differs only by the march's own error).
+    bool skipEmptySpace = true;
     // Shadow-map filter: kernel × kernel texels around the sample, each compared, averaged; odd, 1..7.
     uint32_t shadowKernel = 3;
     FogNoiseSettings noise;

@@ -96,6 +96,8 @@ struct Model {
     dvec3 albedo, sunIlluminance, toSun, ambient;
     double g;
     bool selfShadow, analyticTail;
+    bool skipEmptySpace;
+    double mediumTop;  // above base height: fog::fogMediumTop
     bool noise;
     std::span<const float> noiseTexels;
     uint32_t noiseSize;
@@ -123,6 +125,8 @@ Model makeModel(const FogInputs& in) {
     m.ambient = dvec3(in.ambient);
     m.g = s.anisotropy;  // clamped by henyeyGreenstein
     m.selfShadow = s.selfShadow;
+    m.skipEmptySpace = s.skipEmptySpace;
+    m.mediumTop = fog::fogMediumTop(s, s.noise.enabled);
     m.analyticTail = s.analyticTail && !fog::fogNoiseEmptiesMedium(s, s.noise.enabled);
     m.noise = s.noise.enabled;
     m.noiseTexels = in.noise;
@@ -179,12 +183,31 @@ void addSegment(const Model& m, const dvec3& light, double tau, Radiance& r) {
     r.T *= std::exp(-tau);
 }
 
-// March: D = min(D_s, max_distance), Δ = D/N, step k evaluates the medium at t = (k + 0.5)·Δ and holds
-// σt and S(x) = σs·(E·p·V·Tsun + ambient) constant over [kΔ, (k+1)Δ].
+// Empty-space skipping: the part [t0, t1] of [0, D] below the medium's top (fog.md, "Empty space");
+// t0 >= t1 when the ray crosses no medium.
+void mediumInterval(const Model& m, const Ray& ray, double D, double& t0, double& t1) {
+    t0 = 0.0;
+    t1 = D;
+    if (!m.skipEmptySpace) return;
+    const double below = m.mediumTop - (m.camera.y - m.baseHeight);  // top above the camera
+    if (ray.d.y == 0.0) {
+        if (!(below > 0.0)) t1 = 0.0;
+        return;
+    }
+    const double tCross = std::clamp(below / ray.d.y, 0.0, D);
+    (ray.d.y > 0.0 ? t1 : t0) = tCross;
+}
+
+// March: D = min(D_s, max_distance), [t0, t1] its part inside the medium, Δ = (t1 - t0)/N; step k
+// evaluates the medium at t = t0 + (k + 0.5)·Δ and holds σt and S(x) = σs·(E·p·V·Tsun + ambient) constant
+// over its Δ.
 void marchPixel(const Model& m, const Ray& ray, const dvec3& sunPhase, Radiance& r) {
-    const double dt = std::min(ray.distance, m.maxDistance) / m.steps;
+    double t0, t1;
+    mediumInterval(m, ray, std::min(ray.distance, m.maxDistance), t0, t1);
+    if (!(t1 > t0)) return;
+    const double dt = (t1 - t0) / m.steps;
     for (uint32_t k = 0; k < m.steps; ++k) {
-        const dvec3 x = ((k + 0.5) * dt) * ray.d;
+        const dvec3 x = (t0 + (k + 0.5) * dt) * ray.d;
         const double h = detail::heightTerm(m.camera.y + x.y, m.heightFalloff, m.baseHeight);
         const double sigmaT = m.density * h * noiseAt(m, x);
         if (sigmaT == 0.0) continue;  // empty step: adds nothing, T unchanged

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -97,6 +98,21 @@ namespace postfx {
 Status validateFogSettings(const FogSettings& settings) {
     return fog::validateSettings(settings);
 }
+
+namespace fog {
+
+double fogMediumTop(const FogSettings& s, bool noiseEnabled) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    if (fogMediumEmpty(s, noiseEnabled)) return -kInf;
+    if (s.heightFalloff <= 0.0f) return kInf;
+    const double noiseMax =
+        noiseEnabled ? std::clamp(1.0 - double(s.noise.threshold), 0.0, 1.0) * double(s.noise.multiplier) : 1.0;
+    // density · noise_max · e^{-k·y} = ε / max_distance  <=>  y = ln(density · noise_max · max_distance / ε) / k
+    const double bound = double(s.density) * noiseMax * double(s.maxDistance) / kNegligibleOpticalDepth;
+    return std::log(bound) / double(s.heightFalloff);
+}
+
+}  // namespace fog
 
 glm::uvec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale) {
     const double scale = std::isnan(resolutionScale) ? 1.0 : std::clamp(double(resolutionScale), 0.0, 1.0);

@@ -22,6 +22,20 @@ inline bool fogNoiseEmptiesMedium(const FogSettings& s, bool noiseEnabled) {
     return noiseEnabled && (s.noise.multiplier <= 0.0f || s.noise.threshold >= 1.0f);
 }
 
+// The medium is empty everywhere: density 0, or the noise empties it. The fog then records nothing.
+inline bool fogMediumEmpty(const FogSettings& s, bool noiseEnabled) {
+    return s.density <= 0.0f || fogNoiseEmptiesMedium(s, noiseEnabled);
+}
+
+// Empty-space skipping (fog.md, "Empty space"): the optical depth that the march may leave out.
+constexpr double kNegligibleOpticalDepth = 1e-4;
+
+// Height above base_height above which the medium's extinction bound density · noise_max · h(y) is below
+// kNegligibleOpticalDepth / max_distance, so that no march segment above it can hold more than that
+// optical depth; noise_max = clamp(1 - threshold, 0, 1) · multiplier (noise values are in [0, 1]).
+// +Inf when the height term does not fall (height_falloff 0), -Inf for an empty medium.
+double fogMediumTop(const FogSettings& s, bool noiseEnabled);
+
 // g clamped to [-kMaxAnisotropy, kMaxAnisotropy].
 float clampedAnisotropy(float g);
 
