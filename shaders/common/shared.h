@@ -18,6 +18,11 @@ using uint = uint32_t;
 const float kInfinity = 1.0 / 0.0;
 #endif
 
+// ---- the context's own passes (shaders/core/) ----
+PFX_CONST(uint, kCopyGroupSize, 8);   // postfx.copy workgroup: kCopyGroupSize² pixels
+PFX_CONST(uint, kCopyBindingIn, 0);   // storage image: host color (read)
+PFX_CONST(uint, kCopyBindingOut, 1);  // storage image: host output (written)
+
 // ---- fog (shaders/fog/) ----
 PFX_CONST(uint, kFogGroupSize, 8);  // raymarch workgroup: kFogGroupSize² pixels
 

@@ -318,8 +318,9 @@ TEST_F(BaselineTest, RiemannConvergesToPostfxAndSeedDoesNot) {
 
 // The shadow-map and noise inputs reach the baselines as they reach postfx: on the shadowed and the noise
 // scene (no analytic tail, no transmittance cut-off), seed-fixed-riemann at a short step is close to
-// postfx at 512 steps. postfx runs in the baseline's frame too, with density 0 (it leaves the color
-// unchanged but keeps its noise texture alive for Context::fogNoiseView).
+// postfx at 512 steps. postfx runs in the baseline's frame too, with density 1e-30 /m: not an empty medium
+// (density 0 would retire the fog and its noise texture, docs/frame-plan.md), so it keeps its noise
+// texture alive for Context::fogNoiseView, while the color it writes rounds to the un-fogged one.
 TEST_F(BaselineTest, ShadowMapAndNoiseInputsMatchPostfx) {
     for (const char* name : {"fog_shadowed.json", "fog_noise.json"}) {
         SCOPED_TRACE(name);
@@ -341,7 +342,7 @@ TEST_F(BaselineTest, ShadowMapAndNoiseInputsMatchPostfx) {
         ASSERT_TRUE(renderer->render(fine, postfxImage, error)) << error;
 
         demo::Scene unchanged = scene;
-        unchanged.fog.density = 0.0f;
+        unchanged.fog.density = 1e-30f;
         const bool noise = scene.fog.noise.enabled;
         const double riemann = runOnRenderer(*renderer, options, unchanged, scene,
                                              bench::Baseline::SeedFixedRiemann, 0.1f, noise, postfxImage);

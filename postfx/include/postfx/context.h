@@ -7,6 +7,7 @@
 #pragma once
 
 #include <postfx/fog.h>
+#include <postfx/frame_plan.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
 #include <vulkan/vulkan.h>
@@ -79,6 +80,13 @@ public:
     // Records this frame's passes into frame.commandBuffer. The host must have waited until the
     // frame recorded framesInFlight frames ago has completed on the GPU.
     Status record(const FrameInfo& frame);
+
+    // What record(frame) would record now (docs/frame-plan.md): its passes in order, with what each reads
+    // and writes, and every resource postfx would hold afterwards with its size. Checks `frame` like
+    // record() (its command buffer may be null); records nothing, creates nothing. An effect that is off,
+    // or whose medium is empty, has no pass and no resource; a separate output image that no effect
+    // writes gets postfx.copy. Work on slow inputs (fog.noise) is listed only in the frame that redoes it.
+    Status plan(const FrameInfo& frame, FramePlan& out) const;
 
     // Timings of the passes recorded for `frameIndex`. Returns NotReady while the GPU has not finished
     // that frame, InvalidArgument if that frame's queries were overwritten by a newer frame (more than

@@ -67,4 +67,27 @@ VkImageAspectFlags aspectOfFormat(VkFormat format) {
     }
 }
 
+namespace {
+
+// Layouts a compute shader can sample a (depth) image in without a transition.
+bool sampleableLayout(VkImageLayout l) {
+    return l == VK_IMAGE_LAYOUT_GENERAL || l == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL ||
+           l == VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL ||
+           l == VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL ||
+           l == VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL;
+}
+
+}  // namespace
+
+HostImageUse useHostImage(VkImage image, VkFormat format, VkImageLayout hostLayout, bool storage,
+                          VkAccessFlags access) {
+    const VkImageLayout layout =
+        storage ? VK_IMAGE_LAYOUT_GENERAL
+                : (sampleableLayout(hostLayout) ? hostLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    // Layout transitions of depth/stencil images cover both aspects; the host's view selects depth.
+    const VkImageAspectFlags aspect = aspectOfFormat(format);
+    return {layout, acquireHostImage(image, aspect, hostLayout, layout, access),
+            releaseHostImage(image, aspect, layout, hostLayout, access)};
+}
+
 }  // namespace postfx::core

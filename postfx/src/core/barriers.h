@@ -35,4 +35,15 @@ void computeToCompute(const Gpu& gpu, VkCommandBuffer cmd);
 
 VkImageAspectFlags aspectOfFormat(VkFormat format);
 
+// The layout a host image is used in by postfx's passes, and the barriers taking it there and back.
+struct HostImageUse {
+    VkImageLayout layout;
+    ImageTransition acquire, release;
+};
+
+// Storage images (color, output) are used in GENERAL; sampled ones (depth, shadow map) in their own
+// layout when a shader may sample it there, else in SHADER_READ_ONLY_OPTIMAL.
+HostImageUse useHostImage(VkImage image, VkFormat format, VkImageLayout hostLayout, bool storage,
+                          VkAccessFlags access);
+
 }  // namespace postfx::core

@@ -2,6 +2,7 @@
 
 #include "core/barriers.h"
 #include "core/context_impl.h"
+#include "core/copy_pass.h"
 
 #include <string>
 
@@ -124,6 +125,46 @@ const ContextCreateInfo& Context::createInfo() const {
     return impl_->info;
 }
 
+Status Context::Impl::validateFrame(const FrameInfo& frame) const {
+    if (Status s = validateImage(frame.color, "color", isColorFormat,
+                                 "R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT", info.maxExtent);
+        !s)
+        return s;
+    if (Status s = validateImage(frame.depth, "depth", isDepthFormat, "a depth format", info.maxExtent); !s)
+        return s;
+    if (frame.depth.extent.width != frame.color.extent.width ||
+        frame.depth.extent.height != frame.color.extent.height)
+        return invalid("FrameInfo.depth.extent " + extentText(frame.depth.extent) +
+                       " differs from FrameInfo.color.extent " + extentText(frame.color.extent));
+    if (frame.fog.enabled) return fog::FogPass::validate(frame);
+    return Status::success();
+}
+
+void Context::Impl::buildPlan(const FrameInfo& frame, FramePlan& plan) const {
+    plan = {};
+    if (fog::FogPass::runs(frame)) fog::FogPass::plan(frame, fog.get(), info.framesInFlight, plan);
+    // A separate output that no effect writes still gets the host's color.
+    if (frame.output.present() && !plan.writes("host.output"))
+        plan.passes.push_back(core::CopyPass::plan(frame));
+}
+
+Status Context::plan(const FrameInfo& frame, FramePlan& out) const {
+    out = {};
+    const Impl& impl = *impl_;
+    // The presets change no pass or resource; Auto is planned as the preset it chose last (or Medium).
+    FrameInfo resolved = frame;
+    if (frame.fog.enabled && frame.fog.quality != FogQuality::Custom) {
+        FogQuality preset = frame.fog.quality;
+        if (preset == FogQuality::Auto && !impl.fogAutoQuality.chosen(preset).ok())
+            preset = FogQuality::Medium;
+        resolved.fog = applyFogQuality(frame.fog, preset);
+        resolved.fog.quality = preset;
+    }
+    if (Status s = impl.validateFrame(resolved); !s) return impl.report(s);
+    impl.buildPlan(resolved, out);
+    return Status::success();
+}
+
 Status Context::record(const FrameInfo& frame) {
     Impl& impl = *impl_;
     if (!frame.commandBuffer) return impl.report(invalid("FrameInfo.commandBuffer is VK_NULL_HANDLE"));
@@ -131,13 +172,6 @@ Status Context::record(const FrameInfo& frame) {
                                  "R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT", impl.info.maxExtent);
         !s)
         return impl.report(s);
-    if (Status s = validateImage(frame.depth, "depth", isDepthFormat, "a depth format", impl.info.maxExtent);
-        !s)
-        return impl.report(s);
-    if (frame.depth.extent.width != frame.color.extent.width ||
-        frame.depth.extent.height != frame.color.extent.height)
-        return impl.report(invalid("FrameInfo.depth.extent " + extentText(frame.depth.extent) +
-                                   " differs from FrameInfo.color.extent " + extentText(frame.color.extent)));
 
     // Quality presets replace steps/jitter/shadowKernel before the checks; Auto picks the preset (reading
     // finished frames' timings, so before the timer starts this frame).
@@ -145,7 +179,8 @@ Status Context::record(const FrameInfo& frame) {
     const FrameInfo* effective = &frame;
     const fog::AutoQualityKey autoKey{frame.color.extent.width, frame.color.extent.height,
                                       frame.fog.noise.enabled, frame.shadowMap.image.present()};
-    if (frame.fog.enabled && frame.fog.quality != FogQuality::Custom) {
+    const bool fogRuns = fog::FogPass::runs(frame);
+    if (fogRuns && frame.fog.quality != FogQuality::Custom) {
         FogQuality preset = frame.fog.quality;
         if (preset == FogQuality::Auto) {
             if (!impl.timer.enabled() && !impl.warnedAutoWithoutTimings) {
@@ -160,15 +195,15 @@ Status Context::record(const FrameInfo& frame) {
         resolved.fog.quality = preset;
         effective = &resolved;
     }
-    if (frame.fog.enabled) {
-        if (Status s = fog::FogPass::validate(*effective); !s) return impl.report(s);
-    }
+    if (Status s = impl.validateFrame(*effective); !s) return impl.report(s);
+    FramePlan& plan = impl.framePlan;  // reused: no allocation per frame once warm
+    impl.buildPlan(*effective, plan);
 
     core::DescriptorArena& arena = impl.arena(frame.frameIndex);
     if (Status s = arena.beginFrame(); !s) return impl.report(s);
     impl.timer.beginFrame(frame.commandBuffer, frame.frameIndex);
     impl.retirement.collect(frame.frameIndex, impl.info.framesInFlight);
-    if (frame.fog.enabled) {
+    if (fogRuns) {
         if (!impl.fog) impl.fog = std::make_unique<fog::FogPass>();
         if (Status s = impl.fog->record(impl.gpu, impl.info, arena, impl.timer, impl.retirement, *effective);
             !s)
@@ -176,7 +211,11 @@ Status Context::record(const FrameInfo& frame) {
         if (frame.fog.quality == FogQuality::Auto)
             impl.fogAutoQuality.recorded(frame.frameIndex, autoKey, effective->fog.quality);
     } else {
-        impl.retirement.retire(frame.frameIndex, std::move(impl.fog));  // its GPU objects go once unused
+        // Off or empty: nothing recorded, and its GPU objects go once the frames in flight are done.
+        impl.retirement.retire(frame.frameIndex, std::move(impl.fog));
+    }
+    if (plan.pass("postfx.copy")) {
+        if (Status s = impl.copy.record(impl.gpu, arena, impl.timer, *effective); !s) return impl.report(s);
     }
     return Status::success();
 }

@@ -46,6 +46,10 @@ public:
     bool ready() const { return image_.handle() != VK_NULL_HANDLE && generated_ && !pending_; }
 
     bool needsGeneration() const { return pending_; }  // recordGenerate() would record a dispatch
+    // After prepare(size, seed), recordGenerate() would record a dispatch.
+    bool wouldGenerate(uint32_t size, uint32_t seed) const {
+        return !image_.handle() || size != size_ || seed != seed_ || pending_;
+    }
 
     void release();  // frees the image and the pipeline (no-op when nothing is held)
 

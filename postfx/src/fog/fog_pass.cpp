@@ -30,30 +30,8 @@ bool isShadowFormat(VkFormat f) {
            f == VK_FORMAT_X8_D24_UNORM_PACK32 || f == VK_FORMAT_D24_UNORM_S8_UINT;
 }
 
-// Layouts a compute shader can sample a (depth) image in without a transition.
-bool sampleableLayout(VkImageLayout l) {
-    return l == VK_IMAGE_LAYOUT_GENERAL || l == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL ||
-           l == VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL ||
-           l == VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL ||
-           l == VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL;
-}
-
-// The layout a host image is used in by the fog, and the barriers taking it there and back.
-struct HostImageUse {
-    VkImageLayout layout;
-    core::ImageTransition acquire, release;
-};
-
-// Storage images (color, output) are used in GENERAL; sampled ones (depth, shadow map) in their own
-// layout when a shader may sample it there, else in SHADER_READ_ONLY_OPTIMAL.
-HostImageUse useHostImage(const ImageInput& image, bool storage, VkAccessFlags access) {
-    const VkImageLayout layout =
-        storage ? VK_IMAGE_LAYOUT_GENERAL
-                : (sampleableLayout(image.layout) ? image.layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-    // Layout transitions of depth/stencil images cover both aspects; the host's view selects depth.
-    const VkImageAspectFlags aspect = core::aspectOfFormat(image.format);
-    return {layout, core::acquireHostImage(image.image, aspect, image.layout, layout, access),
-            core::releaseHostImage(image.image, aspect, layout, image.layout, access)};
+core::HostImageUse useHostImage(const ImageInput& image, bool storage, VkAccessFlags access) {
+    return core::useHostImage(image.image, image.format, image.layout, storage, access);
 }
 
 }  // namespace
@@ -155,13 +133,91 @@ Status FogPass::prepareScatter(core::Retirement& retirement, uint64_t frameIndex
     return Status::success();
 }
 
+namespace {
+
+// Every uniform slot is 512 bytes: sizeof(FogUniforms) rounded up to 256, the largest
+// minUniformBufferOffsetAlignment Vulkan allows, so the fog's memory is the same on every device.
+constexpr VkDeviceSize kUniformSlotBytes = (sizeof(gpu::FogUniforms) + 255) / 256 * 256;
+
+uint32_t groupsFor(uint32_t size) {
+    return (size + gpu::kFogGroupSize - 1) / gpu::kFogGroupSize;
+}
+
+// The fog's decisions for a frame, shared by plan() and record().
+struct FogFrame {
+    bool noiseOn, generatedNoise, shadowRead, inPlace, reduced;
+    glm::uvec2 full, march;
+};
+
+FogFrame decide(const FrameInfo& frame) {
+    FogFrame f;
+    const FogNoiseSettings& noise = frame.fog.noise;
+    f.noiseOn = noise.enabled;
+    f.generatedNoise = noise.enabled && !noise.hostTexture;
+    // The shadow map only matters to the sun's term: with no sunlight it is not read.
+    const glm::vec3 e = frame.sun.illuminance;
+    f.shadowRead = frame.shadowMap.image.present() && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f);
+    f.inPlace = !frame.output.present();
+    f.full = {frame.color.extent.width, frame.color.extent.height};
+    f.march = fogMarchExtent(f.full.x, f.full.y, frame.fog.resolutionScale);
+    f.reduced = f.march != f.full;
+    return f;
+}
+
+uint64_t texelBytes(VkFormat colorFormat) {
+    return colorFormat == VK_FORMAT_R32G32B32A32_SFLOAT ? 16 : 8;
+}
+
+}  // namespace
+
+bool FogPass::runs(const FrameInfo& frame) {
+    return frame.fog.enabled && !fogMediumEmpty(frame.fog, frame.fog.noise.enabled);
+}
+
+void FogPass::plan(const FrameInfo& frame, const FogPass* existing, uint32_t framesInFlight,
+                   FramePlan& plan) {
+    const FogFrame f = decide(frame);
+    const FogNoiseSettings& noise = frame.fog.noise;
+    const std::string target = f.inPlace ? "host.color" : "host.output";
+    if (f.generatedNoise) {
+        const bool generate =
+            !existing || !existing->noise_ || existing->noise_->wouldGenerate(noise.textureSize, noise.seed);
+        if (generate) {
+            const uint32_t groups = noise.textureSize / gpu::kNoiseGroupSize;
+            plan.passes.push_back({"fog.noise", "fog", {}, {"fog.noise"}, {groups, groups, groups}});
+        }
+        const uint64_t edge = noise.textureSize;
+        plan.resources.push_back({"fog.noise", "fog", edge * edge * edge});
+    } else if (!f.noiseOn) {
+        plan.resources.push_back({"fog.no_noise", "fog", 1});
+    }
+    PlannedPass march{"fog.raymarch",
+                      "fog",
+                      {"host.color", "host.depth"},
+                      {},
+                      {groupsFor(f.march.x), groupsFor(f.march.y), 1}};
+    if (f.reduced) march.reads = {"host.depth"};  // the color is read by the upsample
+    if (f.shadowRead) march.reads.push_back("host.shadow_map");
+    if (f.noiseOn) march.reads.push_back(f.generatedNoise ? "fog.noise" : "host.noise");
+    march.reads.push_back("fog.uniforms");
+    march.writes = {f.reduced ? "fog.scatter" : target};
+    plan.passes.push_back(march);
+    if (f.reduced) {
+        plan.passes.push_back({"fog.upsample",
+                               "fog",
+                               {"host.color", "host.depth", "fog.scatter", "fog.uniforms"},
+                               {target},
+                               {groupsFor(f.full.x), groupsFor(f.full.y), 1}});
+        plan.resources.push_back(
+            {"fog.scatter", "fog", uint64_t(f.march.x) * f.march.y * texelBytes(frame.color.format)});
+    }
+    plan.resources.push_back({"fog.uniforms", "fog", kUniformSlotBytes * framesInFlight});
+}
+
 Status FogPass::createResources(const core::Gpu& gpu, const ContextCreateInfo& info) {
     gpu_ = &gpu;
-    const VkDeviceSize align =
-        std::max<VkDeviceSize>(gpu.properties.limits.minUniformBufferOffsetAlignment, 16);
-    uniformStride_ = (sizeof(gpu::FogUniforms) + align - 1) / align * align;
     slots_ = info.framesInFlight;
-    if (Status s = uniforms_.create(gpu, uniformStride_ * slots_, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true,
+    if (Status s = uniforms_.create(gpu, kUniformSlotBytes * slots_, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true,
                                     "fog.uniforms");
         !s)
         return s;
@@ -183,15 +239,6 @@ Status FogPass::createResources(const core::Gpu& gpu, const ContextCreateInfo& i
                                "vkCreateSampler for fog noise");
         !s)
         return s;
-
-    core::ImageDesc one;
-    one.format = VK_FORMAT_R32_SFLOAT;
-    one.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
-    if (Status s = noShadowMap_.create(gpu, one, "fog.no_shadow_map"); !s) return s;
-    one.type = VK_IMAGE_TYPE_3D;
-    one.format = VK_FORMAT_R8_UNORM;
-    if (Status s = noNoise_.create(gpu, one, "fog.no_noise"); !s) return s;
-    standInsReady_ = false;
     return Status::success();
 }
 
@@ -204,29 +251,39 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
         }
     }
     VkCommandBuffer cmd = frame.commandBuffer;
+    const FogFrame f = decide(frame);
     const FogNoiseSettings& noise = frame.fog.noise;
-    const bool noiseOn = noise.enabled;
-    const bool generatedNoise = noiseOn && !noise.hostTexture;
     // A texture of another size, or one nothing reads any more, may still be sampled by frames in flight.
-    if (noise_ && (!generatedNoise || noise_->size() != noise.textureSize))
+    if (noise_ && (!f.generatedNoise || noise_->size() != noise.textureSize))
         retirement.retire(frame.frameIndex, std::move(noise_));
-    if (generatedNoise) {
+    if (f.generatedNoise) {
         if (!noise_) noise_ = std::make_unique<FogNoise>();
         if (Status s = noise_->prepare(gpu, noise.textureSize, noise.seed); !s) return s;
     }
-
-    // One-time: the stand-ins go to SHADER_READ_ONLY (never sampled: the flags skip them).
-    if (!standInsReady_) {
-        for (core::GpuImage* image : {&noShadowMap_, &noNoise_}) {
-            core::ImageTransition t;
-            t.image = image->handle();
-            t.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-            t.dstAccess = VK_ACCESS_SHADER_READ_BIT;
-            core::transition(gpu, cmd, t);
-        }
-        standInsReady_ = true;
+    // The noise stand-in exists only while noise is off.
+    if (f.noiseOn && noNoise_) {
+        retirement.retire(frame.frameIndex, std::move(noNoise_));
+        noNoiseReady_ = false;
     }
-    if (generatedNoise && noise_->needsGeneration()) {
+    if (!f.noiseOn && !noNoise_) {
+        core::ImageDesc one;
+        one.type = VK_IMAGE_TYPE_3D;
+        one.format = VK_FORMAT_R8_UNORM;
+        one.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+        auto image = std::make_unique<core::GpuImage>();
+        if (Status s = image->create(gpu, one, "fog.no_noise"); !s) return s;
+        noNoise_ = std::move(image);
+        noNoiseReady_ = false;
+    }
+    if (noNoise_ && !noNoiseReady_) {  // to SHADER_READ_ONLY once; its contents are never read
+        core::ImageTransition t;
+        t.image = noNoise_->handle();
+        t.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        t.dstAccess = VK_ACCESS_SHADER_READ_BIT;
+        core::transition(gpu, cmd, t);
+        noNoiseReady_ = true;
+    }
+    if (f.generatedNoise && noise_->needsGeneration()) {
         timer.beginPass(cmd, "fog.noise");
         Status s;
         noise_->recordGenerate(cmd, arena, s);
@@ -235,24 +292,21 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
     }
 
     // Uniforms for this frame's slot (the host guarantees the frame that used it last has completed).
-    const bool shadowOn = frame.shadowMap.image.present();
-    const gpu::FogUniforms u = buildUniforms(frame, info.depth, noiseOn, shadowOn);
-    const VkDeviceSize offset = uniformStride_ * (frame.frameIndex % slots_);
+    const gpu::FogUniforms u = buildUniforms(frame, info.depth, f.noiseOn, f.shadowRead);
+    const VkDeviceSize offset = kUniformSlotBytes * (frame.frameIndex % slots_);
     std::memcpy(static_cast<char*>(uniforms_.mapped()) + offset, &u, sizeof u);
 
     // Resolution scale: march into scatter_ at the reduced size, then upsample; at full size, one pass.
-    const VkExtent2D full = frame.color.extent;
-    const glm::uvec2 marchSize = fogMarchExtent(full.width, full.height, frame.fog.resolutionScale);
-    const bool reduced = marchSize.x != full.width || marchSize.y != full.height;
     core::ComputePipeline* march = nullptr;
     core::ComputePipeline* upsample = nullptr;
-    if (Status s = pipeline(reduced ? Kernel::RaymarchReduced : Kernel::Raymarch, frame.color.format, march);
+    if (Status s =
+            pipeline(f.reduced ? Kernel::RaymarchReduced : Kernel::Raymarch, frame.color.format, march);
         !s)
         return s;
-    if (reduced) {
+    if (f.reduced) {
         if (Status s = pipeline(Kernel::Upsample, frame.color.format, upsample); !s) return s;
-        if (Status s = prepareScatter(retirement, frame.frameIndex, frame.color.format,
-                                      {marchSize.x, marchSize.y, 1});
+        if (Status s =
+                prepareScatter(retirement, frame.frameIndex, frame.color.format, {f.march.x, f.march.y, 1});
             !s)
             return s;
     } else if (scatter_) {
@@ -260,54 +314,51 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
     }
     VkDescriptorSet marchSet = VK_NULL_HANDLE, upsampleSet = VK_NULL_HANDLE;
     if (Status s = arena.allocate(march->setLayout(), marchSet); !s) return s;
-    if (reduced) {
+    if (f.reduced) {
         if (Status s = arena.allocate(upsample->setLayout(), upsampleSet); !s) return s;
     }
 
-    const bool inPlace = !frame.output.present();
     constexpr VkAccessFlags kRead = VK_ACCESS_SHADER_READ_BIT, kWrite = VK_ACCESS_SHADER_WRITE_BIT;
-    const HostImageUse depth = useHostImage(frame.depth, false, kRead);
+    const core::HostImageUse depth = useHostImage(frame.depth, false, kRead);
     // At most color, depth, output and shadow map: a fixed array, no allocation per frame.
-    std::array<HostImageUse, 4> useStorage{};
+    std::array<core::HostImageUse, 4> useStorage{};
     size_t useCount = 0;
-    useStorage[useCount++] = useHostImage(frame.color, true, inPlace ? kRead | kWrite : kRead);
+    useStorage[useCount++] = useHostImage(frame.color, true, f.inPlace ? kRead | kWrite : kRead);
     useStorage[useCount++] = depth;
-    if (!inPlace) useStorage[useCount++] = useHostImage(frame.output, true, kWrite);
-    if (shadowOn) useStorage[useCount++] = useHostImage(frame.shadowMap.image, false, kRead);
-    const std::span<const HostImageUse> uses(useStorage.data(), useCount);
-    const VkImageLayout shadowLayout =
-        shadowOn ? uses.back().layout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    if (!f.inPlace) useStorage[useCount++] = useHostImage(frame.output, true, kWrite);
+    if (f.shadowRead) useStorage[useCount++] = useHostImage(frame.shadowMap.image, false, kRead);
+    const std::span<const core::HostImageUse> uses(useStorage.data(), useCount);
 
+    // Without a shadow map the depth image stands in at its binding (never sampled: the flag is off).
+    const VkImageView shadowView = f.shadowRead ? frame.shadowMap.image.view : frame.depth.view;
+    const VkImageLayout shadowLayout = f.shadowRead ? uses.back().layout : depth.layout;
     const VkImageView noiseView =
-        !noiseOn ? noNoise_.view() : (generatedNoise ? noise_->view() : noise.hostTexture);
+        !f.noiseOn ? noNoise_->view() : (f.generatedNoise ? noise_->view() : noise.hostTexture);
     const VkImageLayout noiseLayout =
-        noiseOn && !generatedNoise ? noise.hostTextureLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+        f.noiseOn && !f.generatedNoise ? noise.hostTextureLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     for (VkDescriptorSet set : {marchSet, upsampleSet}) {
         if (!set) continue;
         core::DescriptorWrites writes(set);
         writes.storageImage(gpu::kFogBindingColorIn, frame.color.view)
-            .storageImage(gpu::kFogBindingColorOut, inPlace ? frame.color.view : frame.output.view)
+            .storageImage(gpu::kFogBindingColorOut, f.inPlace ? frame.color.view : frame.output.view)
             .sampledImage(gpu::kFogBindingDepth, frame.depth.view, depth.layout, nearestClamp_)
-            .sampledImage(gpu::kFogBindingShadowMap,
-                          shadowOn ? frame.shadowMap.image.view : noShadowMap_.view(), shadowLayout,
-                          nearestClamp_)
+            .sampledImage(gpu::kFogBindingShadowMap, shadowView, shadowLayout, nearestClamp_)
             .sampledImage(gpu::kFogBindingNoise, noiseView, noiseLayout, linearRepeat_)
             .uniformBuffer(gpu::kFogBindingUniforms, uniforms_.handle(), offset, sizeof(gpu::FogUniforms));
-        if (reduced) writes.storageImage(gpu::kFogBindingScatter, scatter_->view());
+        if (f.reduced) writes.storageImage(gpu::kFogBindingScatter, scatter_->view());
         writes.apply(gpu);
     }
 
-    for (const HostImageUse& use : uses)
+    for (const core::HostImageUse& use : uses)
         core::transition(gpu, cmd, use.acquire);
-    const uint32_t groups = gpu::kFogGroupSize;
-    auto dispatch = [&](const core::ComputePipeline& p, VkDescriptorSet set, uint32_t w, uint32_t h) {
+    auto dispatch = [&](const core::ComputePipeline& p, VkDescriptorSet set, glm::uvec2 size) {
         timer.beginPass(cmd, p.name());
         p.bind(cmd, set, nullptr);
-        gpu.fn.vkCmdDispatch(cmd, (w + groups - 1) / groups, (h + groups - 1) / groups, 1);
+        gpu.fn.vkCmdDispatch(cmd, groupsFor(size.x), groupsFor(size.y), 1);
         timer.endPass(cmd);
     };
-    if (!reduced) {
-        dispatch(*march, marchSet, full.width, full.height);
+    if (!f.reduced) {
+        dispatch(*march, marchSet, f.full);
     } else {
         // The scatter image's old contents are discarded; its last reads (the previous frame's upsample)
         // finish before the march writes it.
@@ -316,7 +367,7 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
         discard.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
         discard.dstAccess = kWrite;
         core::transition(gpu, cmd, discard);
-        dispatch(*march, marchSet, marchSize.x, marchSize.y);
+        dispatch(*march, marchSet, f.march);
         core::ImageTransition written;
         written.image = scatter_->handle();
         written.oldLayout = VK_IMAGE_LAYOUT_GENERAL;
@@ -324,9 +375,9 @@ Status FogPass::record(const core::Gpu& gpu, const ContextCreateInfo& info, core
         written.srcAccess = kWrite;
         written.dstAccess = kRead;
         core::transition(gpu, cmd, written);
-        dispatch(*upsample, upsampleSet, full.width, full.height);
+        dispatch(*upsample, upsampleSet, f.full);
     }
-    for (const HostImageUse& use : uses)
+    for (const core::HostImageUse& use : uses)
         core::transition(gpu, cmd, use.release);
     return Status::success();
 }
@@ -338,14 +389,13 @@ void FogPass::release() {
         for (core::ComputePipeline& p : kernel)
             p.reset();
     uniforms_.reset();
-    noShadowMap_.reset();
     noNoise_.reset();
     if (gpu_) {
         if (nearestClamp_) gpu_->fn.vkDestroySampler(gpu_->device, nearestClamp_, gpu_->allocator);
         if (linearRepeat_) gpu_->fn.vkDestroySampler(gpu_->device, linearRepeat_, gpu_->allocator);
     }
     nearestClamp_ = linearRepeat_ = VK_NULL_HANDLE;
-    standInsReady_ = false;
+    noNoiseReady_ = false;
     gpu_ = nullptr;
 }
 

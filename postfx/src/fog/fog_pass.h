@@ -1,9 +1,10 @@
-// The ray-marched fog as recorded into the host's command buffer: validation of its inputs, the
-// resources it owns (pipelines, uniform ring, samplers, noise texture, 1-texel stand-ins for absent
-// inputs) and the barriers around the host's images.
+// The ray-marched fog as recorded into the host's command buffer: validation of its inputs, its part of
+// the frame plan, the resources it owns (pipelines, uniform ring, samplers, noise texture, scatter image, a
+// 1-texel noise stand-in when noise is off) and the barriers around the host's images.
 #pragma once
 
 #include <postfx/context.h>
+#include <postfx/frame_plan.h>
 
 #include "core/compute_pipeline.h"
 #include "core/gpu_resources.h"
@@ -24,7 +25,16 @@ public:
     // naming the field otherwise. Records nothing.
     static Status validate(const FrameInfo& frame);
 
-    // Records the fog for `frame` (already validated, fog enabled). Creates resources on first need;
+    // Whether the fog records anything for `frame`: enabled, and a medium that is not empty everywhere
+    // (density 0, noise multiplier 0 or threshold 1). Otherwise it has no pass, pipeline or memory.
+    static bool runs(const FrameInfo& frame);
+
+    // Appends the fog's passes and resources for `frame` (validated, quality resolved, runs()) to `plan`.
+    // `existing` is the context's FogPass, null when none is held (then nothing is generated yet).
+    static void plan(const FrameInfo& frame, const FogPass* existing, uint32_t framesInFlight,
+                     FramePlan& plan);
+
+    // Records the fog for `frame` (validated, runs()) as plan() lists it. Creates resources on first need;
     // a noise texture no longer needed (size changed, noise off) goes to `retirement`.
     Status record(const core::Gpu& gpu, const ContextCreateInfo& info, core::DescriptorArena& arena,
                   core::PassTimer& timer, core::Retirement& retirement, const FrameInfo& frame);
@@ -46,14 +56,13 @@ private:
     const core::Gpu* gpu_ = nullptr;
     core::ComputePipeline pipelines_[3][2];    // [Kernel][0: RGBA16F, 1: RGBA32F]
     std::unique_ptr<core::GpuImage> scatter_;  // reduced resolution only
-    core::GpuBuffer uniforms_;                 // one aligned slot per frame in flight, persistently mapped
-    VkDeviceSize uniformStride_ = 0;
+    core::GpuBuffer uniforms_;  // one kUniformSlotBytes slot per frame in flight, persistently mapped
     uint32_t slots_ = 0;
     VkSampler nearestClamp_ = VK_NULL_HANDLE;
     VkSampler linearRepeat_ = VK_NULL_HANDLE;
-    core::GpuImage noShadowMap_;  // 1×1 stand-in when the host gives no shadow map
-    core::GpuImage noNoise_;      // 1×1×1 stand-in when noise is off
-    bool standInsReady_ = false;
+    // 1×1×1 stand-in bound when noise is off (never sampled: the flags skip it); created on first need.
+    std::unique_ptr<core::GpuImage> noNoise_;
+    bool noNoiseReady_ = false;
     std::unique_ptr<FogNoise> noise_;
 };
 

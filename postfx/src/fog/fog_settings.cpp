@@ -106,8 +106,10 @@ double fogMediumTop(const FogSettings& s, bool noiseEnabled) {
     if (fogMediumEmpty(s, noiseEnabled)) return -kInf;
     if (s.heightFalloff <= 0.0f) return kInf;
     const double noiseMax =
-        noiseEnabled ? std::clamp(1.0 - double(s.noise.threshold), 0.0, 1.0) * double(s.noise.multiplier) : 1.0;
-    // density · noise_max · e^{-k·y} = ε / max_distance  <=>  y = ln(density · noise_max · max_distance / ε) / k
+        noiseEnabled ? std::clamp(1.0 - double(s.noise.threshold), 0.0, 1.0) * double(s.noise.multiplier)
+                     : 1.0;
+    // density · noise_max · e^{-k·y} = ε / max_distance  <=>  y = ln(density · noise_max · max_distance / ε)
+    // / k
     const double bound = double(s.density) * noiseMax * double(s.maxDistance) / kNegligibleOpticalDepth;
     return std::log(bound) / double(s.heightFalloff);
 }

@@ -28,7 +28,8 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
     u.ambient = glm::vec4(frame.ambient, 0.0f);
     u.albedo = glm::vec4(s.albedo, 0.0f);
     u.medium = glm::vec4(s.density, s.heightFalloff, clampedAnisotropy(s.anisotropy), s.maxDistance);
-    u.heights = glm::vec4(float(camera.y - double(s.baseHeight)), float(fogMediumTop(s, noiseEnabled)), 0.0f, 0.0f);
+    u.heights =
+        glm::vec4(float(camera.y - double(s.baseHeight)), float(fogMediumTop(s, noiseEnabled)), 0.0f, 0.0f);
 
     const double scale = 0.01 * double(s.noise.tiling);
     const glm::dvec3 noiseAtCamera = (camera - glm::dvec3(s.noise.wind) * frame.timeSeconds) * scale;
