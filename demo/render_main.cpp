@@ -2,6 +2,8 @@
 // writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog comes from
 // postfx's CPU reference (Renderer::renderReference) instead of the GPU pass.
 #include "cli_args.h"
+
+#include <nlohmann/json.hpp>
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
 #include "scene/scene.h"
@@ -26,6 +28,7 @@ constexpr uint32_t kMaxReferenceSteps = 1u << 20;
 const char* kUsage =
     "usage: postfx-render [SCENE.json] -o OUT.exr|OUT.png [--size WxH] [--frames N] [--standard-z]\n"
     "                     [--infinite-far] [--validation] [--reference [--reference-steps N]]\n"
+    "       postfx-render [SCENE.json] --print-plan [--size WxH] [--frames N] [--standard-z] ...\n"
     "Renders SCENE.json (the built-in default scene when omitted) headless and writes OUT:\n"
     "  .exr  linear radiance [cd/m^2], half-float RGBA\n"
     "  .png  tonemapped with the camera's ev100 (ACES fitted, sRGB)\n"
@@ -40,6 +43,9 @@ const char* kUsage =
     "  --reference        the fog from postfx's CPU reference (double precision, no jitter, all\n"
     "                     CPU threads) instead of the GPU pass, over the same GPU frame (the last)\n"
     "  --reference-steps N  march steps per pixel of --reference (default 4096), 1..1048576\n"
+    "  --print-plan       print postfx's frame plan of the last frame (docs/frame-plan.md) as JSON on\n"
+    "                     stdout instead of writing an image: the frames before it are rendered\n"
+    "                     (so --frames 2 shows the steady state, without one-time work)\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
 
 struct Args {
@@ -49,6 +55,7 @@ struct Args {
     bool reference = false;
     uint32_t referenceSteps = kDefaultReferenceSteps;
     bool referenceStepsGiven = false;
+    bool printPlan = false;
 };
 
 Args parseArgs(int argc, char** argv) {
@@ -71,6 +78,8 @@ Args parseArgs(int argc, char** argv) {
             args.render.infiniteFar = true;
         } else if (a == "--validation") {
             args.validation = true;
+        } else if (a == "--print-plan") {
+            args.printPlan = true;
         } else if (a == "--reference") {
             args.reference = true;
         } else if (a == "--reference-steps") {
@@ -83,6 +92,11 @@ Args parseArgs(int argc, char** argv) {
         } else {
             throw cli::UsageError{"more than one scene file given ('" + args.scene + "', '" + a + "')"};
         }
+    }
+    if (args.printPlan) {
+        if (!args.output.empty() || args.reference)
+            throw cli::UsageError{"--print-plan writes no image: leave out -o and --reference"};
+        return args;
     }
     if (args.output.empty())
         throw cli::UsageError{"no output file given (-o OUT.exr or -o OUT.png; see --help)"};
@@ -102,6 +116,39 @@ int fail(const std::string& message, int code = 1) {
     return code;
 }
 
+// {"passes":[{"name", "effect", "reads", "writes", "groups"}], "resources":[{"name", "effect", "bytes"}],
+// "total_bytes"}: postfx's own passes and memory only.
+nlohmann::ordered_json planJson(const postfx::FramePlan& plan) {
+    nlohmann::ordered_json passes = nlohmann::ordered_json::array(),
+                           resources = nlohmann::ordered_json::array();
+    for (const postfx::PlannedPass& p : plan.passes)
+        passes.push_back({{"name", p.name},
+                          {"effect", p.effect},
+                          {"reads", p.reads},
+                          {"writes", p.writes},
+                          {"groups", {p.groups[0], p.groups[1], p.groups[2]}}});
+    for (const postfx::PlannedResource& r : plan.resources)
+        resources.push_back({{"name", r.name}, {"effect", r.effect}, {"bytes", r.bytes}});
+    return {{"passes", passes}, {"resources", resources}, {"total_bytes", plan.totalBytes()}};
+}
+
+// --print-plan: renders frames 0..frames-2, then prints the plan of frame frames-1.
+int printPlan(demo::VulkanHost& host, const Args& args, const demo::Scene& scene) {
+    std::string error;
+    demo::RenderOptions options = args.render;
+    const uint32_t before = options.frames - 1;
+    options.frames = std::max(before, 1u);
+    auto renderer = demo::Renderer::create(host, options, error);
+    if (!renderer) return fail(error);
+    if (!renderer->setScene(scene, error)) return fail(error);
+    demo::ImageF unused;
+    if (before > 0 && !renderer->render(scene, unused, error)) return fail(error);
+    postfx::FramePlan plan;
+    if (!renderer->plan(scene, before, plan, error)) return fail(error);
+    std::printf("%s\n", planJson(plan).dump(2).c_str());
+    return 0;
+}
+
 int run(const Args& args) {
     demo::Scene scene = demo::defaultScene();
     std::string error;
@@ -111,6 +158,12 @@ int run(const Args& args) {
     hostOptions.validation = args.validation;
     auto host = demo::VulkanHost::create(hostOptions, error);
     if (!host) return fail("Vulkan: " + error);
+    if (args.printPlan) {
+        const int code = printPlan(*host, args, scene);
+        if (size_t n = host->validationMessageCount(); n > 0)
+            return fail(std::to_string(n) + " Vulkan validation message(s), printed above");
+        return code;
+    }
     {
         auto renderer = demo::Renderer::create(*host, args.render, error);
         if (!renderer) return fail(error);

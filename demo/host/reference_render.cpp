@@ -62,7 +62,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
 
     const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns
     const ShadowFit fit = r.shadowFit(scene);
-    const bool shadows = r.drawsShadows(scene, fit);
+    const bool shadows = r.drawsShadows(scene, fit, frameIndex);
     const PostfxInputs in = r.postfxInputs(scene, frameIndex, fit, shadows);
     const bool fog = in.fog.enabled;
     const bool noise = fog && in.fog.noise.enabled && !in.fog.noise.hostTexture;

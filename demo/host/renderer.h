@@ -61,7 +61,9 @@ struct ShadowMapInfo {
     VkSampler compareSampler = VK_NULL_HANDLE;  // nearest, compare LESS_OR_EQUAL (1 = lit), border depth 1
     glm::mat4 viewProj{1.0f};  // world -> shadow clip: xy in [-1, 1] (uv = xy / 2 + 1/2), depth in [0, 1]
     float texelWorldSize = 0;  // [m] edge of one texel
-    bool enabled = false;      // the last recorded frame drew it (sun.shadows and a box or sphere exist)
+    // The last recorded frame drew it: sun.shadows, a box or sphere to cast, and something reads it (the
+    // lighting when the sun gives light, or postfx's frame plan).
+    bool enabled = false;
 };
 
 class Renderer {
@@ -116,6 +118,10 @@ public:
     // host pass that wants exactly postfx's inputs after recordFrame (the benchmark's baselines).
     // Records nothing.
     postfx::FrameInfo frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const;
+
+    // postfx's plan (docs/frame-plan.md) for frame `frameIndex` of `scene` as recordFrame(cmd, scene,
+    // frameIndex) would record it now (given what postfx already holds, e.g. a generated noise texture).
+    bool plan(const Scene& scene, uint64_t frameIndex, postfx::FramePlan& out, std::string& error) const;
 
     const ImageInfo& hdrImage() const;    // RGBA16F radiance; usage STORAGE | SAMPLED | TRANSFER_SRC
     const ImageInfo& depthImage() const;  // D32_SFLOAT, DEPTH_STENCIL_READ_ONLY_OPTIMAL

@@ -108,16 +108,40 @@ bool Renderer::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t fra
     return impl_->recordFrame(cmd, scene, frameIndex, fogOutput, error);
 }
 
+bool Renderer::Impl::drawsShadows(const Scene& scene, const ShadowFit& fit, uint64_t frameIndex) const {
+    if (!scene.sun.shadows || !fit.valid) return false;
+    const glm::vec3 e = scene.sun.illuminance;
+    if (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f) return true;  // the lighting's sun term reads it
+    // Otherwise only postfx might: ask its plan for the frame as it would get it, shadow map included.
+    postfx::FramePlan plan;
+    const postfx::FrameInfo frame =
+        frameInfo(VK_NULL_HANDLE, scene, frameIndex, fit, true, postfx::ImageInput{});
+    return postfx->plan(frame, plan).ok() && plan.reads("host.shadow_map");
+}
+
+bool Renderer::plan(const Scene& scene, uint64_t frameIndex, postfx::FramePlan& out,
+                    std::string& error) const {
+    const ShadowFit fit = impl_->shadowFit(scene);
+    const postfx::FrameInfo frame =
+        impl_->frameInfo(VK_NULL_HANDLE, scene, frameIndex, fit, impl_->drawsShadows(scene, fit, frameIndex),
+                         postfx::ImageInput{});
+    if (postfx::Status s = impl_->postfx->plan(frame, out); !s) {
+        error = "postfx plan: " + s.message;
+        return false;
+    }
+    return true;
+}
+
 postfx::FrameInfo Renderer::frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const {
     const ShadowFit fit = impl_->shadowFit(scene);
-    return impl_->frameInfo(cmd, scene, frameIndex, fit, impl_->drawsShadows(scene, fit),
+    return impl_->frameInfo(cmd, scene, frameIndex, fit, impl_->drawsShadows(scene, fit, frameIndex),
                             postfx::ImageInput{});
 }
 
 bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                                  const postfx::ImageInput& fogOutput, std::string& error) {
     const ShadowFit fit = shadowFit(scene);
-    const bool shadows = drawsShadows(scene, fit);
+    const bool shadows = drawsShadows(scene, fit, frameIndex);
     shadowInfo.enabled = shadows;
     shadowInfo.viewProj = fit.viewProj;
     shadowInfo.texelWorldSize = fit.texelWorldSize;

@@ -66,11 +66,10 @@ struct Renderer::Impl {
     bool createPostfx(std::string& error);
     void recordReadback(VkCommandBuffer cmd) const;
 
-    // The shadow map fit and whether the frame draws it (sun.shadows and something to cast).
+    // The shadow map fit, and whether frame `frameIndex` draws it: sun.shadows, something to cast, and a
+    // reader: the lighting (when the sun gives light) or postfx (when its frame plan reads host.shadow_map).
     ShadowFit shadowFit(const Scene& scene) const;
-    bool drawsShadows(const Scene& scene, const ShadowFit& fit) const {
-        return scene.sun.shadows && fit.valid;
-    }
+    bool drawsShadows(const Scene& scene, const ShadowFit& fit, uint64_t frameIndex) const;
     // The camera's projection, exactly as the G-buffer pass uses it.
     glm::mat4 projection(const Scene& scene) const;
     // postfx's per-frame inputs for frame `frameIndex` of `scene`.

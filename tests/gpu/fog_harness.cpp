@@ -164,6 +164,7 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
                                          VK_FORMAT_R32_SFLOAT,
                                          {images.shadowWidth, images.shadowHeight},
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            if (onBeforeRecord) onBeforeRecord(frame);
             recordStatus = context.record(frame);
 
             // Read back, trusting postfx to have returned the images in the layouts they came in.

@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <functional>
 #include <vector>
 
 namespace test {
@@ -33,6 +34,9 @@ public:
     // reads back the color image (and the output image when separate). Returns the record() status.
     postfx::Status run(postfx::Context& context, const FogHarnessImages& images, postfx::FrameInfo frame,
                        std::vector<float>& color, std::vector<float>* output = nullptr);
+
+    // Called with the frame as record() gets it (images filled in), just before record().
+    std::function<void(const postfx::FrameInfo&)> onBeforeRecord;
 
 private:
     demo::VulkanHost& host_;
