@@ -36,7 +36,8 @@ const char* kUsage =
     "runs on the same frames. Writes results.csv, results.md and plot.svg to --out.\n"
     "options (defaults in brackets; --quick changes the defaults to a tiny sweep for CI):\n"
     "  --scenes LIST          scene files in --scene-dir, without .json "
-    "[fog_default,fog_height,fog_shadowed]\n"
+    "[fog_default,fog_height,fog_shadowed,\n"
+    "                         fog_valley,fog_valley_unskipped]\n"
     "  --scene-dir DIR        [demo/scenes if it exists here, else the source tree's demo/scenes]\n"
     "  --size WxH             frame size [1920x1080; quick: 64x36]\n"
     "  --warmup W             frames recorded before timing, per setting, at least [5; quick: 1]\n"
@@ -61,7 +62,8 @@ struct UsageError {
 };
 
 struct Args {
-    std::vector<std::string> scenes = {"fog_default", "fog_height", "fog_shadowed"};
+    std::vector<std::string> scenes = {"fog_default", "fog_height", "fog_shadowed", "fog_valley",
+                                       "fog_valley_unskipped"};
     std::string sceneDir;
     bench::RunnerOptions runner;
     uint32_t referenceSteps = 4096;
