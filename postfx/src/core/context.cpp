@@ -63,6 +63,19 @@ Status validateImage(const ImageInput& image, const char* name, bool (*formatOk)
     return Status::success();
 }
 
+// `frame` with the fog's steps, jitter and shadow kernel set by `preset` (Context::record and plan).
+FrameInfo withFogPreset(const FrameInfo& frame, FogQuality preset) {
+    FrameInfo resolved = frame;
+    resolved.fog = applyFogQuality(frame.fog, preset);
+    resolved.fog.quality = preset;
+    return resolved;
+}
+
+// A separate output that no effect writes still gets the host's color (postfx.copy).
+bool needsCopy(const FrameInfo& frame, bool fogRuns) {
+    return frame.output.present() && !fogRuns;
+}
+
 }  // namespace
 
 Status Context::Impl::report(Status status) const {
@@ -142,24 +155,19 @@ Status Context::Impl::validateFrame(const FrameInfo& frame) const {
 
 void Context::Impl::buildPlan(const FrameInfo& frame, FramePlan& plan) const {
     plan = {};
-    if (fog::FogPass::runs(frame)) fog::FogPass::plan(frame, fog.get(), info.framesInFlight, plan);
-    // A separate output that no effect writes still gets the host's color.
-    if (frame.output.present() && !plan.writes("host.output"))
-        plan.passes.push_back(core::CopyPass::plan(frame));
+    const bool fogRuns = fog::FogPass::runs(frame);
+    if (fogRuns) fog::FogPass::plan(frame, fog.get(), info.framesInFlight, plan);
+    if (needsCopy(frame, fogRuns)) plan.passes.push_back(core::CopyPass::plan(frame));
 }
 
 Status Context::plan(const FrameInfo& frame, FramePlan& out) const {
     out = {};
     const Impl& impl = *impl_;
     // The presets change no pass or resource; Auto is planned as the preset it chose last (or Medium).
-    FrameInfo resolved = frame;
-    if (frame.fog.enabled && frame.fog.quality != FogQuality::Custom) {
-        FogQuality preset = frame.fog.quality;
-        if (preset == FogQuality::Auto && !impl.fogAutoQuality.chosen(preset).ok())
-            preset = FogQuality::Medium;
-        resolved.fog = applyFogQuality(frame.fog, preset);
-        resolved.fog.quality = preset;
-    }
+    FogQuality preset = frame.fog.quality;
+    if (preset == FogQuality::Auto && !impl.fogAutoQuality.chosen(preset).ok()) preset = FogQuality::Medium;
+    const FrameInfo resolved =
+        fog::FogPass::runs(frame) && preset != FogQuality::Custom ? withFogPreset(frame, preset) : frame;
     if (Status s = impl.validateFrame(resolved); !s) return impl.report(s);
     impl.buildPlan(resolved, out);
     return Status::success();
@@ -190,14 +198,10 @@ Status Context::record(const FrameInfo& frame) {
             }
             preset = impl.fogAutoQuality.select(autoKey, frame.fog.autoBudgetMs, impl.timer);
         }
-        resolved = frame;
-        resolved.fog = applyFogQuality(frame.fog, preset);
-        resolved.fog.quality = preset;
+        resolved = withFogPreset(frame, preset);
         effective = &resolved;
     }
     if (Status s = impl.validateFrame(*effective); !s) return impl.report(s);
-    FramePlan& plan = impl.framePlan;  // reused: no allocation per frame once warm
-    impl.buildPlan(*effective, plan);
 
     core::DescriptorArena& arena = impl.arena(frame.frameIndex);
     if (Status s = arena.beginFrame(); !s) return impl.report(s);
@@ -214,7 +218,7 @@ Status Context::record(const FrameInfo& frame) {
         // Off or empty: nothing recorded, and its GPU objects go once the frames in flight are done.
         impl.retirement.retire(frame.frameIndex, std::move(impl.fog));
     }
-    if (plan.pass("postfx.copy")) {
+    if (needsCopy(frame, fogRuns)) {
         if (Status s = impl.copy.record(impl.gpu, arena, impl.timer, *effective); !s) return impl.report(s);
     }
     return Status::success();

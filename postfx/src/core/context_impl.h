@@ -25,7 +25,6 @@ struct Context::Impl {
     std::unique_ptr<fog::FogPass> fog;                           // null while the fog is off
     fog::AutoQuality fogAutoQuality;                             // FogQuality::Auto's measurements
     core::CopyPass copy;  // postfx.copy: its pipeline is created on first need and kept
-    FramePlan framePlan;  // the plan of the frame being recorded
     bool warnedAutoWithoutTimings = false;
     core::Retirement retirement;  // objects frames in flight may still use; declared last, freed first
 
@@ -33,7 +32,8 @@ struct Context::Impl {
     Status report(Status status) const;
     // Everything record() checks in `frame` (quality resolved) but the command buffer.
     Status validateFrame(const FrameInfo& frame) const;
-    // The plan of `frame` (validated, quality resolved) given what the context holds now.
+    // The plan of `frame` (validated, quality resolved) given what the context holds now. record() takes
+    // the same decisions (FogPass::runs and the fog's own, needsCopy) without building it.
     void buildPlan(const FrameInfo& frame, FramePlan& plan) const;
     void warn(const std::string& message) const;
 

@@ -127,7 +127,7 @@ Model makeModel(const FogInputs& in) {
     m.selfShadow = s.selfShadow;
     m.skipEmptySpace = s.skipEmptySpace;
     m.mediumTop = fog::fogMediumTop(s, s.noise.enabled);
-    m.analyticTail = s.analyticTail && !fog::fogNoiseEmptiesMedium(s, s.noise.enabled);
+    m.analyticTail = s.analyticTail;
     m.noise = s.noise.enabled;
     m.noiseTexels = in.noise;
     m.noiseSize = in.noiseSize;
@@ -344,7 +344,8 @@ Status renderFog(const FogInputs& in, std::vector<float>& out) {
     } catch (const std::bad_alloc&) {
         return {Result::OutOfMemory, "reference::renderFog: cannot allocate the output image"};
     }
-    if (in.settings.enabled) {
+    // As on the GPU, an empty medium is not marched at all: the color stays as it is.
+    if (in.settings.enabled && !fog::fogMediumEmpty(in.settings, in.settings.noise.enabled)) {
         const Model m = makeModel(in);
         const glm::uvec2 size = fogMarchExtent(m.width, m.height, in.settings.resolutionScale);
         if (size.x == m.width && size.y == m.height) {

@@ -16,15 +16,11 @@ Status validateSettings(const FogSettings& settings);
 // The sun and ambient inputs (finite, non-negative illuminance, non-zero direction).
 Status validateLighting(const SunInput& sun, const glm::vec3& ambient);
 
-// The noise makes the medium empty everywhere (multiplier 0, or a threshold at or above the texels'
-// maximum of 1): then the analytic tail, which assumes noise = 1, is left out too.
-inline bool fogNoiseEmptiesMedium(const FogSettings& s, bool noiseEnabled) {
-    return noiseEnabled && (s.noise.multiplier <= 0.0f || s.noise.threshold >= 1.0f);
-}
-
-// The medium is empty everywhere: density 0, or the noise empties it. The fog then records nothing.
+// The medium is empty everywhere: density 0, or noise on with multiplier 0 or a threshold at or above the
+// texels' maximum of 1. The fog then records nothing (docs/frame-plan.md) and the reference leaves the
+// color as it is, so the analytic tail (which has no noise term) never adds fog to an empty medium.
 inline bool fogMediumEmpty(const FogSettings& s, bool noiseEnabled) {
-    return s.density <= 0.0f || fogNoiseEmptiesMedium(s, noiseEnabled);
+    return s.density <= 0.0f || (noiseEnabled && (s.noise.multiplier <= 0.0f || s.noise.threshold >= 1.0f));
 }
 
 // Empty-space skipping (fog.md, "Empty space"): the optical depth that the march may leave out.

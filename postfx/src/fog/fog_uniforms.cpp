@@ -50,7 +50,7 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
     if (shadowMapEnabled) flags |= gpu::kFogFlagShadowMap;
     if (shadowMapEnabled && frame.shadowMap.reversedZ) flags |= gpu::kFogFlagShadowReversedZ;
     if (s.selfShadow) flags |= gpu::kFogFlagSelfShadow;
-    if (s.analyticTail && !fogNoiseEmptiesMedium(s, noiseEnabled)) flags |= gpu::kFogFlagAnalyticTail;
+    if (s.analyticTail) flags |= gpu::kFogFlagAnalyticTail;
     if (depth.reversedZ) flags |= gpu::kFogFlagDepthReversedZ;
     if (s.skipEmptySpace) flags |= gpu::kFogFlagSkipEmptySpace;
     u.flags = glm::uvec4(flags, 0u, 0u, 0u);

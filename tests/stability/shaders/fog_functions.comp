@@ -45,7 +45,7 @@ void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= pc.count) return;
     FunctionCase fc = cases[i];
-    fog.medium = vec4(fc.c.x, fc.c.y, fc.c.x, 0.0);
+    fog.medium = vec4(fc.c.x, fc.c.y, 0.0, 0.0);  // density, height falloff
     fog.toSun = vec4(fc.b.xyz, 0.0);
     fog.flags = uvec4(kFogFlagSelfShadow, 0u, 0u, 0u);
     vec4 r = vec4(0.0);
