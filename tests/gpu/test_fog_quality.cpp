@@ -67,21 +67,24 @@ TEST_F(FogQualityTest, ApplyFogQualitySetsThePresetTable) {
     custom.steps = 77;
     custom.jitter = false;
     custom.shadowKernel = 5;
+    custom.resolutionScale = 0.375f;
     custom.density = 0.125f;
     struct Row {
         FogQuality quality;
         uint32_t steps;
         bool jitter;
         uint32_t kernel;
+        float scale;
     };
-    const Row rows[] = {{FogQuality::Low, 8, true, 1},      {FogQuality::Medium, 16, true, 3},
-                        {FogQuality::High, 32, true, 3},    {FogQuality::Ultra, 64, true, 3},
-                        {FogQuality::Custom, 77, false, 5}, {FogQuality::Auto, 77, false, 5}};
+    const Row rows[] = {{FogQuality::Low, 8, true, 1, 1.0f},        {FogQuality::Medium, 16, true, 3, 1.0f},
+                        {FogQuality::High, 32, true, 3, 1.0f},      {FogQuality::Ultra, 64, true, 3, 1.0f},
+                        {FogQuality::Custom, 77, false, 5, 0.375f}, {FogQuality::Auto, 77, false, 5, 0.375f}};
     for (const Row& r : rows) {
         const postfx::FogSettings s = postfx::applyFogQuality(custom, r.quality);
         EXPECT_EQ(s.steps, r.steps) << int(r.quality);
         EXPECT_EQ(s.jitter, r.jitter) << int(r.quality);
         EXPECT_EQ(s.shadowKernel, r.kernel) << int(r.quality);
+        EXPECT_EQ(s.resolutionScale, r.scale) << int(r.quality);
         EXPECT_EQ(s.density, custom.density);  // nothing else changes
         EXPECT_EQ(s.quality, custom.quality);
     }

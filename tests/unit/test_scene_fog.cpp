@@ -188,9 +188,22 @@ TEST(SceneFog, QualityDefaultsToCustomAndReadsEveryName) {
         ASSERT_TRUE(p.ok) << name << ": " << p.error;
         EXPECT_EQ(p.scene.fog.quality, quality) << name;
         EXPECT_EQ(p.scene.fog.autoBudgetMs, 2.0f) << name;
-        EXPECT_EQ(p.scene.fog.steps, 32u) << name << ": the preset is applied by postfx, not the loader";
+        EXPECT_EQ(p.scene.fog.steps, postfx::FogSettings{}.steps)
+            << name << ": the preset is applied by postfx, not the loader";
         EXPECT_EQ(demo::sceneToJson(p.scene)["effects"]["fog"]["quality"], name);
     }
+}
+
+// Custom is the default quality, so a host that sets steps gets its steps; the knobs' defaults are the
+// Medium preset's values, so an untouched FogSettings costs what Medium costs.
+TEST(SceneFog, DefaultKnobsAreTheMediumPreset) {
+    const postfx::FogSettings defaults;
+    const postfx::FogSettings medium = postfx::applyFogQuality(defaults, postfx::FogQuality::Medium);
+    EXPECT_EQ(defaults.quality, postfx::FogQuality::Custom);
+    EXPECT_EQ(defaults.steps, medium.steps);
+    EXPECT_EQ(defaults.jitter, medium.jitter);
+    EXPECT_EQ(defaults.shadowKernel, medium.shadowKernel);
+    EXPECT_EQ(defaults.resolutionScale, medium.resolutionScale);
 }
 
 TEST(SceneFog, IntegersMayBeWrittenAsWholeDecimals) {
@@ -230,7 +243,7 @@ TEST(SceneFog, DefaultsRoundTrip) {
         ASSERT_TRUE(first.ok) << first.error;
         const json out = demo::sceneToJson(first.scene);
         EXPECT_EQ(out["effects"]["fog"]["enabled"], !fog.is_null());
-        EXPECT_EQ(out["effects"]["fog"]["steps"], 32);
+        EXPECT_EQ(out["effects"]["fog"]["steps"], 16);  // Medium's
         const Parsed second = parse(out);
         ASSERT_TRUE(second.ok) << second.error;
         expectSameFog(second.scene.fog, first.scene.fog);

@@ -30,11 +30,12 @@ struct FogNoiseSettings {
     VkImageLayout hostTextureLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 };
 
-// Quality presets: each sets steps, jitter and shadowKernel (docs/effects/fog.md#quality-presets).
-//   Low = 8 steps, kernel 1; Medium = 16 steps, kernel 3; High = 32 steps, kernel 3;
-//   Ultra = 64 steps, kernel 3; all with jitter.
+// Quality presets: each sets steps, jitter, shadowKernel and resolutionScale
+// (docs/effects/fog.md#quality-presets). Low = 8 steps, kernel 1; Medium = 16 steps, kernel 3;
+// High = 32 steps, kernel 3; Ultra = 64 steps, kernel 3; all with jitter, at resolution scale 1.
+// The defaults of those four settings below are Medium's.
 enum class FogQuality {
-    Custom,  // steps, jitter and shadowKernel as set
+    Custom,  // steps, jitter, shadowKernel and resolutionScale as set
     Low,
     Medium,
     High,
@@ -48,7 +49,7 @@ enum class FogQuality {
 
 struct FogSettings {
     bool enabled = false;
-    // Custom uses steps/jitter/shadowKernel below; a preset replaces those three.
+    // Custom uses steps/jitter/shadowKernel/resolutionScale below; a preset replaces those four.
     FogQuality quality = FogQuality::Custom;
     // Auto only: GPU time budget for the fog's passes (excluding noise generation) [ms]; > 0 and finite
     // (checked whatever the quality).
@@ -64,7 +65,7 @@ struct FogSettings {
     float baseHeight = 0.0f;  // [m]; finite
     // Rays are marched to the surface or to this distance, whichever is nearer [m]; in (0, 1e7].
     float maxDistance = 200.0f;
-    uint32_t steps = 32;  // march steps per pixel, independent of distance; in [1, 4096]
+    uint32_t steps = 16;  // march steps per pixel, independent of distance; in [1, 4096]
     bool jitter = true;   // offset the march start by interleaved gradient noise of pixel and frame
     // March at this fraction of the color image's width and height (rounded up), then composite at full
     // resolution with a depth-aware upsample (docs/effects/fog.md#resolution-scale) [1]; in [0.25, 1].
@@ -119,7 +120,8 @@ Status validateFogSettings(const FogSettings& settings);
 // max(1, ceil(size · scale)) per axis; the image's own size at scale 1 (then the fog runs one pass).
 glm::uvec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale);
 
-// `settings` with steps, jitter and shadowKernel set by preset `quality`; Custom and Auto: unchanged.
+// `settings` with steps, jitter, shadowKernel and resolutionScale set by preset `quality`; Custom and
+// Auto: unchanged.
 FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality);
 
 }  // namespace postfx

@@ -32,12 +32,14 @@ struct QualityPreset {
     uint32_t steps;
     bool jitter;
     uint32_t shadowKernel;
+    float resolutionScale;
 };
+// FogSettings' defaults are Medium's values (tests/unit/test_fog_settings.cpp checks it).
 constexpr QualityPreset kQualityPresets[] = {
-    {FogQuality::Low, 8, true, 1},
-    {FogQuality::Medium, 16, true, 3},
-    {FogQuality::High, 32, true, 3},
-    {FogQuality::Ultra, 64, true, 3},
+    {FogQuality::Low, 8, true, 1, 1.0f},
+    {FogQuality::Medium, 16, true, 3, 1.0f},
+    {FogQuality::High, 32, true, 3, 1.0f},
+    {FogQuality::Ultra, 64, true, 3, 1.0f},
 };
 
 bool isPowerOfTwo(uint32_t v) {
@@ -129,6 +131,7 @@ FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality) {
             s.steps = p.steps;
             s.jitter = p.jitter;
             s.shadowKernel = p.shadowKernel;
+            s.resolutionScale = p.resolutionScale;
         }
     return s;
 }
