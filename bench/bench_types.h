@@ -60,6 +60,13 @@ struct Result {
     bool pareto16 = false;            // Ours: on the front of (time, 16-frame error)
 };
 
+// A quality preset's GPU time budget for the proposal (bench/conclusions.h) [ms], at the run's frame
+// size on its device.
+struct PresetBudget {
+    std::string name;  // "low", "medium", "high", "ultra"
+    double ms = 0;
+};
+
 // What the report's header says about the run.
 struct RunInfo {
     std::string device;  // VulkanHost::deviceDescription()
@@ -73,8 +80,20 @@ struct RunInfo {
     double warmupMs = 0;
     double textureRate = NAN;  // [GTexel/s]; NaN: not given
     bool baselines = false;    // the baselines were run
+    // Each scene's own noise texture size (0: no noise); the presets and baselines run at it.
+    std::vector<std::pair<std::string, uint32_t>> sceneNoise;
+    // The scene the presets are proposed from and the targets are measured on (--preset-scene).
+    std::string presetScene;
+    std::vector<PresetBudget> presetBudgets;  // --preset-budgets
     // CPU time of each reference: scene, noise size, seconds.
     std::vector<std::pair<std::string, double>> referenceSeconds;
 };
+
+// RunInfo::sceneNoise's entry for `scene`; 0 when it has none.
+inline uint32_t sceneNoiseSize(const RunInfo& info, const std::string& scene) {
+    for (const auto& [name, size] : info.sceneNoise)
+        if (name == scene) return size;
+    return 0;
+}
 
 }  // namespace bench

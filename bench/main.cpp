@@ -4,6 +4,7 @@
 // of 1, 8 and 16 jittered frames against the CPU reference; the two baselines (bench/baseline.h) run
 // on the same frames. Writes results.csv,
 // results.md and plot.svg.
+#include "conclusions.h"
 #include "progress.h"
 #include "report.h"
 #include "runner.h"
@@ -30,7 +31,8 @@ const char* kUsage =
     "usage: postfx-bench [--scenes a,b,...] [--scene-dir DIR] [--size WxH] [--warmup W] [--warmup-ms T]\n"
     "                    [--frames N] [--reference-steps N] [--error-stride K] [--texture-rate GTEXELS]\n"
     "                    [--out DIR] [--steps a,b,...] [--scales a,b,...] [--noise-sizes a,b,...]\n"
-    "                    [--step-lengths a,b,...] [--no-presets] [--no-baselines] [--quick] [--validation]\n"
+    "                    [--step-lengths a,b,...] [--preset-scene S] [--preset-budgets l,m,h,u]\n"
+    "                    [--no-presets] [--no-baselines] [--quick] [--validation]\n"
     "Sweeps postfx's fog quality knobs on the named scenes, times each postfx pass on the GPU and measures\n"
     "the error against the CPU reference; the seed's shader (as written, and fixed but still a Riemann sum)\n"
     "runs on the same frames. Writes results.csv, results.md and plot.svg to --out.\n"
@@ -52,6 +54,9 @@ const char* kUsage =
     "  --scales LIST          postfx fog resolution scales, each in [0.25, 1] [1,0.5,0.25; quick: 1,0.5]\n"
     "  --noise-sizes LIST     noise texture edges for scenes with noise [32,64,128; quick: 32]\n"
     "  --step-lengths LIST    baseline step lengths [m] [4,2,1,0.5,0.25,0.125; quick: 4,1]\n"
+    "  --preset-scene S       the scene the presets are proposed from and the targets measured on\n"
+    "                         [fog_default if in --scenes, else the first]\n"
+    "  --preset-budgets LIST  GPU ms budgets of the proposed low,medium,high,ultra [0.25,0.5,1,2]\n"
     "  --no-presets           do not measure the quality presets (low, medium, high, ultra) as such\n"
     "  --no-baselines         postfx's fog only\n"
     "  --validation           Vulkan validation layer with synchronization validation; any message fails\n"
@@ -76,6 +81,8 @@ struct Args {
     std::vector<float> stepLengths = {4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.125f};
     bool baselines = true;
     bool presets = true;
+    std::string presetScene;  // empty: fog_default if in --scenes, else the first scene
+    std::vector<bench::PresetBudget> presetBudgets = bench::defaultPresetBudgets();
 };
 
 bool parseUint(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
@@ -211,6 +218,20 @@ Args parseArgs(int argc, char** argv) {
             }
             if (args.stepLengths.empty()) throw UsageError{"--step-lengths is empty"};
             lengthsGiven = true;
+        } else if (a == "--preset-scene") {
+            args.presetScene = value(i);
+        } else if (a == "--preset-budgets") {
+            const std::string text = value(i);
+            const std::vector<std::string> items = splitList(text);
+            std::vector<bench::PresetBudget> budgets = bench::defaultPresetBudgets();
+            if (items.size() != budgets.size())
+                throw UsageError{"--preset-budgets '" + text +
+                                 "': expected 4 budgets [ms] (low,medium,high,ultra)"};
+            for (size_t k = 0; k < items.size(); ++k)
+                if (!parseDouble(items[k], budgets[k].ms) || !(budgets[k].ms > 0))
+                    throw UsageError{"--preset-budgets '" + text +
+                                     "': expected numbers > 0 [ms], comma-separated"};
+            args.presetBudgets = budgets;
         } else if (a == "--no-presets") {
             args.presets = false;
         } else if (a == "--no-baselines") {
@@ -234,6 +255,12 @@ Args parseArgs(int argc, char** argv) {
         if (!scalesGiven) args.scales = {1.0f, 0.5f};
         if (!lengthsGiven) args.stepLengths = {4.0f, 1.0f};
     }
+    if (args.presetScene.empty())
+        args.presetScene = std::count(args.scenes.begin(), args.scenes.end(), "fog_default")
+                               ? "fog_default"
+                               : args.scenes.front();
+    else if (!std::count(args.scenes.begin(), args.scenes.end(), args.presetScene))
+        throw UsageError{"--preset-scene '" + args.presetScene + "' is not in --scenes"};
     if (args.errorStride == 0) args.errorStride = std::max(1u, args.runner.width / 480);
     std::sort(args.steps.begin(), args.steps.end());
     std::sort(args.noiseSizes.begin(), args.noiseSizes.end());
@@ -322,6 +349,10 @@ int run(const Args& args, const std::string& command) {
     info.frames = args.runner.frames;
     info.textureRate = args.textureRate;
     info.baselines = baselines;
+    info.presetScene = args.presetScene;
+    info.presetBudgets = args.presetBudgets;
+    for (const ScenePlan& p : plans)
+        info.sceneNoise.emplace_back(p.name, p.baselineNoise);
 
     constexpr postfx::FogQuality kPresets[] = {postfx::FogQuality::Low, postfx::FogQuality::Medium,
                                                postfx::FogQuality::High, postfx::FogQuality::Ultra};
@@ -461,6 +492,7 @@ int run(const Args& args, const std::string& command) {
                     bench::formatNumber(r.error[2].relativeRmse * 100, 3).c_str(),
                     r.pareto1 ? "  pareto" : "");
     }
+    std::printf("%s", bench::conclusionsSummary(info, results).c_str());
     std::printf("wrote %s, %s, %s\n", csv.c_str(), md.c_str(), svg.c_str());
     if (!messages.empty()) {
         for (const std::string& m : messages)

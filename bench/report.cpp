@@ -1,6 +1,8 @@
 // results.csv and results.md.
 #include "report.h"
 
+#include "conclusions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -216,6 +218,7 @@ bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vect
                 << formatNumber(info.referenceSeconds[i].second, 3) << " s";
         out << ".\n\n";
     }
+    out << conclusionsMarkdown(info, results);
 
     for (const std::string& scene : sceneOrder(results)) {
         const std::vector<const Result*> rows = sortedRows(results, scene);

@@ -1,6 +1,7 @@
 // plot.svg: one log–log panel per scene, relative RMSE of linear radiance against GPU time, postfx's
 // settings as points with their Pareto fronts (one frame, mean of 16) drawn as lines, each baseline as a
 // polyline over its step lengths; a legend and the run's header.
+#include "conclusions.h"
 #include "report.h"
 
 #include <algorithm>
@@ -19,8 +20,9 @@ constexpr double kHeaderHeight = 86, kLegendHeight = 76;
 
 const char* kOursColor = "#1f6fb4";
 const char* kOurs16Color = "#2a9d3a";
-const char* kScaledColor = "#7b3294";  // postfx-fog at resolution scale < 1 (one frame)
-const char* kPresetColor = "#111111";  // the presets' letters
+const char* kScaledColor = "#7b3294";    // postfx-fog at resolution scale < 1 (one frame)
+const char* kPresetColor = "#111111";    // the committed presets' letters
+const char* kProposedColor = "#111111";  // the proposed presets' letters (italic)
 const char* kAsWrittenColor = "#e8780c";
 const char* kFixedColor = "#c62828";
 
@@ -107,8 +109,9 @@ bool plottable(double t, double e) {
     return t > 0 && std::isfinite(t) && e > 0 && std::isfinite(e);
 }
 
-std::string panel(const std::string& scene, const std::vector<Result>& results, double originX,
-                  double originY) {
+// `proposed`: the presets this run proposes, drawn on the scene they were chosen on (else empty).
+std::string panel(const std::string& scene, const std::vector<Result>& results,
+                  const std::vector<ProposedPreset>& proposed, double originX, double originY) {
     std::vector<const Result*> rows;
     std::vector<double> times, errors;
     for (const Result& r : results) {
@@ -236,6 +239,29 @@ std::string panel(const std::string& scene, const std::vector<Result>& results, 
                 what + ": " + formatNumber(t, 4) + " ms, " + formatNumber(r->error[0].relativeRmse * 100, 3) +
                     "%" + (r->pareto1 ? " (Pareto)" : ""));
     }
+    // The proposed presets: lowercase initials (several where presets share a setting) at the 16-frame
+    // point the rule chose them by.
+    for (size_t i = 0; i < proposed.size(); ++i) {
+        const Result* row = proposed[i].row;
+        if (!row || !plottable(row->timing.median, row->error[2].relativeRmse)) continue;
+        bool drawn = false;
+        for (size_t k = 0; k < i; ++k)
+            drawn = drawn || proposed[k].row == row;
+        if (drawn) continue;
+        std::string initials, names;
+        for (const ProposedPreset& p : proposed)
+            if (p.row == row) {
+                initials += p.budget.name[0];
+                names += (names.empty() ? "" : ", ") + p.budget.name;
+            }
+        const double t = row->timing.median, e = row->error[2].relativeRmse;
+        s << "<g><title>"
+          << xmlEscape("proposed " + names + ": " + row->setting.label() + ", " + formatNumber(t, 4) +
+                       " ms, " + formatNumber(e * 100, 3) + "% (mean of 16 frames)")
+          << "</title><text x=\"" << num(ax.map(t) - 5) << "\" y=\"" << num(ay.map(e) + 14)
+          << "\" text-anchor=\"end\" font-size=\"11\" font-style=\"italic\" fill=\"" << kProposedColor
+          << "\">" << initials << "</text></g>\n";
+    }
     s << "</g>\n";
     return s.str();
 }
@@ -271,7 +297,11 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
     for (size_t i = 0; i < scenes.size(); ++i) {
         const double ox = double(i % kPanelsPerRow) * kPanelWidth;
         const double oy = kHeaderHeight + double(i / kPanelsPerRow) * kPanelHeight;
-        s << panel(scenes[i], results, ox, oy);
+        const std::vector<ProposedPreset> proposed =
+            scenes[i] == info.presetScene
+                ? proposePresets(results, scenes[i], sceneNoiseSize(info, scenes[i]), info.presetBudgets)
+                : std::vector<ProposedPreset>{};
+        s << panel(scenes[i], results, proposed, ox, oy);
     }
 
     // Legend.
@@ -294,6 +324,8 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
         {"square", kAsWrittenColor, true, true, false, "seed shader as written (over step lengths)"},
         {"triangle", kFixedColor, true, true, false, "seed fixed, Riemann sum (over step lengths)"},
         {"", kPresetColor, false, false, false, "L, M, H, U: the quality presets low … ultra (one frame)"},
+        {"", kProposedColor, false, false, false,
+         "l, m, h, u: the presets this run proposes (results.md; at their 16-frame point)"},
     };
     double lx = 16;
     double row = ly;

@@ -1,0 +1,277 @@
+// The proposed presets and the targets' status, from the run's rows.
+#include "conclusions.h"
+
+#include "report.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace bench {
+namespace {
+
+std::string percent(double fraction) {
+    return std::isfinite(fraction) ? formatNumber(fraction * 100.0, 3) + "%" : "–";
+}
+
+std::string ms(double value) {
+    return std::isfinite(value) ? formatNumber(value, 4) + " ms" : "–";
+}
+
+bool isSweep(const Result& r, const std::string& scene, uint32_t noiseSize) {
+    return r.setting.scene == scene && r.setting.method == Method::Ours && r.setting.preset.empty() &&
+           r.setting.noiseSize == noiseSize;
+}
+
+const Result* committedPreset(const std::vector<Result>& results, const std::string& scene,
+                              const std::string& name) {
+    for (const Result& r : results)
+        if (r.setting.scene == scene && r.setting.preset == name) return &r;
+    return nullptr;
+}
+
+// The sweep row of `scene` (at its own noise size) with the knobs of `row`, if the run measured it.
+const Result* sameKnobs(const RunInfo& info, const std::vector<Result>& results, const std::string& scene,
+                        const Result& row) {
+    for (const Result& r : results)
+        if (isSweep(r, scene, sceneNoiseSize(info, scene)) && r.setting.steps == row.setting.steps &&
+            r.setting.jitter == row.setting.jitter &&
+            r.setting.resolutionScale == row.setting.resolutionScale)
+            return &r;
+    return nullptr;
+}
+
+std::string errors(const Result& r) {
+    return percent(r.error[0].relativeRmse) + " / " + percent(r.error[1].relativeRmse) + " / " +
+           percent(r.error[2].relativeRmse);
+}
+
+std::string overFloor(const Result& r) {
+    return std::isfinite(r.floorMs) ? formatNumber(r.timing.median / r.floorMs, 3) + "×" : "–";
+}
+
+// "met" / "missed by 7%" / "missed: 6.2× the limit" for `value` against an upper `limit`.
+std::string atMost(double value, double limit) {
+    if (!std::isfinite(value)) return "–";
+    if (value <= limit) return "**met**";
+    if (value < 2.0 * limit)
+        return "**missed** by " + formatNumber(std::round((value / limit - 1.0) * 100.0), 3) + "%";
+    return "**missed**: " + formatNumber(value / limit, 3) + "× the limit";
+}
+
+struct Speedup {
+    const Result* ours = nullptr;
+    const Result* baseline = nullptr;
+    double factor = NAN;  // baseline time / ours
+};
+
+Speedup speedupAt(const RunInfo& info, const std::vector<Result>& results, const std::string& scene,
+                  size_t errorIndex) {
+    const uint32_t noise = sceneNoiseSize(info, scene);
+    Speedup s;
+    s.ours = fastestWithin(results, scene, Method::Ours, noise, errorIndex, kTargetRelativeRmse);
+    s.baseline =
+        fastestWithin(results, scene, Method::SeedFixedRiemann, noise, errorIndex, kTargetRelativeRmse);
+    if (s.ours && s.baseline) s.factor = s.baseline->timing.median / s.ours->timing.median;
+    return s;
+}
+
+std::string speedupText(const Speedup& s, size_t errorIndex) {
+    const size_t e = errorIndex;
+    std::string text =
+        "postfx-fog: " + (s.ours ? "`" + s.ours->setting.label() + "` " + ms(s.ours->timing.median) + " (" +
+                                       percent(s.ours->error[e].relativeRmse) + ")"
+                                 : "no setting reaches 2%");
+    text += "; seed-fixed-riemann: " +
+            (s.baseline ? "`" + s.baseline->setting.label() + "` " + ms(s.baseline->timing.median) + " (" +
+                              percent(s.baseline->error[e].relativeRmse) + ")"
+                        : "no step length reaches 2%");
+    if (std::isfinite(s.factor)) text += ": **" + formatNumber(s.factor, 3) + "×**";
+    return text;
+}
+
+std::string speedupStatus(const Speedup& s, bool baselinesRun) {
+    if (!baselinesRun) return "not measured (baselines not run)";
+    if (!s.ours) return "**missed**: postfx-fog does not reach 2% in the sweep";
+    if (!s.baseline) return "**met**: the baseline does not reach 2% at any measured step length";
+    return s.factor >= kTargetSpeedup ? "**met**" : "**missed**";
+}
+
+}  // namespace
+
+std::vector<PresetBudget> defaultPresetBudgets() {
+    return {{"low", 0.25}, {"medium", kTargetDefaultMs}, {"high", 1.0}, {"ultra", 2.0}};
+}
+
+std::vector<ProposedPreset> proposePresets(const std::vector<Result>& results, const std::string& scene,
+                                           uint32_t noiseSize, const std::vector<PresetBudget>& budgets) {
+    std::vector<ProposedPreset> proposed;
+    for (const PresetBudget& budget : budgets) {
+        ProposedPreset p;
+        p.budget = budget;
+        for (const Result& r : results) {
+            const double error = r.error[2].relativeRmse;
+            if (!isSweep(r, scene, noiseSize) || !r.setting.jitter || !std::isfinite(r.timing.median) ||
+                !std::isfinite(error) || r.timing.median > budget.ms)
+                continue;
+            const double best = p.row ? p.row->error[2].relativeRmse : INFINITY;
+            if (error < best || (error == best && r.timing.median < p.row->timing.median)) p.row = &r;
+        }
+        proposed.push_back(p);
+    }
+    return proposed;
+}
+
+const Result* fastestWithin(const std::vector<Result>& results, const std::string& scene, Method method,
+                            uint32_t noiseSize, size_t errorIndex, double maxError) {
+    const Result* best = nullptr;
+    for (const Result& r : results) {
+        if (r.setting.scene != scene || r.setting.method != method || r.setting.noiseSize != noiseSize ||
+            (method == Method::Ours && !r.setting.preset.empty()) || !std::isfinite(r.timing.median) ||
+            !(r.error[errorIndex].relativeRmse <= maxError))
+            continue;
+        if (!best || r.timing.median < best->timing.median) best = &r;
+    }
+    return best;
+}
+
+std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& results) {
+    const std::vector<PresetBudget>& budgets = info.presetBudgets;
+    const std::string& scene = info.presetScene;
+    const uint32_t noise = sceneNoiseSize(info, scene);
+    const std::string noiseText = noise ? "noise " + std::to_string(noise) + "³" : "no noise";
+    std::ostringstream out;
+    out << "## Presets proposed by this run\n\n"
+        << "Rule (docs/accuracy-cost/README.md, Presets): per preset, among " << scene
+        << "'s postfx-fog sweep points at its own " << noiseText
+        << " with jitter on, the one with the lowest relative RMSE after 16 frames whose median GPU time is "
+           "within the preset's budget. The shadow kernel is the scene's. `kQualityPresets` "
+           "(postfx/src/fog/fog_settings.cpp) holds the committed presets, measured as such in the `preset=` "
+           "rows.\n\n"
+        << "| preset | budget | proposed | GPU ms | rel. RMSE 1 / 8 / 16 frames | × floor | committed | its "
+           "GPU "
+           "ms | its rel. RMSE 1 / 8 / 16 |\n|---|---|---|---|---|---|---|---|---|\n";
+    const std::vector<ProposedPreset> proposed = proposePresets(results, scene, noise, budgets);
+    for (const ProposedPreset& p : proposed) {
+        const Result* committed = committedPreset(results, scene, p.budget.name);
+        out << "| " << p.budget.name << " | " << ms(p.budget.ms) << " | "
+            << (p.row ? "`" + p.row->setting.label() + "`" : "none fits") << " | "
+            << (p.row ? ms(p.row->timing.median) : "–") << " | " << (p.row ? errors(*p.row) : "–") << " | "
+            << (p.row ? overFloor(*p.row) : "–") << " | "
+            << (committed ? "`" + committed->setting.label() + "`" : "not measured") << " | "
+            << (committed ? ms(committed->timing.median) : "–") << " | "
+            << (committed ? errors(*committed) : "–") << " |\n";
+    }
+    out << "\n";
+
+    // The proposed knobs on the other scenes (each at its own noise size).
+    bool header = false;
+    for (const std::string& other : sceneOrder(results)) {
+        if (other == scene) continue;
+        for (const ProposedPreset& p : proposed) {
+            const Result* r = p.row ? sameKnobs(info, results, other, *p.row) : nullptr;
+            if (!r) continue;
+            if (!header) {
+                out << "The proposed knobs on the other scenes:\n\n"
+                    << "| scene | preset | setting | GPU ms | rel. RMSE 1 / 8 / 16 frames "
+                       "|\n|---|---|---|---|---|\n";
+                header = true;
+            }
+            out << "| " << other << " | " << p.budget.name << " | `" << r->setting.label() << "` | "
+                << ms(r->timing.median) << " | " << errors(*r) << " |\n";
+        }
+    }
+    if (header) out << "\n";
+
+    out << "## Targets\n\n"
+        << "The issue's targets hold for the lent NVIDIA GPU at 1920×1080 on " << scene
+        << "; this run: " << info.device << ", " << info.width << "×" << info.height << ".";
+    if (info.width != 1920 || info.height != 1080)
+        out << " **Not 1920×1080: the statuses below are not the targets'.**";
+    out << "\n\n| target | measured in this run | status |\n|---|---|---|\n";
+
+    const Result* committedMedium = committedPreset(results, scene, "medium");
+    const Result* proposedMedium = nullptr;
+    for (const ProposedPreset& p : proposed)
+        if (p.budget.name == "medium") proposedMedium = p.row;
+    out << "| default (Medium) preset ≤ " << formatNumber(kTargetDefaultMs, 3) << " ms, all fog passes | "
+        << "committed: "
+        << (committedMedium
+                ? "`" + committedMedium->setting.label() + "` " + ms(committedMedium->timing.median)
+                : "not measured (--no-presets)")
+        << "; proposed: "
+        << (proposedMedium ? "`" + proposedMedium->setting.label() + "` " + ms(proposedMedium->timing.median)
+                           : "none fits")
+        << " | committed: "
+        << atMost(committedMedium ? committedMedium->timing.median : NAN, kTargetDefaultMs)
+        << "; proposed: " << atMost(proposedMedium ? proposedMedium->timing.median : NAN, kTargetDefaultMs)
+        << " |\n";
+
+    for (size_t e : {size_t(0), size_t(2)}) {
+        const Speedup s = speedupAt(info, results, scene, e);
+        out << "| to reach " << percent(kTargetRelativeRmse) << " relative RMSE ("
+            << (e == 0 ? "one frame" : "mean of 16 frames") << "), our fastest ≥ "
+            << formatNumber(kTargetSpeedup, 3) << "× faster than baseline (b) | " << speedupText(s, e)
+            << " | " << speedupStatus(s, info.baselines) << " |\n";
+    }
+
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Result& r : results)
+        if (isSweep(r, scene, noise) && std::isfinite(r.timing.median / r.floorMs)) {
+            lo = std::min(lo, r.timing.median / r.floorMs);
+            hi = std::max(hi, r.timing.median / r.floorMs);
+        }
+    out << "| texture-fetch floor computed, our time as a multiple of it | ";
+    if (std::isfinite(lo)) {
+        out << "committed Medium: " << (committedMedium ? overFloor(*committedMedium) : "–")
+            << "; proposed Medium: " << (proposedMedium ? overFloor(*proposedMedium) : "–")
+            << "; every sweep point at " << noiseText << ": " << formatNumber(lo, 3) << "–"
+            << formatNumber(hi, 3) << "× | **computed** |\n";
+    } else {
+        out << "no texture rate given (--texture-rate) | not computed |\n";
+    }
+    out << "\n";
+
+    // The 2% comparison on every scene.
+    if (info.baselines) {
+        out << "Speed-up at " << percent(kTargetRelativeRmse)
+            << " relative RMSE over seed-fixed-riemann on every scene (fastest setting of each that reaches "
+               "it):\n\n| scene | one frame | mean of 16 frames |\n|---|---|---|\n";
+        for (const std::string& s : sceneOrder(results)) {
+            out << "| " << s;
+            for (size_t e : {size_t(0), size_t(2)}) {
+                const Speedup sp = speedupAt(info, results, s, e);
+                out << " | "
+                    << (std::isfinite(sp.factor) ? formatNumber(sp.factor, 3) + "×"
+                        : !sp.ours               ? "postfx-fog does not reach it"
+                                                 : "baseline does not reach it");
+            }
+            out << " |\n";
+        }
+        out << "\n";
+    }
+    return out.str();
+}
+
+std::string conclusionsSummary(const RunInfo& info, const std::vector<Result>& results) {
+    const std::vector<PresetBudget>& budgets = info.presetBudgets;
+    std::ostringstream out;
+    const std::string& scene = info.presetScene;
+    out << "presets proposed on " << scene << " (lowest 16-frame error within budget, jitter on):\n";
+    for (const ProposedPreset& p : proposePresets(results, scene, sceneNoiseSize(info, scene), budgets)) {
+        out << "  " << p.budget.name << " (<= " << formatNumber(p.budget.ms, 3) << " ms): ";
+        if (p.row)
+            out << p.row->setting.label() << ", " << formatNumber(p.row->timing.median, 4) << " ms, "
+                << formatNumber(p.row->error[0].relativeRmse * 100, 3) << "% / "
+                << formatNumber(p.row->error[2].relativeRmse * 100, 3) << "% (1 / 16 frames)\n";
+        else
+            out << "none fits\n";
+    }
+    for (size_t e : {size_t(0), size_t(2)}) {
+        const Speedup s = speedupAt(info, results, scene, e);
+        out << "speed-up at 2% over seed-fixed-riemann (" << (e == 0 ? "one frame" : "16 frames")
+            << "): " << (std::isfinite(s.factor) ? formatNumber(s.factor, 3) + "x" : "n/a") << "\n";
+    }
+    return out.str();
+}
+
+}  // namespace bench

@@ -1,0 +1,45 @@
+// What a run concludes, computed from its rows (never written by hand): the quality presets proposed by
+// a fixed rule from the measured front, and where the targets stand
+// (docs/accuracy-cost/README.md, "Presets" and "Targets").
+#pragma once
+
+#include "bench_types.h"
+
+#include <string>
+#include <vector>
+
+namespace bench {
+
+// The targets (docs/accuracy-cost/README.md), for the lent GPU at 1920×1080.
+constexpr double kTargetDefaultMs = 0.5;      // the default (Medium) preset, all fog passes [ms]
+constexpr double kTargetRelativeRmse = 0.02;  // the error at which we are compared with baseline (b)
+constexpr double kTargetSpeedup = 4.0;        // our fastest setting at that error against baseline (b)'s
+
+// low 0.25, medium 0.5 (= kTargetDefaultMs), high 1, ultra 2: each preset may take twice the one below.
+std::vector<PresetBudget> defaultPresetBudgets();
+
+struct ProposedPreset {
+    PresetBudget budget;
+    const Result* row = nullptr;  // the chosen sweep point; nullptr: no jittered setting fits the budget
+};
+
+// The proposal rule. For each budget: among `scene`'s postfx-fog sweep rows (not preset rows) at
+// `noiseSize` with jitter on and a finite time, the one with the lowest relative RMSE of the mean of
+// 16 frames (what temporal accumulation reaches) whose median GPU time is at most the budget; ties go
+// to the faster. Such a row is on the scene's 16-frame Pareto front.
+std::vector<ProposedPreset> proposePresets(const std::vector<Result>& results, const std::string& scene,
+                                           uint32_t noiseSize, const std::vector<PresetBudget>& budgets);
+
+// The fastest row of `method` on `scene` at `noiseSize` (postfx-fog: sweep rows only) whose relative
+// RMSE after kAveragedFrames[errorIndex] frames is at most `maxError`; nullptr when there is none.
+const Result* fastestWithin(const std::vector<Result>& results, const std::string& scene, Method method,
+                            uint32_t noiseSize, size_t errorIndex, double maxError);
+
+// results.md's sections "Presets proposed by this run" and "Targets" (markdown, ends with a blank line).
+// Presets are proposed for info.presetBudgets on info.presetScene.
+std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& results);
+
+// A few lines for stdout: the proposed presets and the targets' status.
+std::string conclusionsSummary(const RunInfo& info, const std::vector<Result>& results);
+
+}  // namespace bench
