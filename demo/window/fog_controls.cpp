@@ -18,6 +18,8 @@ constexpr std::array<uint32_t, 5> kTextureSizes{16, 32, 64, 128, 256};
 constexpr std::array<const char*, 5> kTextureSizeNames{"16", "32", "64", "128", "256"};
 constexpr std::array<uint32_t, 4> kShadowKernels{1, 3, 5, 7};
 constexpr std::array<const char*, 4> kShadowKernelNames{"1 x 1", "3 x 3", "5 x 5", "7 x 7"};
+// postfx::FogQuality in enum order.
+constexpr std::array<const char*, 6> kQualityNames{"custom", "low", "medium", "high", "ultra", "auto"};
 
 // Limits postfx puts on the sun (SunInput): each illuminance channel in [0, 1e7] lux.
 constexpr float kMaxIlluminance = 1e7f;
@@ -77,6 +79,37 @@ bool buildNoise(postfx::FogNoiseSettings& n) {
     return changed;
 }
 
+// The quality combo and the four knobs a preset sets. With a preset they show the preset's values and
+// cannot be edited (Auto: the custom values, greyed; the overlay shows the preset Auto picked).
+bool buildQuality(postfx::FogSettings& f) {
+    bool changed = false;
+    int quality = int(f.quality);
+    if (ImGui::Combo("quality", &quality, kQualityNames.data(), int(kQualityNames.size()))) {
+        f.quality = postfx::FogQuality(std::clamp(quality, 0, int(kQualityNames.size()) - 1));
+        changed = true;
+    }
+    tooltip(
+        "a preset sets steps, resolution scale, jitter and shadow kernel; auto measures the presets on "
+        "this GPU and uses the most accurate within the budget");
+    if (f.quality == postfx::FogQuality::Auto) {
+        changed |= ImGui::SliderFloat("auto budget [ms]", &f.autoBudgetMs, 0.05f, 50.0f, "%.3g", kLog);
+        tooltip("GPU time the fog's passes may take per frame");
+    }
+    const bool custom = f.quality == postfx::FogQuality::Custom;
+    postfx::FogSettings preset = postfx::applyFogQuality(f, f.quality);
+    postfx::FogSettings& k = custom ? f : preset;  // what the knobs show and edit
+    if (!custom) ImGui::BeginDisabled();
+    bool knobs = sliderUint("steps", k.steps, 1, 256);
+    tooltip("march steps per pixel");
+    knobs |= ImGui::SliderFloat("resolution scale", &k.resolutionScale, 0.25f, 1.0f, "%.2f", kClamp);
+    tooltip("march at this fraction of width and height, then upsample depth-aware");
+    knobs |= ImGui::Checkbox("jitter", &k.jitter);
+    tooltip("offset each pixel's march start per frame: banding becomes noise that accumulation removes");
+    knobs |= combo("shadow kernel [texels]", k.shadowKernel, kShadowKernels, kShadowKernelNames);
+    if (!custom) ImGui::EndDisabled();
+    return changed || (custom && knobs);
+}
+
 bool buildFog(postfx::FogSettings& f) {
     bool changed = false;
     changed |= ImGui::Checkbox("enabled", &f.enabled);
@@ -91,18 +124,12 @@ bool buildFog(postfx::FogSettings& f) {
     changed |= ImGui::SliderFloat("base height [m]", &f.baseHeight, -50.0f, 50.0f, "%.2f", kClamp);
     changed |= ImGui::SliderFloat("max distance [m]", &f.maxDistance, 1.0f, 2000.0f, "%.1f", kLog);
     tooltip("march length limit (then the analytic tail)");
-    changed |= sliderUint("steps", f.steps, 1, 256);
-    tooltip("march steps per pixel");
-    changed |= ImGui::SliderFloat("resolution scale", &f.resolutionScale, 0.25f, 1.0f, "%.2f", kClamp);
-    tooltip("march at this fraction of width and height, then upsample depth-aware");
-    changed |= ImGui::Checkbox("jitter", &f.jitter);
-    ImGui::SameLine();
+    changed |= buildQuality(f);
     changed |= ImGui::Checkbox("self shadow", &f.selfShadow);
     ImGui::SameLine();
     changed |= ImGui::Checkbox("analytic tail", &f.analyticTail);
     changed |= ImGui::SliderFloat("transmittance cutoff", &f.transmittanceCutoff, 0.0f, 0.1f, "%.4f", kClamp);
     tooltip("stop marching below this transmittance; 0: never early");
-    changed |= combo("shadow kernel [texels]", f.shadowKernel, kShadowKernels, kShadowKernelNames);
     if (ImGui::TreeNode("Noise")) {
         changed |= buildNoise(f.noise);
         ImGui::TreePop();
@@ -154,6 +181,10 @@ void FogControls::sanitize(postfx::FogSettings& f) {
     if (!(f.maxDistance > 0.0f)) f.maxDistance = 1.0f;  // also NaN
     f.maxDistance = std::min(f.maxDistance, 1e7f);
     f.steps = std::clamp<uint32_t>(f.steps, 1, 4096);
+    if (int(f.quality) < 0 || int(f.quality) >= int(kQualityNames.size()))
+        f.quality = postfx::FogQuality::Custom;
+    if (!(f.autoBudgetMs > 0.0f)) f.autoBudgetMs = 0.05f;  // also NaN
+    f.autoBudgetMs = std::min(f.autoBudgetMs, 1e6f);
     f.resolutionScale = clampOrLow(f.resolutionScale, 0.25f, 1.0f);
     f.transmittanceCutoff = clampOrLow(f.transmittanceCutoff, 0.0f, 0.999f);
     f.shadowKernel = std::clamp<uint32_t>(f.shadowKernel | 1u, 1, 7);  // odd: even sizes round up

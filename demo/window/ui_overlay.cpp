@@ -229,6 +229,10 @@ void UiOverlay::build(const OverlayStats& s, const std::function<void()>& sectio
             ImGui::Text("  %-24s %7.3f ms", "total", total);
             lines += s.passTimings.size() + 1;
         }
+        if (!s.fogQuality.empty()) {
+            ImGui::Text("fog quality: %s", s.fogQuality.c_str());
+            ++lines;
+        }
         // Keep the block as tall as it has been, so that the widgets below do not move under the mouse
         // when passes come and go (e.g. the fog switched off from the panel).
         timingLines_ = std::max(timingLines_, lines);

@@ -68,6 +68,7 @@ private:
     bool drawFrame(Frame& outcome, std::string& error);
     void recordCommands(VkCommandBuffer cmd, uint32_t imageIndex);
     void readTimings();
+    std::string fogQualityText() const;  // OverlayStats::fogQuality
     void hold();
 
     static void onFramebufferSize(GLFWwindow* window, int, int) {
@@ -216,6 +217,15 @@ void App::readTimings() {
     }
 }
 
+std::string App::fogQualityText() const {
+    if (!scene_.fog.enabled) return "";
+    const std::string name = fogQualityName(scene_.fog.quality);
+    if (scene_.fog.quality != postfx::FogQuality::Auto) return name;
+    postfx::FogQuality chosen = postfx::FogQuality::Custom;
+    if (!renderer_->postfxContext().fogAutoQuality(chosen).ok()) return name + ": measuring the presets";
+    return name + ": " + fogQualityName(chosen);
+}
+
 void App::recordCommands(VkCommandBuffer cmd, uint32_t imageIndex) {
     // Renderer::recordFrame has already been recorded: HDR radiance after postfx, GENERAL.
     tonemap_.record(cmd, scene_.camera.ev100, swapchain_.srgb && swapchain_.bgr);
@@ -283,6 +293,7 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         stats_.yawDeg = camera_.yawDeg();
         stats_.pitchDeg = camera_.pitchDeg();
         stats_.renderExtent = renderExtent_;
+        stats_.fogQuality = fogQualityText();
         // The fog controls edit scene_ before this frame records it (Renderer::recordFrame takes fog, sun
         // and camera from scene_ every frame); their values are always valid for postfx.
         ui_->build(stats_, [this] { fogControls_.build(scene_); });
