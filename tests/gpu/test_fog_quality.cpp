@@ -121,7 +121,8 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
     for (const auto& [budget, expected] :
          {std::pair{1e-6f, FogQuality::Low}, std::pair{1e6f, FogQuality::Ultra}}) {
         std::unique_ptr<postfx::Context> context = newContext();
-        ASSERT_TRUE(context);
+        std::unique_ptr<postfx::Context> asCustom = newContext();  // renders the presets as Custom
+        ASSERT_TRUE(context && asCustom);
         FogQuality chosen = FogQuality::Custom;
         EXPECT_EQ(context->fogAutoQuality(chosen).code, Result::NotReady);  // nothing recorded yet
         postfx::FrameInfo frame = fogFrame();
@@ -129,7 +130,12 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
         frame.fog.autoBudgetMs = budget;
         const FogHarnessImages im = images(frame);
         std::vector<float> out;
-        for (uint64_t i = 0; i < 6; ++i) {
+        // Frames 0..11 measure Low, Medium, High, Ultra in turn, three times each (each frame here is
+        // waited for, so its timings are read when the next is recorded); frame 12 chooses.
+        constexpr uint64_t kMeasuring = 4 * 3;
+        const postfx::FogQuality kTurns[] = {FogQuality::Low, FogQuality::Medium, FogQuality::High,
+                                             FogQuality::Ultra};
+        for (uint64_t i = 0; i < kMeasuring + 2; ++i) {
             frame.frameIndex = i;
             const postfx::Status s = harness.run(*context, im, frame, out);
             ASSERT_TRUE(s.ok()) << s.message;
@@ -139,9 +145,15 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
                     GTEST_SKIP() << "no GPU timings on this device";
             }
             const postfx::Status c = context->fogAutoQuality(chosen);
-            if (i < 4) {
-                // Frames 0..3 measure Low, Medium, High, Ultra; frame 4 reads frame 3's timings.
+            if (i < kMeasuring) {
                 EXPECT_EQ(c.code, Result::NotReady) << "frame " << i;
+                // What was rendered is the preset whose turn it is.
+                postfx::FrameInfo turn = frame;
+                turn.fog = postfx::applyFogQuality(frame.fog, kTurns[i % 4]);
+                turn.fog.quality = FogQuality::Custom;
+                std::vector<float> expectedImage;
+                ASSERT_TRUE(harness.run(*asCustom, im, turn, expectedImage).ok());
+                EXPECT_EQ(out, expectedImage) << "frame " << i << " should be preset " << int(kTurns[i % 4]);
             } else {
                 ASSERT_TRUE(c.ok()) << "frame " << i << ": " << c.message;
                 EXPECT_EQ(chosen, expected) << "budget " << budget;
@@ -157,7 +169,7 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
         EXPECT_EQ(out, reference);
         // A new key (another extent would need other images; noise on is one) measures again.
         frame.fog.noise.enabled = true;
-        frame.frameIndex = 6;
+        frame.frameIndex = kMeasuring + 2;
         ASSERT_TRUE(harness.run(*context, im, frame, out).ok());
         EXPECT_EQ(context->fogAutoQuality(chosen).code, Result::NotReady);
     }

@@ -86,6 +86,7 @@ public:
     // record() (its command buffer may be null); records nothing, creates nothing. An effect that is off,
     // or whose medium is empty, has no pass and no resource; a separate output image that no effect
     // writes gets postfx.copy. Work on slow inputs (fog.noise) is listed only in the frame that redoes it.
+    // With fog quality Auto: the preset record() would use now (still measuring: the one whose turn it is).
     Status plan(const FrameInfo& frame, FramePlan& out) const;
 
     // Timings of the passes recorded for `frameIndex`. Returns NotReady while the GPU has not finished

@@ -40,10 +40,10 @@ enum class FogQuality {
     Medium,
     High,
     Ultra,
-    // The context measures Low..Ultra on the running device (one frame each, the first four frames of
-    // every new (color extent, noise on, shadow map present)), then uses the highest preset whose fog
-    // passes take at most autoBudgetMs, or Low if none fits (see Context::fogAutoQuality). Without GPU
-    // timings: Medium.
+    // The context measures Low..Ultra on the running device (the first twelve frames of every new
+    // (color extent, noise on, shadow map present): the presets in turn, three frames each, median),
+    // then uses the highest preset whose fog passes take at most autoBudgetMs, or Low if none fits
+    // (see Context::fogAutoQuality). Without GPU timings: Medium.
     Auto,
 };
 

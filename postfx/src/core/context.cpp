@@ -163,9 +163,13 @@ void Context::Impl::buildPlan(const FrameInfo& frame, FramePlan& plan) const {
 Status Context::plan(const FrameInfo& frame, FramePlan& out) const {
     out = {};
     const Impl& impl = *impl_;
-    // The presets change no pass or resource; Auto is planned as the preset it chose last (or Medium).
+    // A preset can change the passes and resources (its resolution scale): Auto is planned as the preset
+    // record() would use now (a copy of its state selects; nothing is collected or measured).
     FogQuality preset = frame.fog.quality;
-    if (preset == FogQuality::Auto && !impl.fogAutoQuality.chosen(preset).ok()) preset = FogQuality::Medium;
+    if (preset == FogQuality::Auto) {
+        fog::AutoQuality copy = impl.fogAutoQuality;
+        preset = copy.select(fog::AutoQualityKey::of(frame), frame.fog.autoBudgetMs, impl.timer);
+    }
     const FrameInfo resolved =
         fog::FogPass::runs(frame) && preset != FogQuality::Custom ? withFogPreset(frame, preset) : frame;
     if (Status s = impl.validateFrame(resolved); !s) return impl.report(s);
@@ -185,8 +189,7 @@ Status Context::record(const FrameInfo& frame) {
     // finished frames' timings, so before the timer starts this frame).
     FrameInfo resolved;
     const FrameInfo* effective = &frame;
-    const fog::AutoQualityKey autoKey{frame.color.extent.width, frame.color.extent.height,
-                                      frame.fog.noise.enabled, frame.shadowMap.image.present()};
+    const fog::AutoQualityKey autoKey = fog::AutoQualityKey::of(frame);
     const bool fogRuns = fog::FogPass::runs(frame);
     if (fogRuns && frame.fog.quality != FogQuality::Custom) {
         FogQuality preset = frame.fog.quality;

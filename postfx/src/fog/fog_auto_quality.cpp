@@ -6,7 +6,14 @@
 namespace postfx::fog {
 
 bool AutoQuality::Entry::measured() const {
-    return std::all_of(ms.begin(), ms.end(), [](const std::optional<double>& t) { return t.has_value(); });
+    return std::all_of(ms.begin(), ms.end(),
+                       [](const std::vector<double>& t) { return t.size() >= kSamples; });
+}
+
+double AutoQuality::Entry::medianMs(size_t preset) const {
+    std::vector<double> t = ms[preset];
+    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+    return t[t.size() / 2];
 }
 
 AutoQuality::Entry& AutoQuality::entry(const AutoQualityKey& key) {
@@ -28,7 +35,8 @@ void AutoQuality::collect(const core::PassTimer& timer) {
             double ms = 0.0;
             for (const PassTiming& t : timings)
                 if (t.name.rfind("fog.", 0) == 0 && t.name != "fog.noise") ms += t.milliseconds;
-            entry(it->key).ms[it->preset] = ms;
+            std::vector<double>& samples = entry(it->key).ms[it->preset];
+            if (samples.size() < kSamples) samples.push_back(ms);
         }  // any other status: the frame's queries are gone; its preset is measured again later
         it = pending_.erase(it);
     }
@@ -43,21 +51,25 @@ FogQuality AutoQuality::select(const AutoQualityKey& key, float budgetMs, const 
     const Entry& e = entry(key);
     if (!e.measured()) {
         last_.reset();
-        // The next preset neither measured nor waiting for its timings; when all are waiting, the first
-        // unmeasured one again.
-        std::optional<size_t> next;
-        for (size_t i = 0; i < kPresets.size() && !next; ++i) {
-            const bool waiting = std::any_of(pending_.begin(), pending_.end(),
-                                             [&](const Pending& p) { return p.key == key && p.preset == i; });
-            if (!e.ms[i] && !waiting) next = i;
+        // The preset with the fewest times, counting frames still waiting for theirs (ties: the lower
+        // preset), so the presets take turns; once every missing time is waited for, the one with the
+        // fewest times again.
+        size_t next = 0, fewest = SIZE_MAX;
+        for (size_t i = 0; i < kPresets.size(); ++i) {
+            const size_t waiting =
+                size_t(std::count_if(pending_.begin(), pending_.end(),
+                                     [&](const Pending& p) { return p.key == key && p.preset == i; }));
+            const size_t count = e.ms[i].size() + waiting;
+            if (e.ms[i].size() < kSamples && count < kSamples && count < fewest) next = i, fewest = count;
         }
-        for (size_t i = 0; i < kPresets.size() && !next; ++i)
-            if (!e.ms[i]) next = i;
-        return kPresets[*next];
+        if (fewest == SIZE_MAX)
+            for (size_t i = 0; i < kPresets.size(); ++i)
+                if (e.ms[i].size() < kSamples && e.ms[i].size() < fewest) next = i, fewest = e.ms[i].size();
+        return kPresets[next];
     }
     FogQuality choice = FogQuality::Low;
     for (size_t i = 0; i < kPresets.size(); ++i)
-        if (*e.ms[i] <= double(budgetMs)) choice = kPresets[i];
+        if (e.medianMs(i) <= double(budgetMs)) choice = kPresets[i];
     last_ = choice;
     return choice;
 }

@@ -20,17 +20,25 @@ struct AutoQualityKey {
     bool noise = false;
     bool shadowMap = false;
     bool operator==(const AutoQualityKey&) const = default;
+    static AutoQualityKey of(const FrameInfo& frame) {
+        return {frame.color.extent.width, frame.color.extent.height, frame.fog.noise.enabled,
+                frame.shadowMap.image.present()};
+    }
 };
 
 class AutoQuality {
 public:
     static constexpr std::array<FogQuality, 4> kPresets = {FogQuality::Low, FogQuality::Medium,
                                                            FogQuality::High, FogQuality::Ultra};
+    // Frames measured per preset; a preset's time is their median. The presets take turns (Low, Medium,
+    // High, Ultra, Low, ...), so a clock ramp or a first-use cost after a resize falls on all of them.
+    static constexpr size_t kSamples = 3;
 
     // The preset frame `frameIndex` with `key` uses. First collects the timings of pending measured
     // frames that have finished (does not wait); call before the timer starts `frameIndex`. While
-    // `key` has unmeasured presets, returns the next one to measure; then the highest preset whose
-    // time <= budgetMs, or Low if none fits. Without timings (`timer` disabled): Medium.
+    // `key` has presets with fewer than kSamples times, returns the next one to measure; then the
+    // highest preset whose median time <= budgetMs, or Low if none fits. Without timings (`timer`
+    // disabled): Medium. Context::plan asks a copy, so the plan is what record() would choose now.
     FogQuality select(const AutoQualityKey& key, float budgetMs, const core::PassTimer& timer);
     // After `frameIndex` was recorded with `preset` (as select returned): measure it if still needed.
     void recorded(uint64_t frameIndex, const AutoQualityKey& key, FogQuality preset);
@@ -40,8 +48,9 @@ public:
 private:
     struct Entry {
         AutoQualityKey key;
-        std::array<std::optional<double>, 4> ms;  // per kPresets
+        std::array<std::vector<double>, 4> ms;  // per kPresets: the measured frames' times [ms]
         bool measured() const;
+        double medianMs(size_t preset) const;
     };
     struct Pending {
         uint64_t frameIndex;
