@@ -63,7 +63,8 @@ Status validateImage(const ImageInput& image, const char* name, bool (*formatOk)
     return Status::success();
 }
 
-// `frame` with the fog's steps, jitter and shadow kernel set by `preset` (Context::record and plan).
+// `frame` with the fog's steps, jitter, shadow kernel and resolution scale set by `preset`
+// (Context::record and plan).
 FrameInfo withFogPreset(const FrameInfo& frame, FogQuality preset) {
     FrameInfo resolved = frame;
     resolved.fog = applyFogQuality(frame.fog, preset);
@@ -185,8 +186,8 @@ Status Context::record(const FrameInfo& frame) {
         !s)
         return impl.report(s);
 
-    // Quality presets replace steps/jitter/shadowKernel before the checks; Auto picks the preset (reading
-    // finished frames' timings, so before the timer starts this frame).
+    // Quality presets replace steps/jitter/shadowKernel/resolutionScale before the checks; Auto picks the
+    // preset (reading finished frames' timings, so before the timer starts this frame).
     FrameInfo resolved;
     const FrameInfo* effective = &frame;
     const fog::AutoQualityKey autoKey = fog::AutoQualityKey::of(frame);
