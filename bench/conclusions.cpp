@@ -3,6 +3,7 @@
 
 #include "report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -249,6 +250,36 @@ std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& 
                                                  : "baseline does not reach it");
             }
             out << " |\n";
+        }
+        out << "\n";
+    }
+    out << skippingMarkdown(info, results);
+    return out.str();
+}
+
+std::string skippingMarkdown(const RunInfo& info, const std::vector<Result>& results) {
+    std::ostringstream out;
+    for (const std::string& skipped : sceneOrder(results)) {
+        const std::string unskipped = skipped + kUnskippedSuffix;
+        const std::vector<std::string> scenes = sceneOrder(results);
+        if (std::find(scenes.begin(), scenes.end(), unskipped) == scenes.end()) continue;
+        out << "## Empty-space skipping: " << skipped << " against " << unskipped << "\n\n"
+            << "The same scene with `skip_empty_space` on and off, every postfx-fog sweep point measured in "
+               "both (time change: negative is faster with skipping).\n\n"
+            << "| setting | GPU ms skipped / un-skipped | change | rel. RMSE 1 frame skipped / un-skipped | "
+               "16 frames skipped / un-skipped |\n|---|---|---|---|---|\n";
+        for (const Result& r : results) {
+            if (!isSweep(r, skipped, sceneNoiseSize(info, skipped))) continue;
+            const Result* u = sameKnobs(info, results, unskipped, r);
+            if (!u) continue;
+            const double change = r.timing.median / u->timing.median - 1.0;
+            out << "| `" << r.setting.label() << "` | " << formatNumber(r.timing.median, 4) << " / "
+                << formatNumber(u->timing.median, 4) << " | "
+                << (std::isfinite(change) ? (change > 0 ? "+" : "") + formatNumber(change * 100.0, 3) + "%"
+                                          : "–")
+                << " | " << percent(r.error[0].relativeRmse) << " / " << percent(u->error[0].relativeRmse)
+                << " | " << percent(r.error[2].relativeRmse) << " / " << percent(u->error[2].relativeRmse)
+                << " |\n";
         }
         out << "\n";
     }

@@ -1,6 +1,6 @@
 // What a run concludes, computed from its rows (never written by hand): the quality presets proposed by
-// a fixed rule from the measured front, and where the targets stand
-// (docs/accuracy-cost/README.md, "Presets" and "Targets").
+// a fixed rule from the measured front, where the targets stand, and what empty-space skipping
+// saves (docs/accuracy-cost/README.md, "Presets and targets, computed by the run").
 #pragma once
 
 #include "bench_types.h"
@@ -38,6 +38,12 @@ const Result* fastestWithin(const std::vector<Result>& results, const std::strin
 // results.md's sections "Presets proposed by this run" and "Targets" (markdown, ends with a blank line).
 // Presets are proposed for info.presetBudgets on info.presetScene.
 std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& results);
+
+// A scene named S + kUnskippedSuffix is S with fog.skip_empty_space false (demo/scenes/fog_valley*.json).
+inline constexpr const char* kUnskippedSuffix = "_unskipped";
+// For each such pair in the run: the section "Empty-space skipping" (every sweep point of S beside the
+// same point of its un-skipped twin: time and error); empty without a pair. Part of conclusionsMarkdown.
+std::string skippingMarkdown(const RunInfo& info, const std::vector<Result>& results);
 
 // A few lines for stdout: the proposed presets and the targets' status.
 std::string conclusionsSummary(const RunInfo& info, const std::vector<Result>& results);

@@ -120,4 +120,23 @@ TEST(BenchConclusions, TargetsSayMetOrMissedFromTheRows) {
     EXPECT_NE(bench::conclusionsMarkdown(info, r).find("Not 1920×1080"), std::string::npos);
 }
 
+TEST(BenchConclusions, SkippingPairsEachSweepPointWithItsUnskippedTwin) {
+    const std::vector<Result> r = {
+        ours("valley", 16, true, 1.0f, 0, 0.30, 0.016, 0.003),
+        ours("valley", 64, true, 1.0f, 0, 0.50, 0.004, 0.001),
+        ours("valley_unskipped", 16, true, 1.0f, 0, 0.60, 0.021, 0.0035),
+        ours("valley_unskipped", 64, true, 1.0f, 0, 1.00, 0.0057, 0.0011),
+        ours("valley", 32, true, 1.0f, 0, 0.40, 0.008, 0.002),  // no twin: not listed
+    };
+    bench::RunInfo info;
+    const std::string md = bench::skippingMarkdown(info, r);
+    EXPECT_NE(md.find("## Empty-space skipping: valley against valley_unskipped"), std::string::npos) << md;
+    EXPECT_NE(md.find("| `steps=16 jitter=on scale=1` | 0.3 / 0.6 | -50% | 1.6% / 2.1% | 0.3% / 0.35% |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("| `steps=64 jitter=on scale=1` | 0.5 / 1 | -50% |"), std::string::npos) << md;
+    EXPECT_EQ(md.find("steps=32"), std::string::npos) << md;
+    EXPECT_EQ(bench::skippingMarkdown(info, {r[0], r[1]}), "");  // no pair, no section
+}
+
 }  // namespace
