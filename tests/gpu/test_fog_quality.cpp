@@ -2,6 +2,7 @@
 // Custom with the same values, and FogQuality::Auto measuring the presets and choosing by budget.
 #include "fog_harness.h"
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -173,6 +174,89 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
         ASSERT_TRUE(harness.run(*context, im, frame, out).ok());
         EXPECT_EQ(context->fogAutoQuality(chosen).code, Result::NotReady);
     }
+}
+
+// Auto's measurements leave one context and enter another, which then chooses from its first frame; given
+// times choose by the budget exactly; bad times are refused whole.
+TEST_F(FogQualityTest, AutoTimingsCarryToANewContext) {
+    FogHarness harness(*host, gpu);
+    postfx::FrameInfo frame = fogFrame();
+    frame.fog.quality = FogQuality::Auto;
+    frame.fog.autoBudgetMs = 2.5f;
+    const FogHarnessImages im = images(frame);
+    std::vector<float> out;
+
+    // Given times: 1, 2, 3, 4 ms with a 2.5 ms budget is Medium, from frame 0, rendered as Medium.
+    std::unique_ptr<postfx::Context> given = newContext();
+    std::unique_ptr<postfx::Context> asCustom = newContext();
+    ASSERT_TRUE(given && asCustom);
+    EXPECT_TRUE(given->fogAutoTimings().empty());
+    postfx::FogAutoTimings t;
+    t.width = kWidth;
+    t.height = kHeight;
+    t.presetMs[0] = 1.0f, t.presetMs[1] = 2.0f, t.presetMs[2] = 3.0f, t.presetMs[3] = 4.0f;
+    postfx::FogAutoTimings otherKey = t;
+    otherKey.noise = true;
+    ASSERT_TRUE(given->setFogAutoTimings({t, otherKey}).ok());
+    ASSERT_EQ(given->fogAutoTimings().size(), 2u);
+    EXPECT_EQ(given->fogAutoTimings()[0].presetMs[2], 3.0f);
+    frame.frameIndex = 0;
+    ASSERT_TRUE(harness.run(*given, im, frame, out).ok());
+    FogQuality chosen = FogQuality::Custom;
+    ASSERT_TRUE(given->fogAutoQuality(chosen).ok());
+    EXPECT_EQ(chosen, FogQuality::Medium);
+    postfx::FrameInfo medium = frame;
+    medium.fog = postfx::applyFogQuality(frame.fog, FogQuality::Medium);
+    medium.fog.quality = FogQuality::Custom;
+    std::vector<float> expected;
+    ASSERT_TRUE(harness.run(*asCustom, im, medium, expected).ok());
+    EXPECT_EQ(out, expected);
+
+    // Refused whole: a NaN time, a negative one, a zero extent.
+    std::unique_ptr<postfx::Context> refused = newContext();
+    ASSERT_TRUE(refused);
+    postfx::FogAutoTimings nan = t, negative = t, empty = t;
+    nan.presetMs[2] = NAN;
+    negative.presetMs[0] = -1.0f;
+    empty.width = 0;
+    for (const auto& [bad, field] :
+         {std::pair{nan, "presetMs[2]"}, std::pair{negative, "presetMs[0]"}, std::pair{empty, "extent"}}) {
+        const postfx::Status s = refused->setFogAutoTimings({t, bad});
+        EXPECT_EQ(s.code, Result::InvalidArgument) << field;
+        EXPECT_NE(s.message.find("fog auto timings[1]"), std::string::npos) << s.message;
+        EXPECT_NE(s.message.find(field), std::string::npos) << s.message;
+    }
+    EXPECT_TRUE(refused->fogAutoTimings().empty());
+
+    // Measured on one context, given to another: the same times, and the new one chooses at once.
+    std::unique_ptr<postfx::Context> measuring = newContext();
+    ASSERT_TRUE(measuring);
+    frame.fog.autoBudgetMs = 1e6f;  // Ultra
+    for (uint64_t i = 0; i < 13; ++i) {
+        frame.frameIndex = i;
+        ASSERT_TRUE(harness.run(*measuring, im, frame, out).ok());
+        std::vector<postfx::PassTiming> timings;
+        if (i == 0 && measuring->readPassTimings(0, timings).code == Result::Unsupported)
+            GTEST_SKIP() << "no GPU timings on this device";
+    }
+    const std::vector<postfx::FogAutoTimings> measured = measuring->fogAutoTimings();
+    ASSERT_EQ(measured.size(), 1u);
+    EXPECT_EQ(measured[0].width, kWidth);
+    EXPECT_EQ(measured[0].height, kHeight);
+    EXPECT_FALSE(measured[0].noise);
+    EXPECT_FALSE(measured[0].shadowMap);
+    for (float ms : measured[0].presetMs)
+        EXPECT_TRUE(std::isfinite(ms) && ms > 0.0f) << ms;
+    std::unique_ptr<postfx::Context> next = newContext();
+    ASSERT_TRUE(next && next->setFogAutoTimings(measured).ok());
+    frame.frameIndex = 0;
+    ASSERT_TRUE(harness.run(*next, im, frame, out).ok());
+    ASSERT_TRUE(next->fogAutoQuality(chosen).ok());
+    EXPECT_EQ(chosen, FogQuality::Ultra);
+    const std::vector<postfx::FogAutoTimings> carried = next->fogAutoTimings();
+    ASSERT_EQ(carried.size(), 1u);
+    for (int i = 0; i < 4; ++i)
+        EXPECT_EQ(carried[0].presetMs[i], measured[0].presetMs[i]);
 }
 
 TEST_F(FogQualityTest, AutoWithoutTimingsUsesMedium) {

@@ -99,6 +99,15 @@ public:
     // recorded). Medium when GPU timings are off.
     Status fogAutoQuality(FogQuality& chosen) const;
 
+    // Auto's measurements, for a host that keeps them between runs, as engines keep the result of their
+    // quality auto-detection: every key measured so far (all four presets) or given. Key them by device,
+    // driver and postfx version where they are stored: the presets' cost depends on all three.
+    std::vector<FogAutoTimings> fogAutoTimings() const;
+    // Adds `timings` to Auto's cache (replacing keys it has), so frames with those keys choose from the
+    // first frame instead of measuring. InvalidArgument naming the entry for a zero extent or a time that
+    // is negative or not finite; then nothing is added.
+    Status setFogAutoTimings(const std::vector<FogAutoTimings>& timings);
+
     // Records a copy of the fog's generated noise texture (R8, size³ bytes, x fastest, then y, then z)
     // into `buffer` at `offset` (usage TRANSFER_DST); the host submits and reads it, e.g. to give the
     // CPU reference the same noise data. `size` receives the texture's edge. InvalidArgument when no

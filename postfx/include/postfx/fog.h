@@ -89,6 +89,15 @@ struct FogSettings {
     FogNoiseSettings noise;
 };
 
+// FogQuality::Auto's measurements for one (color extent, noise on, shadow map present): the median GPU
+// time of each preset's fog passes (Context::fogAutoTimings, setFogAutoTimings).
+struct FogAutoTimings {
+    uint32_t width = 0, height = 0;  // color image extent [px]; each >= 1
+    bool noise = false;              // fog.noise.enabled
+    bool shadowMap = false;          // FrameInfo::shadowMap.image present
+    float presetMs[4] = {};          // Low, Medium, High, Ultra [ms]; each finite, >= 0
+};
+
 // The sun as the fog sees it.
 struct SunInput {
     glm::vec3 toSun{0.0f, 1.0f, 0.0f};  // unit direction toward the sun (normalised by postfx)

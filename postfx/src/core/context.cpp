@@ -232,6 +232,14 @@ Status Context::fogAutoQuality(FogQuality& chosen) const {
     return impl_->fogAutoQuality.chosen(chosen);
 }
 
+std::vector<FogAutoTimings> Context::fogAutoTimings() const {
+    return impl_->fogAutoQuality.timings();
+}
+
+Status Context::setFogAutoTimings(const std::vector<FogAutoTimings>& timings) {
+    return impl_->report(impl_->fogAutoQuality.give(timings));
+}
+
 Status Context::recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,
                                        uint32_t& size) const {
     const fog::FogNoise* noise = impl_->fog ? impl_->fog->noise() : nullptr;

@@ -1,6 +1,7 @@
 #include "fog/fog_auto_quality.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace postfx::fog {
@@ -80,6 +81,43 @@ void AutoQuality::recorded(uint64_t frameIndex, const AutoQualityKey& key, FogQu
     if (it == kPresets.end()) return;
     std::erase_if(pending_, [&](const Pending& p) { return p.frameIndex == frameIndex; });
     pending_.push_back({frameIndex, key, size_t(it - kPresets.begin())});
+}
+
+std::vector<FogAutoTimings> AutoQuality::timings() const {
+    std::vector<FogAutoTimings> out;
+    for (const Entry& e : cache_) {
+        if (!e.measured()) continue;
+        FogAutoTimings t;
+        t.width = e.key.width;
+        t.height = e.key.height;
+        t.noise = e.key.noise;
+        t.shadowMap = e.key.shadowMap;
+        for (size_t i = 0; i < kPresets.size(); ++i)
+            t.presetMs[i] = float(e.medianMs(i));
+        out.push_back(t);
+    }
+    return out;
+}
+
+Status AutoQuality::give(const std::vector<FogAutoTimings>& given) {
+    for (size_t k = 0; k < given.size(); ++k) {
+        const FogAutoTimings& t = given[k];
+        const std::string name = "fog auto timings[" + std::to_string(k) + "]";
+        if (t.width == 0 || t.height == 0)
+            return {Result::InvalidArgument, name + ": extent must be at least 1x1"};
+        for (size_t i = 0; i < kPresets.size(); ++i)
+            if (!std::isfinite(t.presetMs[i]) || t.presetMs[i] < 0.0f)
+                return {Result::InvalidArgument, name + ".presetMs[" + std::to_string(i) +
+                                                     "]: " + std::to_string(t.presetMs[i]) +
+                                                     " must be finite and >= 0"};
+    }
+    for (const FogAutoTimings& t : given) {
+        Entry& e = entry({t.width, t.height, t.noise, t.shadowMap});
+        // A given time stands for all kSamples measurements (its median is that time).
+        for (size_t i = 0; i < kPresets.size(); ++i)
+            e.ms[i].assign(kSamples, double(t.presetMs[i]));
+    }
+    return Status::success();
 }
 
 Status AutoQuality::chosen(FogQuality& out) const {

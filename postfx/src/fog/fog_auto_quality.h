@@ -44,6 +44,10 @@ public:
     void recorded(uint64_t frameIndex, const AutoQualityKey& key, FogQuality preset);
     // The choice for the key of the last select(); NotReady while its presets are being measured.
     Status chosen(FogQuality& out) const;
+    // Every fully measured key, with each preset's median time.
+    std::vector<FogAutoTimings> timings() const;
+    // Sets the keys of `given` as measured, with those times (checked first: nothing changes on error).
+    Status give(const std::vector<FogAutoTimings>& given);
 
 private:
     struct Entry {
