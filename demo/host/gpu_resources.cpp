@@ -128,7 +128,7 @@ bool createComputePipeline(VkDevice device, std::span<const uint32_t> spirv, VkP
     return vkCheck(r, what, error);
 }
 
-void imageBarrier(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout oldLayout,
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout oldLayout,
                   VkImageLayout newLayout, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
                   VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
     VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
@@ -138,9 +138,16 @@ void imageBarrier(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout oldL
     b.newLayout = newLayout;
     b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image.image;
-    b.subresourceRange = {image.aspect, 0, 1, 0, 1};
+    b.image = image;
+    b.subresourceRange = {aspect, 0, 1, 0, 1};
     vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+void imageBarrier(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout oldLayout,
+                  VkImageLayout newLayout, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+    imageBarrier(cmd, image.image, image.aspect, oldLayout, newLayout, srcStage, srcAccess, dstStage,
+                 dstAccess);
 }
 
 void bufferBarrier(VkCommandBuffer cmd, const GpuBuffer& buffer, VkPipelineStageFlags srcStage,

@@ -44,6 +44,11 @@ bool createComputePipeline(VkDevice device, std::span<const uint32_t> spirv, VkP
 void imageBarrier(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout oldLayout,
                   VkImageLayout newLayout, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
                   VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+// The same for an image the demo does not own (a swapchain image, the renderer's HDR image): one mip
+// level, one layer, `aspect`.
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout oldLayout,
+                  VkImageLayout newLayout, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
 // One buffer memory barrier (whole buffer).
 void bufferBarrier(VkCommandBuffer cmd, const GpuBuffer& buffer, VkPipelineStageFlags srcStage,
                    VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);

@@ -1,6 +1,7 @@
 #include "window/tonemap_pass.h"
 
 #include "demo_shared.h"
+#include "host/gpu_resources.h"
 #include "postfx-demo_spirv.h"
 
 #include <array>
@@ -10,20 +11,6 @@ namespace demo::window {
 namespace {
 
 constexpr VkFormat kOutputFormat = VK_FORMAT_R8G8B8A8_UNORM;
-
-void barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout oldLayout, VkImageLayout newLayout,
-             VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
-             VkAccessFlags dstAccess) {
-    VkImageMemoryBarrier b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    b.srcAccessMask = srcAccess;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = oldLayout;
-    b.newLayout = newLayout;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image;
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
-}
 
 }  // namespace
 
@@ -114,11 +101,11 @@ void TonemapPass::record(VkCommandBuffer cmd, float ev100, bool swapRedBlue) con
     const VkPipelineStageFlags compute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     const VkPipelineStageFlags transfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
     // The previous frame's blit/copy read the output; its content is overwritten entirely.
-    barrier(cmd, output_.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, transfer, 0, compute,
-            VK_ACCESS_SHADER_WRITE_BIT);
+    imageBarrier(cmd, output_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                 VK_IMAGE_LAYOUT_GENERAL, transfer, 0, compute, VK_ACCESS_SHADER_WRITE_BIT);
     // Renderer::recordFrame leaves the HDR image in GENERAL with compute writes to make visible.
-    barrier(cmd, hdr_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, compute,
-            VK_ACCESS_SHADER_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
+    imageBarrier(cmd, hdr_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                 compute, VK_ACCESS_SHADER_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
 
     shared::TonemapPush push{};
     push.params = glm::vec4(1.0f / (shared::kExposureSaturation * std::exp2(ev100)),
@@ -130,8 +117,9 @@ void TonemapPass::record(VkCommandBuffer cmd, float ev100, bool swapRedBlue) con
     const uint32_t g = shared::kTonemapGroupSize;
     vkCmdDispatch(cmd, (output_.extent.width + g - 1) / g, (output_.extent.height + g - 1) / g, 1);
 
-    barrier(cmd, output_.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, compute,
-            VK_ACCESS_SHADER_WRITE_BIT, transfer, VK_ACCESS_TRANSFER_READ_BIT);
+    imageBarrier(cmd, output_.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, compute, VK_ACCESS_SHADER_WRITE_BIT, transfer,
+                 VK_ACCESS_TRANSFER_READ_BIT);
 }
 
 }  // namespace demo::window
