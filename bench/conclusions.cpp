@@ -10,10 +10,6 @@
 namespace bench {
 namespace {
 
-std::string percent(double fraction) {
-    return std::isfinite(fraction) ? formatNumber(fraction * 100.0, 3) + "%" : "–";
-}
-
 std::string ms(double value) {
     return std::isfinite(value) ? formatNumber(value, 4) + " ms" : "–";
 }
@@ -259,9 +255,9 @@ std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& 
 
 std::string skippingMarkdown(const RunInfo& info, const std::vector<Result>& results) {
     std::ostringstream out;
-    for (const std::string& skipped : sceneOrder(results)) {
+    const std::vector<std::string> scenes = sceneOrder(results);
+    for (const std::string& skipped : scenes) {
         const std::string unskipped = skipped + kUnskippedSuffix;
-        const std::vector<std::string> scenes = sceneOrder(results);
         if (std::find(scenes.begin(), scenes.end(), unskipped) == scenes.end()) continue;
         out << "## Empty-space skipping: " << skipped << " against " << unskipped << "\n\n"
             << "The same scene with `skip_empty_space` on and off, every postfx-fog sweep point measured in "

@@ -23,10 +23,6 @@ bool writeFile(const std::string& path, const std::string& text, std::string& er
     return true;
 }
 
-std::string percent(double fraction, int digits = 3) {
-    return std::isfinite(fraction) ? formatNumber(fraction * 100.0, digits) + "%" : "–";
-}
-
 std::string orDash(const std::string& s) {
     return s.empty() ? "–" : s;
 }
@@ -75,6 +71,10 @@ std::vector<const Result*> sortedRows(const std::vector<Result>& results, const 
 }
 
 }  // namespace
+
+std::string percent(double fraction, int digits) {
+    return std::isfinite(fraction) ? formatNumber(fraction * 100.0, digits) + "%" : "–";
+}
 
 std::string formatNumber(double value, int digits) {
     if (std::isnan(value)) return "";

@@ -21,6 +21,7 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
 
 // Helpers shared by the writers.
 std::string formatNumber(double value, int digits = 4);  // "" for NaN
+std::string percent(double fraction, int digits = 3);    // "1.23%"; "–" when not finite
 std::string xmlEscape(const std::string& text);
 // The scenes in the order their first result appears.
 std::vector<std::string> sceneOrder(const std::vector<Result>& results);

@@ -18,8 +18,7 @@ constexpr std::array<uint32_t, 5> kTextureSizes{16, 32, 64, 128, 256};
 constexpr std::array<const char*, 5> kTextureSizeNames{"16", "32", "64", "128", "256"};
 constexpr std::array<uint32_t, 4> kShadowKernels{1, 3, 5, 7};
 constexpr std::array<const char*, 4> kShadowKernelNames{"1 x 1", "3 x 3", "5 x 5", "7 x 7"};
-// postfx::FogQuality in enum order.
-constexpr std::array<const char*, 6> kQualityNames{"custom", "low", "medium", "high", "ultra", "auto"};
+constexpr int kQualityCount = int(postfx::FogQuality::Auto) + 1;  // Custom .. Auto
 
 // Limits postfx puts on the sun (SunInput): each illuminance channel in [0, 1e7] lux.
 constexpr float kMaxIlluminance = 1e7f;
@@ -83,9 +82,12 @@ bool buildNoise(postfx::FogNoiseSettings& n) {
 // cannot be edited (Auto: the custom values, greyed; the overlay shows the preset Auto picked).
 bool buildQuality(postfx::FogSettings& f) {
     bool changed = false;
+    std::array<const char*, kQualityCount> names;  // the scene files' names, in enum order
+    for (int i = 0; i < kQualityCount; ++i)
+        names[size_t(i)] = fogQualityName(postfx::FogQuality(i));
     int quality = int(f.quality);
-    if (ImGui::Combo("quality", &quality, kQualityNames.data(), int(kQualityNames.size()))) {
-        f.quality = postfx::FogQuality(std::clamp(quality, 0, int(kQualityNames.size()) - 1));
+    if (ImGui::Combo("quality", &quality, names.data(), kQualityCount)) {
+        f.quality = postfx::FogQuality(std::clamp(quality, 0, kQualityCount - 1));
         changed = true;
     }
     tooltip(
@@ -181,8 +183,7 @@ void FogControls::sanitize(postfx::FogSettings& f) {
     if (!(f.maxDistance > 0.0f)) f.maxDistance = 1.0f;  // also NaN
     f.maxDistance = std::min(f.maxDistance, 1e7f);
     f.steps = std::clamp<uint32_t>(f.steps, 1, 4096);
-    if (int(f.quality) < 0 || int(f.quality) >= int(kQualityNames.size()))
-        f.quality = postfx::FogQuality::Custom;
+    if (int(f.quality) < 0 || int(f.quality) >= kQualityCount) f.quality = postfx::FogQuality::Custom;
     if (!(f.autoBudgetMs > 0.0f)) f.autoBudgetMs = 0.05f;  // also NaN
     f.autoBudgetMs = std::min(f.autoBudgetMs, 1e6f);
     f.resolutionScale = clampOrLow(f.resolutionScale, 0.25f, 1.0f);

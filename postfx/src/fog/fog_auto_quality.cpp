@@ -7,14 +7,13 @@
 namespace postfx::fog {
 
 bool AutoQuality::Entry::measured() const {
-    return std::all_of(ms.begin(), ms.end(),
-                       [](const std::vector<double>& t) { return t.size() >= kSamples; });
+    return std::all_of(count.begin(), count.end(), [](size_t n) { return n >= kSamples; });
 }
 
 double AutoQuality::Entry::medianMs(size_t preset) const {
-    std::vector<double> t = ms[preset];
-    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
-    return t[t.size() / 2];
+    std::array<double, kSamples> t = ms[preset];
+    std::nth_element(t.begin(), t.begin() + kSamples / 2, t.end());
+    return t[kSamples / 2];
 }
 
 AutoQuality::Entry& AutoQuality::entry(const AutoQualityKey& key) {
@@ -36,8 +35,8 @@ void AutoQuality::collect(const core::PassTimer& timer) {
             double ms = 0.0;
             for (const PassTiming& t : timings)
                 if (t.name.rfind("fog.", 0) == 0 && t.name != "fog.noise") ms += t.milliseconds;
-            std::vector<double>& samples = entry(it->key).ms[it->preset];
-            if (samples.size() < kSamples) samples.push_back(ms);
+            Entry& e = entry(it->key);
+            if (e.count[it->preset] < kSamples) e.ms[it->preset][e.count[it->preset]++] = ms;
         }  // any other status: the frame's queries are gone; its preset is measured again later
         it = pending_.erase(it);
     }
@@ -60,12 +59,12 @@ FogQuality AutoQuality::select(const AutoQualityKey& key, float budgetMs, const 
             const size_t waiting =
                 size_t(std::count_if(pending_.begin(), pending_.end(),
                                      [&](const Pending& p) { return p.key == key && p.preset == i; }));
-            const size_t count = e.ms[i].size() + waiting;
-            if (e.ms[i].size() < kSamples && count < kSamples && count < fewest) next = i, fewest = count;
+            const size_t count = e.count[i] + waiting;
+            if (e.count[i] < kSamples && count < kSamples && count < fewest) next = i, fewest = count;
         }
         if (fewest == SIZE_MAX)
             for (size_t i = 0; i < kPresets.size(); ++i)
-                if (e.ms[i].size() < kSamples && e.ms[i].size() < fewest) next = i, fewest = e.ms[i].size();
+                if (e.count[i] < kSamples && e.count[i] < fewest) next = i, fewest = e.count[i];
         return kPresets[next];
     }
     FogQuality choice = FogQuality::Low;
@@ -114,8 +113,10 @@ Status AutoQuality::give(const std::vector<FogAutoTimings>& given) {
     for (const FogAutoTimings& t : given) {
         Entry& e = entry({t.width, t.height, t.noise, t.shadowMap});
         // A given time stands for all kSamples measurements (its median is that time).
-        for (size_t i = 0; i < kPresets.size(); ++i)
-            e.ms[i].assign(kSamples, double(t.presetMs[i]));
+        for (size_t i = 0; i < kPresets.size(); ++i) {
+            e.ms[i].fill(double(t.presetMs[i]));
+            e.count[i] = kSamples;
+        }
     }
     return Status::success();
 }

@@ -52,9 +52,10 @@ public:
 private:
     struct Entry {
         AutoQualityKey key;
-        std::array<std::vector<double>, 4> ms;  // per kPresets: the measured frames' times [ms]
+        std::array<std::array<double, kSamples>, 4> ms{};  // per kPresets: the measured frames' times [ms]
+        std::array<size_t, 4> count{};                     // per kPresets: how many of ms are measured
         bool measured() const;
-        double medianMs(size_t preset) const;
+        double medianMs(size_t preset) const;  // of a measured preset
     };
     struct Pending {
         uint64_t frameIndex;
