@@ -27,8 +27,8 @@ struct Setting {
     // empty for the sweep's own points. Presets are not on the Pareto fronts (they repeat sweep points).
     std::string preset;
 
-    // "steps=64 jitter=on scale=0.5 noise=128", "preset=medium (steps=16 ...)", "step=0.5m jitter=on
-    // noise=128"
+    // "steps=64 jitter=on scale=0.5 kernel=3 noise=128" (kernel: with a shadow map), "preset=medium
+    // (steps=16 ...)", "step=0.5m jitter=on noise=128"
     std::string label() const;
 };
 
@@ -78,6 +78,7 @@ struct RunInfo {
     uint32_t referenceSteps = 0;
     uint32_t warmup = 0, frames = 0;
     double warmupMs = 0;
+    double coldWarmupMs = 0;   // the warm-up after the GPU sat idle (a CPU reference) [ms]
     double textureRate = NAN;  // [GTexel/s]; NaN: not given
     bool baselines = false;    // the baselines were run
     // Each scene's own noise texture size (0: no noise); the presets and baselines run at it.

@@ -20,15 +20,21 @@ std::vector<PresetBudget> defaultPresetBudgets();
 
 struct ProposedPreset {
     PresetBudget budget;
-    const Result* row = nullptr;  // the chosen sweep point; nullptr: no jittered setting fits the budget
+    const Result* row = nullptr;  // the chosen sweep point on the preset scene; nullptr: none fits
+    double meanError16 = NAN;     // its 16-frame relative RMSE, averaged over proposalScenes()
 };
 
-// The proposal rule. For each budget: among `scene`'s postfx-fog sweep rows (not preset rows) at
-// `noiseSize` with jitter on and a finite time, the one with the lowest relative RMSE of the mean of
-// 16 frames (what temporal accumulation reaches) whose median GPU time is at most the budget; ties go
-// to the faster. Such a row is on the scene's 16-frame Pareto front.
-std::vector<ProposedPreset> proposePresets(const std::vector<Result>& results, const std::string& scene,
-                                           uint32_t noiseSize, const std::vector<PresetBudget>& budgets);
+// The scenes whose errors a proposal averages: the run's scenes (RunInfo::sceneNoise) but the
+// S + kUnskippedSuffix twin of a scene S of the run (the same image as S: it would count S twice).
+std::vector<std::string> proposalScenes(const RunInfo& info);
+
+// The proposal rule. For each of info.presetBudgets: among info.presetScene's postfx-fog sweep rows (not
+// preset rows) at its own noise size with jitter on, whose median GPU time is within the budget, the
+// one whose knobs (steps, scale, shadow kernel) give the lowest mean over proposalScenes() of the
+// relative RMSE of the mean of 16 frames (what temporal accumulation reaches), each scene at its own
+// noise size; ties go to the faster. A row whose knobs a scene did not measure is not a candidate.
+// Timed on one scene, judged on all: a preset must not be chosen for one scene's kind of image.
+std::vector<ProposedPreset> proposePresets(const RunInfo& info, const std::vector<Result>& results);
 
 // The fastest row of `method` on `scene` at `noiseSize` (postfx-fog: sweep rows only) whose relative
 // RMSE after kAveragedFrames[errorIndex] frames is at most `maxError`; nullptr when there is none.
@@ -36,7 +42,6 @@ const Result* fastestWithin(const std::vector<Result>& results, const std::strin
                             uint32_t noiseSize, size_t errorIndex, double maxError);
 
 // results.md's sections "Presets proposed by this run" and "Targets" (markdown, ends with a blank line).
-// Presets are proposed for info.presetBudgets on info.presetScene.
 std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& results);
 
 // A scene named S + kUnskippedSuffix is S with fog.skip_empty_space false (demo/scenes/fog_valley*.json).

@@ -29,9 +29,11 @@ namespace {
 
 const char* kUsage =
     "usage: postfx-bench [--scenes a,b,...] [--scene-dir DIR] [--size WxH] [--warmup W] [--warmup-ms T]\n"
-    "                    [--frames N] [--reference-steps N] [--error-stride K] [--texture-rate GTEXELS]\n"
+    "                    [--cold-warmup-ms T] [--frames N] [--reference-steps N] [--error-stride K] "
+    "[--texture-rate GTEXELS]\n"
     "                    [--out DIR] [--steps a,b,...] [--scales a,b,...] [--noise-sizes a,b,...]\n"
-    "                    [--step-lengths a,b,...] [--preset-scene S] [--preset-budgets l,m,h,u]\n"
+    "                    [--shadow-kernels a,b,...] [--step-lengths a,b,...] [--preset-scene S] "
+    "[--preset-budgets l,m,h,u]\n"
     "                    [--no-presets] [--no-baselines] [--quick] [--validation]\n"
     "Sweeps postfx's fog quality knobs on the named scenes, times each postfx pass on the GPU and measures\n"
     "the error against the CPU reference; the seed's shader (as written, and fixed but still a Riemann sum)\n"
@@ -44,6 +46,7 @@ const char* kUsage =
     "  --size WxH             frame size [1920x1080; quick: 64x36]\n"
     "  --warmup W             frames recorded before timing, per setting, at least [5; quick: 1]\n"
     "  --warmup-ms T          ... and for at least T ms of wall time (GPU clocks ramp up) [200; quick: 0]\n"
+    "  --cold-warmup-ms T     ... T ms instead after a CPU reference (the GPU sat idle) [1000; quick: 0]\n"
     "  --frames N             timed frames per setting: median, p10-p90, min-max [30; quick: 2]\n"
     "  --reference-steps N    midpoint steps per pixel of the CPU reference [4096; quick: 1024]\n"
     "  --error-stride K       error on every K-th pixel in x and y (the reference costs 1/K^2)\n"
@@ -53,6 +56,8 @@ const char* kUsage =
     "  --steps LIST           postfx fog steps [4,8,16,32,64,128,256; quick: 4,16,64]\n"
     "  --scales LIST          postfx fog resolution scales, each in [0.25, 1] [1,0.5,0.25; quick: 1,0.5]\n"
     "  --noise-sizes LIST     noise texture edges for scenes with noise [32,64,128; quick: 32]\n"
+    "  --shadow-kernels LIST  fog.shadow_kernel values (odd, 1..7) swept at the scene's own noise size in\n"
+    "                         scenes with a shadow map; other noise sizes keep the scene's kernel [1,3]\n"
     "  --step-lengths LIST    baseline step lengths [m] [4,2,1,0.5,0.25,0.125; quick: 4,1]\n"
     "  --preset-scene S       the scene the presets are proposed from and the targets measured on\n"
     "                         [fog_default if in --scenes, else the first]\n"
@@ -78,6 +83,7 @@ struct Args {
     std::vector<uint32_t> steps = {4, 8, 16, 32, 64, 128, 256};
     std::vector<float> scales = {1.0f, 0.5f, 0.25f};
     std::vector<uint32_t> noiseSizes = {32, 64, 128};
+    std::vector<uint32_t> shadowKernels = {1, 3};
     std::vector<float> stepLengths = {4.0f, 2.0f, 1.0f, 0.5f, 0.25f, 0.125f};
     bool baselines = true;
     bool presets = true;
@@ -118,8 +124,9 @@ std::vector<std::string> splitList(const std::string& text) {
 Args parseArgs(int argc, char** argv) {
     Args args;
     bool quick = false;
-    bool sizeGiven = false, warmupGiven = false, warmupMsGiven = false, framesGiven = false, refGiven = false,
-         stepsGiven = false, noiseGiven = false, lengthsGiven = false, scalesGiven = false;
+    bool sizeGiven = false, warmupGiven = false, warmupMsGiven = false, coldGiven = false,
+         framesGiven = false, refGiven = false, stepsGiven = false, noiseGiven = false, lengthsGiven = false,
+         scalesGiven = false;
     auto value = [&](int& i) -> std::string {
         if (i + 1 >= argc) throw UsageError{std::string(argv[i]) + " needs a value"};
         return argv[++i];
@@ -165,6 +172,12 @@ Args parseArgs(int argc, char** argv) {
                 args.runner.warmupMs > 1e6)
                 throw UsageError{"--warmup-ms '" + s + "': expected a number of milliseconds in 0..1e6"};
             warmupMsGiven = true;
+        } else if (a == "--cold-warmup-ms") {
+            const std::string s = value(i);
+            if (!parseDouble(s, args.runner.coldWarmupMs) || args.runner.coldWarmupMs < 0 ||
+                args.runner.coldWarmupMs > 1e6)
+                throw UsageError{"--cold-warmup-ms '" + s + "': expected a number of milliseconds in 0..1e6"};
+            coldGiven = true;
         } else if (a == "--frames") {
             const std::string s = value(i);
             if (!parseUint(s, 1, 100000, args.runner.frames))
@@ -206,6 +219,10 @@ Args parseArgs(int argc, char** argv) {
                 if (n & (n - 1))
                     throw UsageError{"--noise-sizes: " + std::to_string(n) + " is not a power of two"};
             noiseGiven = true;
+        } else if (a == "--shadow-kernels") {
+            args.shadowKernels = uintList(a, value(i), 1, 7);
+            for (uint32_t k : args.shadowKernels)
+                if (k % 2 == 0) throw UsageError{"--shadow-kernels: " + std::to_string(k) + " is not odd"};
         } else if (a == "--step-lengths") {
             const std::string text = value(i);
             args.stepLengths.clear();
@@ -248,6 +265,7 @@ Args parseArgs(int argc, char** argv) {
         if (!sizeGiven) args.runner.width = 64, args.runner.height = 36;
         if (!warmupGiven) args.runner.warmup = 1;
         if (!warmupMsGiven) args.runner.warmupMs = 0.0;
+        if (!coldGiven) args.runner.coldWarmupMs = 0.0;
         if (!framesGiven) args.runner.frames = 2;
         if (!refGiven) args.referenceSteps = 1024;
         if (!stepsGiven) args.steps = {4, 16, 64};
@@ -264,6 +282,9 @@ Args parseArgs(int argc, char** argv) {
     if (args.errorStride == 0) args.errorStride = std::max(1u, args.runner.width / 480);
     std::sort(args.steps.begin(), args.steps.end());
     std::sort(args.noiseSizes.begin(), args.noiseSizes.end());
+    std::sort(args.shadowKernels.begin(), args.shadowKernels.end());
+    args.shadowKernels.erase(std::unique(args.shadowKernels.begin(), args.shadowKernels.end()),
+                             args.shadowKernels.end());
     std::sort(args.scales.begin(), args.scales.end(), std::greater<>());
     if (args.sceneDir.empty()) {
         args.sceneDir =
@@ -301,6 +322,18 @@ struct ScenePlan {
     demo::Scene scene;
     std::vector<uint32_t> noiseSizes;  // {0}: the scene has no noise
     uint32_t baselineNoise = 0;        // the noise size the baselines run at
+    bool shadows = false;              // its frames give postfx a shadow map
+
+    // The shadow kernels swept at `noise`: --shadow-kernels and the scene's own at its own noise size,
+    // else the scene's own; {0} without a shadow map.
+    std::vector<uint32_t> kernelsAt(uint32_t noise, const std::vector<uint32_t>& swept) const {
+        if (!shadows) return {0};
+        std::vector<uint32_t> kernels = {scene.fog.shadowKernel};
+        if (noise == baselineNoise) kernels.insert(kernels.end(), swept.begin(), swept.end());
+        std::sort(kernels.begin(), kernels.end());
+        kernels.erase(std::unique(kernels.begin(), kernels.end()), kernels.end());
+        return kernels;
+    }
 };
 
 int run(const Args& args, const std::string& command) {
@@ -346,6 +379,7 @@ int run(const Args& args, const std::string& command) {
     info.referenceSteps = args.referenceSteps;
     info.warmup = args.runner.warmup;
     info.warmupMs = args.runner.warmupMs;
+    info.coldWarmupMs = args.runner.coldWarmupMs;
     info.frames = args.runner.frames;
     info.textureRate = args.textureRate;
     info.baselines = baselines;
@@ -358,9 +392,14 @@ int run(const Args& args, const std::string& command) {
                                                postfx::FogQuality::High, postfx::FogQuality::Ultra};
     const size_t presets = args.presets ? std::size(kPresets) : 0;
     size_t total = 0;
-    for (const ScenePlan& p : plans)
-        total += p.noiseSizes.size() * (1 + args.steps.size() * 2 * args.scales.size()) + presets +
-                 (baselines ? 2 * args.stepLengths.size() : 0);
+    for (ScenePlan& p : plans) {
+        if (!runner->setScene(p.scene, error)) return fail(p.name + ": " + error);
+        p.shadows = runner->hasShadowMap(p.scene);
+        for (uint32_t noise : p.noiseSizes)
+            total += 1 + p.kernelsAt(noise, args.shadowKernels).size() * args.steps.size() * 2 *
+                             args.scales.size();
+        total += presets + (baselines ? 2 * args.stepLengths.size() : 0);
+    }
     std::fprintf(stderr, "postfx-bench on %s, %ux%u, %zu measurements\n", info.device.c_str(), info.width,
                  info.height, total);
 
@@ -369,7 +408,7 @@ int run(const Args& args, const std::string& command) {
         bench::Progress progress(total);
         for (const ScenePlan& p : plans) {
             if (!runner->setScene(p.scene, error)) return fail(p.name + ": " + error);
-            const bool shadows = runner->hasShadowMap(p.scene);
+            const bool shadows = p.shadows;
             for (uint32_t noise : p.noiseSizes) {
                 demo::Scene scene = p.scene;
                 if (noise) scene.fog.noise.textureSize = noise;
@@ -419,20 +458,25 @@ int run(const Args& args, const std::string& command) {
                 base.scene = p.name;
                 base.noiseSize = noise;
                 base.shadowKernel = shadows ? scene.fog.shadowKernel : 0;
-                // The sweep varies steps, jitter and scale from the scene's own settings (no preset).
-                for (float scale : args.scales) {
-                    for (bool jitter : {true, false}) {
-                        for (uint32_t steps : args.steps) {
-                            demo::Scene s = scene;
-                            s.fog.quality = postfx::FogQuality::Custom;
-                            s.fog.steps = steps;
-                            s.fog.jitter = jitter;
-                            s.fog.resolutionScale = scale;
-                            bench::Setting setting = base;
-                            setting.steps = steps;
-                            setting.jitter = jitter;
-                            setting.resolutionScale = scale;
-                            if (!measure(s, setting)) return fail(error);
+                // The sweep varies shadow kernel, scale, jitter and steps from the scene's own settings (no
+                // preset).
+                for (uint32_t kernel : p.kernelsAt(noise, args.shadowKernels)) {
+                    for (float scale : args.scales) {
+                        for (bool jitter : {true, false}) {
+                            for (uint32_t steps : args.steps) {
+                                demo::Scene s = scene;
+                                s.fog.quality = postfx::FogQuality::Custom;
+                                s.fog.steps = steps;
+                                s.fog.jitter = jitter;
+                                s.fog.resolutionScale = scale;
+                                if (kernel) s.fog.shadowKernel = kernel;
+                                bench::Setting setting = base;
+                                setting.steps = steps;
+                                setting.jitter = jitter;
+                                setting.resolutionScale = scale;
+                                setting.shadowKernel = kernel;
+                                if (!measure(s, setting)) return fail(error);
+                            }
                         }
                     }
                 }

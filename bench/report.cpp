@@ -47,7 +47,8 @@ std::string textureRateText(const RunInfo& info) {
 
 std::string warmupText(const RunInfo& info) {
     return "warm-up of at least " + std::to_string(info.warmup) + " frames and " +
-           formatNumber(info.warmupMs, 4) + " ms per setting";
+           formatNumber(info.warmupMs, 4) + " ms per setting (" + formatNumber(info.coldWarmupMs, 4) +
+           " ms after a CPU reference)";
 }
 
 // Ours first (sweep by noise size, scale, jitter on before off, steps; then the presets), then each

@@ -57,6 +57,7 @@ struct Runner::Impl {
     demo::GpuBuffer readback;    // the HDR image, RGBA16F
     demo::GpuImage fogScratch;  // baselines' frames: where postfx's (cheap) fog goes, keeping its noise alive
     uint64_t nextFrame = kJitterPeriod;  // above renderReference()'s frame index 0
+    bool idleSince = true;  // the GPU sat idle (start, setScene, reference): next warm-up is coldWarmupMs
     bool broken = false;
 
     ~Impl();
@@ -160,6 +161,7 @@ std::vector<std::string> Runner::validationMessages() const {
 }
 
 bool Runner::setScene(const demo::Scene& scene, std::string& error) {
+    impl_->idleSince = true;
     return impl_->renderer->setScene(scene, error);
 }
 
@@ -170,6 +172,7 @@ bool Runner::hasShadowMap(const demo::Scene& scene) const {
 bool Runner::reference(const demo::Scene& scene, uint32_t steps, uint32_t stride, demo::ImageF& out,
                        std::string& error) {
     // renderReference waits for the device to be idle first (setScene), so none of our frames is in flight.
+    impl_->idleSince = true;
     return impl_->renderer->renderReference(scene, out, error, steps, stride);
 }
 
@@ -324,12 +327,15 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
         return ok;
     };
     const auto start = std::chrono::steady_clock::now();
+    const double warmupMs =
+        m.idleSince ? std::max(m.options.warmupMs, m.options.coldWarmupMs) : m.options.warmupMs;
+    m.idleSince = false;
     uint32_t warmupFrames = 0, timedFrames = 0;
     while (timedFrames < m.options.frames) {
         bool timed =
             warmupFrames >= m.options.warmup &&
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >=
-                m.options.warmupMs;
+                warmupMs;
         if (timedFrames > 0) timed = true;  // warm-up over
         ++(timed ? timedFrames : warmupFrames);
         const uint64_t frameIndex = m.nextFrame++;

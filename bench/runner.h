@@ -21,6 +21,9 @@ struct RunnerOptions {
     // ... and for at least this long [ms] (wall clock), so that the GPU's clocks have ramped up after the
     // CPU reference or a lighter setting.
     double warmupMs = 200.0;
+    // ... or this long after the GPU sat idle for seconds (the CPU reference): 200 ms was not always
+    // enough on the H100 (a bimodal median, 2.7× its p10, in the setting measured next).
+    double coldWarmupMs = 1000.0;
     uint32_t frames = 30;     // frames timed
     bool validation = false;  // Khronos validation with synchronization validation
 };

@@ -24,8 +24,9 @@ std::string Setting::label() const {
     char text[160];
     std::string noise = noiseSize ? " noise=" + std::to_string(noiseSize) : std::string();
     if (method == Method::Ours) {
-        std::snprintf(text, sizeof text, "steps=%u jitter=%s scale=%g%s", steps, jitter ? "on" : "off",
-                      double(resolutionScale), noise.c_str());
+        const std::string kernel = shadowKernel ? " kernel=" + std::to_string(shadowKernel) : std::string();
+        std::snprintf(text, sizeof text, "steps=%u jitter=%s scale=%g%s%s", steps, jitter ? "on" : "off",
+                      double(resolutionScale), kernel.c_str(), noise.c_str());
         if (!preset.empty()) return "preset=" + preset + " (" + text + ")";
     } else {
         std::snprintf(text, sizeof text, "step=%gm jitter=%s%s", double(stepLength), jitter ? "on" : "off",

@@ -298,9 +298,7 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
         const double ox = double(i % kPanelsPerRow) * kPanelWidth;
         const double oy = kHeaderHeight + double(i / kPanelsPerRow) * kPanelHeight;
         const std::vector<ProposedPreset> proposed =
-            scenes[i] == info.presetScene
-                ? proposePresets(results, scenes[i], sceneNoiseSize(info, scenes[i]), info.presetBudgets)
-                : std::vector<ProposedPreset>{};
+            scenes[i] == info.presetScene ? proposePresets(info, results) : std::vector<ProposedPreset>{};
         s << panel(scenes[i], results, proposed, ox, oy);
     }
 

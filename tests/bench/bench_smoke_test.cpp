@@ -1,8 +1,9 @@
 // Smoke test of postfx-bench on lavapipe: runs `postfx-bench --quick` (64x36, steps 4/16/64, jitter on and
-// off, resolution scale 1 and 0.5, the four presets, both baselines at two step lengths) under the
-// validation layer and checks what it writes: the CSV's columns, one row per setting, finite errors,
-// error falling as postfx's steps grow and from preset low to ultra, a preset giving exactly the errors
-// of the sweep point with its knobs; the markdown and SVG exist. GPU times are not checked (lavapipe's
+// off, resolution scale 1 and 0.5, shadow kernel 1 and 3, the four presets, both baselines at two step
+// lengths) under the validation layer and checks what it writes: the CSV's columns, one row per setting,
+// finite errors, error falling as postfx's steps grow and from preset medium to ultra, a preset giving
+// exactly the errors of the sweep point with its knobs, the proposed presets recomputed from the CSV;
+// the markdown and SVG exist. GPU times are not checked (lavapipe's
 // mean nothing).
 // usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
 #include <gtest/gtest.h>
@@ -33,6 +34,7 @@ const std::vector<std::string> kColumns = {
 const std::vector<std::string> kScenes = {"fog_default", "fog_shadowed"};
 const std::vector<int> kSteps = {4, 16, 64};            // --quick
 const std::vector<std::string> kScales = {"1", "0.5"};  // --quick
+const std::vector<std::string> kKernels = {"1", "3"};   // both scenes have a shadow map
 const std::vector<std::string> kPresets = {"low", "medium", "high", "ultra"};
 const size_t kStepLengths = 2;  // --quick: 4 m, 1 m
 // lavapipe's times are not GPU times: budgets every setting fits, so each preset proposal is the most
@@ -130,13 +132,14 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
     ASSERT_TRUE(readCsv(gOut + "/results.csv", header, rows, sawDevice)) << gOut << "/results.csv";
     EXPECT_TRUE(sawDevice);
     ASSERT_EQ(header, kColumns);
-    // Per scene: steps × jitter on/off × scales (one noise size in --quick) + the presets + 2 baselines ×
-    // 2 step lengths.
-    ASSERT_EQ(rows.size(),
-              kScenes.size() * (kSteps.size() * 2 * kScales.size() + kPresets.size() + 2 * kStepLengths));
+    // Per scene: shadow kernels × steps × jitter on/off × scales (one noise size in --quick) + the presets
+    // + 2 baselines × 2 step lengths.
+    const size_t sweepRows = kKernels.size() * kSteps.size() * 2 * kScales.size();
+    ASSERT_EQ(rows.size(), kScenes.size() * (sweepRows + kPresets.size() + 2 * kStepLengths));
 
-    // (scene, jitter, scale) -> rel_rmse_1 and rel_rmse_16 by steps, postfx-fog's sweep only.
-    std::map<std::tuple<std::string, std::string, std::string>, std::map<int, std::pair<double, double>>>
+    // (scene, jitter, scale, kernel) -> rel_rmse_1 and rel_rmse_16 by steps, postfx-fog's sweep only.
+    std::map<std::tuple<std::string, std::string, std::string, std::string>,
+             std::map<int, std::pair<double, double>>>
         sweep;
     // (scene, steps, jitter, scale, kernel) -> "rel_rmse_1 rel_rmse_8 rel_rmse_16" of the sweep; scene ->
     // the presets' rows in order.
@@ -174,25 +177,24 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
                 continue;
             }
             const int steps = int(number(row.at("steps")));
-            sweep[{row.at("scene"), row.at("jitter"), row.at("resolution_scale")}][steps] = {
-                number(row.at("rel_rmse_1")), number(row.at("rel_rmse_16"))};
+            sweep[{row.at("scene"), row.at("jitter"), row.at("resolution_scale"), row.at("shadow_kernel")}]
+                 [steps] = {number(row.at("rel_rmse_1")), number(row.at("rel_rmse_16"))};
             sweepErrors[knobs(row)] = errors(row);
             paretoPoints[row.at("scene")] += row.at("pareto_1") == "1";
         } else {
             EXPECT_TRUE(std::isfinite(number(row.at("step_length_m")))) << what;
         }
     }
-    EXPECT_EQ(methods["postfx-fog"],
-              int(kScenes.size() * (kSteps.size() * 2 * kScales.size() + kPresets.size())));
+    EXPECT_EQ(methods["postfx-fog"], int(kScenes.size() * (sweepRows + kPresets.size())));
     EXPECT_EQ(methods["seed-as-written"], int(kScenes.size() * kStepLengths));
     EXPECT_EQ(methods["seed-fixed-riemann"], int(kScenes.size() * kStepLengths));
 
     // More steps, lower error: at full resolution the one-frame error and the 16-frame mean's at every
     // step; at reduced resolution (whose upsampling error does not fall with steps) from fewest to most.
-    ASSERT_EQ(sweep.size(), kScenes.size() * 2 * kScales.size());
+    ASSERT_EQ(sweep.size(), kScenes.size() * kKernels.size() * 2 * kScales.size());
     for (const auto& [key, bySteps] : sweep) {
-        const auto& [scene, jitter, scale] = key;
-        const std::string what = scene + " jitter=" + jitter + " scale=" + scale;
+        const auto& [scene, jitter, scale, kernel] = key;
+        const std::string what = scene + " jitter=" + jitter + " scale=" + scale + " kernel=" + kernel;
         ASSERT_EQ(bySteps.size(), kSteps.size()) << what;
         const bool full = scale == "1";
         for (size_t i = full ? 1 : kSteps.size() - 1; i < kSteps.size(); ++i) {
@@ -202,17 +204,22 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
             EXPECT_LT(more.second, fewer.second) << what << ": steps " << kSteps[i] << " (16 frames)";
         }
     }
-    // The presets, as a host selects them: error falls from low to ultra; where a preset's knobs are a
-    // sweep point, the frames are the same, so are the errors.
+    // The presets, as a host selects them: error falls from medium to ultra (full scale, steps doubling)
+    // and ultra beats low (half scale: at 1920×1080 it can beat medium on smooth fog, not here at 64×36);
+    // where a preset's knobs are a sweep point, the frames are the same, so are the errors.
     int matchedSweep = 0;
     for (const std::string& scene : kScenes) {
         const auto& presets = presetRows[scene];
         ASSERT_EQ(presets.size(), kPresets.size()) << scene;
         for (size_t i = 0; i < presets.size(); ++i) {
             EXPECT_EQ(presets[i].at("preset"), kPresets[i]) << scene;
-            if (i > 0) {
+            if (i > 1) {
                 EXPECT_LT(number(presets[i].at("rel_rmse_1")), number(presets[i - 1].at("rel_rmse_1")))
                     << scene << " preset " << kPresets[i];
+            }
+            if (i == 3) {
+                EXPECT_LT(number(presets[i].at("rel_rmse_16")), number(presets[0].at("rel_rmse_16")))
+                    << scene << " ultra against low";
             }
             const auto it = sweepErrors.find(knobs(presets[i]));
             if (it == sweepErrors.end()) continue;
@@ -228,24 +235,37 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
 }
 
 // results.md proposes presets by the rule in docs/accuracy-cost/README.md; with budgets that every
-// setting fits, each is fog_default's jittered sweep point with the lowest 16-frame error in the CSV.
-// The targets section is there, marked as not at 1920×1080.
+// setting fits, each is the jittered sweep point whose knobs give the lowest 16-frame error averaged over
+// both scenes, recomputed here from the CSV. The targets section is there, marked as not at 1920×1080.
 TEST_F(BenchSmoke, ProposesThePresetsFromTheCsvRows) {
     ASSERT_EQ(status_, 0);
     std::vector<std::string> header;
     std::vector<Row> rows;
     bool sawDevice = false;
     ASSERT_TRUE(readCsv(gOut + "/results.csv", header, rows, sawDevice));
+    // knobs -> (sum of the scenes' 16-frame errors, scenes, fog_default's row)
+    std::map<std::string, std::tuple<double, size_t, const Row*>> byKnobs;
+    for (const Row& row : rows) {
+        if (row.at("method") != "postfx-fog" || !row.at("preset").empty() || row.at("jitter") != "1")
+            continue;
+        auto& [sum, count, own] =
+            byKnobs[row.at("steps") + " " + row.at("resolution_scale") + " " + row.at("shadow_kernel")];
+        sum += number(row.at("rel_rmse_16"));
+        ++count;
+        if (row.at("scene") == "fog_default") own = &row;
+    }
     const Row* best = nullptr;
-    for (const Row& row : rows)
-        if (row.at("scene") == "fog_default" && row.at("method") == "postfx-fog" &&
-            row.at("preset").empty() && row.at("jitter") == "1" &&
-            (!best || number(row.at("rel_rmse_16")) < number(best->at("rel_rmse_16"))))
-            best = &row;
+    double bestMean = INFINITY;
+    for (const auto& [knobs, entry] : byKnobs) {
+        const auto& [sum, count, own] = entry;
+        ASSERT_EQ(count, kScenes.size()) << knobs;
+        ASSERT_TRUE(own) << knobs;
+        if (sum / double(count) < bestMean) best = own, bestMean = sum / double(count);
+    }
     ASSERT_TRUE(best);
-    const std::string label = "`steps=" + best->at("steps") +
-                              " jitter=on scale=" + best->at("resolution_scale") +
-                              " noise=" + best->at("noise_size") + "`";
+    const std::string label =
+        "`steps=" + best->at("steps") + " jitter=on scale=" + best->at("resolution_scale") +
+        " kernel=" + best->at("shadow_kernel") + " noise=" + best->at("noise_size") + "`";
     const std::string md = readFile(gOut + "/results.md");
     EXPECT_NE(md.find("## Presets proposed by this run"), std::string::npos);
     const std::vector<std::pair<std::string, std::string>> budgets = {

@@ -62,23 +62,75 @@ std::vector<Result> rows() {
     };
 }
 
+bench::RunInfo runOn(std::vector<std::pair<std::string, uint32_t>> sceneNoise,
+                     std::vector<bench::PresetBudget> budgets) {
+    bench::RunInfo info;
+    info.presetScene = sceneNoise.front().first;
+    info.sceneNoise = std::move(sceneNoise);
+    info.presetBudgets = std::move(budgets);
+    return info;
+}
+
+Result withKernel(Result r, uint32_t kernel) {
+    r.setting.shadowKernel = kernel;
+    return r;
+}
+
 TEST(BenchConclusions, ProposesTheMostAccurateJitteredSweepPointWithinEachBudget) {
     const std::vector<Result> r = rows();
-    const std::vector<bench::ProposedPreset> p = bench::proposePresets(
-        r, "fog_default", 128, {{"low", 0.1}, {"medium", 0.5}, {"high", 1.0}, {"ultra", 2.0}});
+    const bench::RunInfo info =
+        runOn({{"fog_default", 128}}, {{"low", 0.1}, {"medium", 0.5}, {"high", 1.0}, {"ultra", 2.0}});
+    const std::vector<bench::ProposedPreset> p = bench::proposePresets(info, r);
     ASSERT_EQ(p.size(), 4u);
     EXPECT_EQ(p[0].row, nullptr);  // nothing eligible within 0.1 ms
     EXPECT_EQ(p[1].row, &r[3]);    // 32 steps at half scale: 0.30% in 0.40 ms, beats 16 steps full
     EXPECT_EQ(p[2].row, &r[4]);
     EXPECT_EQ(p[3].row, &r[5]);  // 0.14% beats 0.16% when 1.35 ms fits
+    EXPECT_DOUBLE_EQ(p[3].meanError16, 0.0014);
     EXPECT_EQ(p[2].budget.name, "high");
     EXPECT_EQ(p[2].budget.ms, 1.0);
+}
+
+// Timed on the preset scene, judged by the mean over the scenes: a half-scale march that wins on the
+// preset scene loses to a full-scale one when another scene's edges make half scale much worse.
+TEST(BenchConclusions, ProposalAveragesTheErrorOverTheScenesButNotTheUnskippedTwins) {
+    const std::vector<Result> r = {
+        ours("a", 32, true, 0.5f, 128, 0.30, 0.011, 0.0020),      // 0: a's best
+        ours("a", 16, true, 1.0f, 128, 0.40, 0.040, 0.0070),      // 1
+        ours("a", 64, true, 1.0f, 128, 0.45, 0.020, 0.0030),      // 2: no row on b: not a candidate
+        ours("b", 32, true, 0.5f, 0, 0.20, 0.030, 0.0300),        // 3: edges at half scale
+        ours("b", 16, true, 1.0f, 0, 0.20, 0.010, 0.0030),        // 4
+        ours("b_unskipped", 32, true, 0.5f, 0, 0.2, 0.0, 0.0),    // 5: the twin would favour 0
+        ours("b_unskipped", 16, true, 1.0f, 0, 0.2, 0.09, 0.09),  // 6
+    };
+    const bench::RunInfo info = runOn({{"a", 128}, {"b", 0}, {"b_unskipped", 0}}, {{"medium", 0.5}});
+    EXPECT_EQ(bench::proposalScenes(info), (std::vector<std::string>{"a", "b"}));
+    const auto p = bench::proposePresets(info, r);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0].row, &r[1]);  // mean (0.70% + 0.30%) / 2 = 0.5% against (0.2% + 3%) / 2
+    EXPECT_DOUBLE_EQ(p[0].meanError16, 0.005);
+}
+
+// The shadow kernel is a knob: a scene with a shadow map matches it, one without matches any kernel.
+TEST(BenchConclusions, ProposalMatchesTheShadowKernelWhereTheSceneHasAShadowMap) {
+    const std::vector<Result> r = {
+        withKernel(ours("a", 32, true, 1.0f, 0, 0.30, 0.02, 0.004), 1),      // 0: cheaper
+        withKernel(ours("a", 32, true, 1.0f, 0, 0.45, 0.02, 0.004), 3),      // 1
+        withKernel(ours("shadowed", 32, true, 1.0f, 0, 0.3, 0.1, 0.02), 1),  // 2
+        withKernel(ours("shadowed", 32, true, 1.0f, 0, 0.3, 0.1, 0.01), 3),  // 3
+        ours("unshadowed", 32, true, 1.0f, 0, 0.3, 0.1, 0.006),              // 4: kernel 0
+    };
+    const bench::RunInfo info = runOn({{"a", 0}, {"shadowed", 0}, {"unshadowed", 0}}, {{"high", 1.0}});
+    const auto p = bench::proposePresets(info, r);
+    ASSERT_EQ(p.size(), 1u);
+    EXPECT_EQ(p[0].row, &r[1]);  // (0.4 + 1 + 0.6) / 3 % beats (0.4 + 2 + 0.6) / 3 %
+    EXPECT_DOUBLE_EQ(p[0].meanError16, 0.02 / 3);
 }
 
 TEST(BenchConclusions, EqualErrorsGoToTheFasterSetting) {
     std::vector<Result> r = {ours("s", 16, true, 1.0f, 0, 0.4, 0.03, 0.005),
                              ours("s", 32, true, 0.5f, 0, 0.3, 0.02, 0.005)};
-    const auto p = bench::proposePresets(r, "s", 0, {{"medium", 0.5}});
+    const auto p = bench::proposePresets(runOn({{"s", 0}}, {{"medium", 0.5}}), r);
     ASSERT_EQ(p.size(), 1u);
     EXPECT_EQ(p[0].row, &r[1]);
 }

@@ -77,8 +77,8 @@ TEST_F(FogQualityTest, ApplyFogQualitySetsThePresetTable) {
         uint32_t kernel;
         float scale;
     };
-    const Row rows[] = {{FogQuality::Low, 8, true, 1, 1.0f},        {FogQuality::Medium, 16, true, 3, 1.0f},
-                        {FogQuality::High, 32, true, 3, 1.0f},      {FogQuality::Ultra, 64, true, 3, 1.0f},
+    const Row rows[] = {{FogQuality::Low, 32, true, 1, 0.5f},       {FogQuality::Medium, 32, true, 1, 1.0f},
+                        {FogQuality::High, 64, true, 1, 1.0f},      {FogQuality::Ultra, 128, true, 1, 1.0f},
                         {FogQuality::Custom, 77, false, 5, 0.375f}, {FogQuality::Auto, 77, false, 5, 0.375f}};
     for (const Row& r : rows) {
         const postfx::FogSettings s = postfx::applyFogQuality(custom, r.quality);

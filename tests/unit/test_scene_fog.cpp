@@ -243,7 +243,8 @@ TEST(SceneFog, DefaultsRoundTrip) {
         ASSERT_TRUE(first.ok) << first.error;
         const json out = demo::sceneToJson(first.scene);
         EXPECT_EQ(out["effects"]["fog"]["enabled"], !fog.is_null());
-        EXPECT_EQ(out["effects"]["fog"]["steps"], 16);  // Medium's
+        EXPECT_EQ(out["effects"]["fog"]["steps"], 32);  // Medium's
+        EXPECT_EQ(out["effects"]["fog"]["shadow_kernel"], 1);
         const Parsed second = parse(out);
         ASSERT_TRUE(second.ok) << second.error;
         expectSameFog(second.scene.fog, first.scene.fog);
