@@ -4,6 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh build
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+# Tests off: GoogleTest is a test dependency, not installed by `install-deps.sh build`.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOSTFX_BUILD_TESTS=OFF >/dev/null
 cmake --build build -j"$(nproc)" --target postfx-demo
 exec build/demo/postfx-demo "$@"

@@ -6,7 +6,9 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh test
 scripts/check-format.sh
 jobs=$(nproc)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOSTFX_WERROR=ON >/dev/null
+# Every part on (the demo's command may have turned tests off in the same build folder).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOSTFX_WERROR=ON -DPOSTFX_BUILD_DEMO=ON \
+    -DPOSTFX_BUILD_BENCH=ON -DPOSTFX_BUILD_TESTS=ON >/dev/null
 cmake --build build -j"$jobs"
 # Tests that need a Vulkan device run on Mesa's lavapipe unless POSTFX_DEVICE picks another.
 ctest --test-dir build --output-on-failure -j"$jobs" "$@"
