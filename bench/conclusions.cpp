@@ -40,6 +40,20 @@ const Result* sameKnobs(const RunInfo& info, const std::vector<Result>& results,
     return nullptr;
 }
 
+// The mean over `scenes` of the 16-frame relative RMSE of the row `rowOf(scene)`; NaN when a scene has
+// no such row (or no scenes): the proposal's error and the committed presets' column alike.
+template <class RowOf>
+double meanError16(const std::vector<std::string>& scenes, RowOf rowOf) {
+    if (scenes.empty()) return NAN;
+    double sum = 0.0;
+    for (const std::string& s : scenes) {
+        const Result* r = rowOf(s);
+        if (!r) return NAN;
+        sum += r->error[2].relativeRmse;
+    }
+    return sum / double(scenes.size());
+}
+
 std::string errors(const Result& r) {
     return percent(r.error[0].relativeRmse) + " / " + percent(r.error[1].relativeRmse) + " / " +
            percent(r.error[2].relativeRmse);
@@ -126,15 +140,9 @@ std::vector<ProposedPreset> proposePresets(const RunInfo& info, const std::vecto
     std::vector<std::pair<const Result*, double>> candidates;
     for (const Result& r : results) {
         if (!isSweep(r, scene, noiseSize) || !r.setting.jitter || !std::isfinite(r.timing.median)) continue;
-        double sum = 0.0;
-        bool complete = !scenes.empty();
-        for (const std::string& s : scenes) {
-            const Result* same = s == scene ? &r : sameKnobs(info, results, s, r);
-            complete = complete && same && std::isfinite(same->error[2].relativeRmse);
-            if (!complete) break;
-            sum += same->error[2].relativeRmse;
-        }
-        if (complete) candidates.emplace_back(&r, sum / double(scenes.size()));
+        const double mean = meanError16(
+            scenes, [&](const std::string& s) { return s == scene ? &r : sameKnobs(info, results, s, r); });
+        if (std::isfinite(mean)) candidates.emplace_back(&r, mean);
     }
     std::vector<ProposedPreset> proposed;
     for (const PresetBudget& budget : info.presetBudgets) {
@@ -192,19 +200,15 @@ std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& 
     for (const ProposedPreset& p : proposed) {
         const Result* committed = committedPreset(results, scene, p.budget.name);
         // The committed preset's rows on every scene of the rule (measured as the host selects it).
-        double committedSum = 0.0;
-        for (const std::string& s : scenes) {
-            const Result* c = committedPreset(results, s, p.budget.name);
-            committedSum += c ? c->error[2].relativeRmse : NAN;
-        }
+        const double committedMean = meanError16(
+            scenes, [&](const std::string& s) { return committedPreset(results, s, p.budget.name); });
         out << "| " << p.budget.name << " | " << ms(p.budget.ms) << " | "
             << (p.row ? "`" + p.row->setting.label() + "`" : "none fits") << " | "
             << (p.row ? ms(p.row->timing.median) : "–") << " | " << (p.row ? errors(*p.row) : "–") << " | "
             << (p.row ? overFloor(*p.row) : "–") << " | " << (p.row ? percent(p.meanError16) : "–") << " | "
             << (committed ? "`" + committed->setting.label() + "`" : "not measured") << " | "
             << (committed ? ms(committed->timing.median) : "–") << " | "
-            << (committed ? errors(*committed) : "–") << " | "
-            << (std::isfinite(committedSum) ? percent(committedSum / double(scenes.size())) : "–") << " |\n";
+            << (committed ? errors(*committed) : "–") << " | " << percent(committedMean) << " |\n";
     }
     out << "\n";
 

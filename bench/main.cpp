@@ -393,8 +393,7 @@ int run(const Args& args, const std::string& command) {
     const size_t presets = args.presets ? std::size(kPresets) : 0;
     size_t total = 0;
     for (ScenePlan& p : plans) {
-        if (!runner->setScene(p.scene, error)) return fail(p.name + ": " + error);
-        p.shadows = runner->hasShadowMap(p.scene);
+        p.shadows = runner->hasShadowMap(p.scene);  // from the scene alone: no setScene needed
         for (uint32_t noise : p.noiseSizes)
             total += 1 + p.kernelsAt(noise, args.shadowKernels).size() * args.steps.size() * 2 *
                              args.scales.size();
@@ -408,7 +407,6 @@ int run(const Args& args, const std::string& command) {
         bench::Progress progress(total);
         for (const ScenePlan& p : plans) {
             if (!runner->setScene(p.scene, error)) return fail(p.name + ": " + error);
-            const bool shadows = p.shadows;
             for (uint32_t noise : p.noiseSizes) {
                 demo::Scene scene = p.scene;
                 if (noise) scene.fog.noise.textureSize = noise;
@@ -457,7 +455,7 @@ int run(const Args& args, const std::string& command) {
                 bench::Setting base;
                 base.scene = p.name;
                 base.noiseSize = noise;
-                base.shadowKernel = shadows ? scene.fog.shadowKernel : 0;
+                base.shadowKernel = p.shadows ? scene.fog.shadowKernel : 0;
                 // The sweep varies shadow kernel, scale, jitter and steps from the scene's own settings (no
                 // preset).
                 for (uint32_t kernel : p.kernelsAt(noise, args.shadowKernels)) {
@@ -490,7 +488,7 @@ int run(const Args& args, const std::string& command) {
                     setting.steps = applied.steps;
                     setting.jitter = applied.jitter;
                     setting.resolutionScale = applied.resolutionScale;
-                    setting.shadowKernel = shadows ? applied.shadowKernel : 0;
+                    setting.shadowKernel = p.shadows ? applied.shadowKernel : 0;
                     if (!measure(s, setting)) return fail(error);
                 }
                 if (baselines && noise == p.baselineNoise) {
