@@ -4,8 +4,9 @@
 #include "baseline.h"
 
 #include "bench_baseline_spirv.h"
-#include "common/shared.h"
-#include "fog/fog_pass.h"
+#include "core/checks.h"
+#include "fog/fog_settings.h"
+#include "fog/fog_shared.h"
 #include "fog/fog_uniforms.h"
 #include "host/gpu_resources.h"
 
@@ -247,12 +248,16 @@ bool BaselinePass::record(VkCommandBuffer cmd, const postfx::FrameInfo& frame,
     const VkDevice device = m.host.device;
 
     // Inputs: the same checks as postfx's fog, plus what the baseline itself needs.
-    if (postfx::Status s = postfx::fog::FogPass::validate(frame); !s) {
-        error = std::string(baselineName(which)) + ": " + s.message;
-        return false;
-    }
     if (!(stepLength > 0.0f) || !std::isfinite(stepLength)) {
         error = std::string(baselineName(which)) + ": step length must be finite and > 0";
+        return false;
+    }
+    postfx::ContextCreateInfo limits;
+    limits.maxExtent = {16384, 16384};
+    postfx::Status s = postfx::core::checkSharedInputs(frame, limits);
+    if (s) s = postfx::fog::validateSettings(frame.fog);
+    if (!s) {
+        error = std::string(baselineName(which)) + ": " + s.message;
         return false;
     }
     if (frame.color.format != VK_FORMAT_R16G16B16A16_SFLOAT ||

@@ -207,8 +207,8 @@ bool Runner::Impl::recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Me
         cheap.fog.shadowKernel = 1;
         demo::imageBarrier(cmd, fogScratch, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kCompute, 0,
                            kCompute, VK_ACCESS_SHADER_WRITE_BIT);
-        const postfx::ImageInput scratch{fogScratch.image, fogScratch.view, fogScratch.format,
-                                         fogScratch.extent, VK_IMAGE_LAYOUT_GENERAL};
+        const postfx::ImageInput scratch{fogScratch.image,  fogScratch.view,         fogScratch.format,
+                                         fogScratch.extent, VK_IMAGE_LAYOUT_GENERAL, fogScratch.usage};
         if (!renderer->recordFrame(cmd, cheap, frameIndex, scratch, error)) return false;
         // The lighting's writes (and postfx's reads) before the baseline reads and writes in place.
         demo::imageBarrier(cmd, colorImage(renderer->hdrImage()), VK_IMAGE_LAYOUT_GENERAL,
@@ -218,7 +218,7 @@ bool Runner::Impl::recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Me
         vkCmdResetQueryPool(cmd, queries, query, 2);
         const postfx::FrameInfo frame = renderer->frameInputs(cmd, scene, frameIndex);
         const VkImageView noise =
-            scene.fog.noise.enabled ? renderer->postfxContext().fogNoiseView() : VK_NULL_HANDLE;
+            scene.fog.noise.enabled ? postfx::fogNoiseView(renderer->postfxContext()) : VK_NULL_HANDLE;
         if (scene.fog.noise.enabled && !noise) {
             error = "postfx holds no fog noise texture for the baseline";
             return false;

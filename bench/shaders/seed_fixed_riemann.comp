@@ -19,7 +19,7 @@
 // the offset is 0.5 instead of IGN, as in postfx.
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/shared.h"
+#include "fog/fog_shared.h"
 
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 

@@ -65,6 +65,7 @@ bool createImage(const VulkanHost& host, VkFormat format, VkExtent2D extent, VkI
                  GpuImage& out, std::string& error) {
     const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM;
     out.format = format;
+    out.usage = usage;
     out.extent = extent;
     out.aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
     VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};

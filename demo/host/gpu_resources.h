@@ -24,6 +24,7 @@ struct GpuImage {
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{0, 0};
     VkImageAspectFlags aspect = 0;
+    VkImageUsageFlags usage = 0;  // as created
 };
 
 // hostVisible: HOST_VISIBLE | HOST_COHERENT (HOST_CACHED preferred), mapped; else DEVICE_LOCAL.

@@ -74,8 +74,8 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         if (!r.fogScratch.image &&
             !createImage(r.host, r.hdr.format, r.extent, VK_IMAGE_USAGE_STORAGE_BIT, r.fogScratch, error))
             return false;
-        fogOutput = {r.fogScratch.image, r.fogScratch.view, r.fogScratch.format, r.extent,
-                     VK_IMAGE_LAYOUT_GENERAL};
+        fogOutput = {r.fogScratch.image, r.fogScratch.view,       r.fogScratch.format,
+                     r.extent,           VK_IMAGE_LAYOUT_GENERAL, r.fogScratch.usage};
     }
 
     // One host-visible buffer: depth, shadow map, noise (each as the GPU stores it).
@@ -117,7 +117,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         if (shadows) recordDepthCopy(cmd, r.shadow.depth, buffer, shadowOffset);
         if (noise) {
             const postfx::Status s =
-                r.postfx->recordFogNoiseReadback(cmd, buffer.buffer, noiseOffset, noiseSize);
+                postfx::recordFogNoiseReadback(*r.postfx, cmd, buffer.buffer, noiseOffset, noiseSize);
             if (!s.ok()) {
                 error = "postfx noise readback: " + s.message;
                 return false;

@@ -175,11 +175,15 @@ bool Renderer::Impl::createResources(std::string& error) {
             [&](VkCommandBuffer cmd) { shadow.record(cmd, frameSet, vertices, indices, none); }, error))
         return false;
 
-    hdrInfo = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL};
+    hdrInfo = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL, hdr.usage};
     const GpuImage& d = gbuffer.depth;
-    depthInfo = {d.image, d.view, d.format, extent, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
-    shadowInfo.image = {shadow.depth.image, shadow.depth.view, shadow.depth.format, shadow.depth.extent,
-                        VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    depthInfo = {d.image, d.view, d.format, extent, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, d.usage};
+    shadowInfo.image = {shadow.depth.image,
+                        shadow.depth.view,
+                        shadow.depth.format,
+                        shadow.depth.extent,
+                        VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                        shadow.depth.usage};
     shadowInfo.compareSampler = lighting.shadowSampler;
     return true;
 }

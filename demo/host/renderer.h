@@ -53,6 +53,7 @@ struct ImageInfo {
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent{0, 0};
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // layout once a recorded frame has executed
+    VkImageUsageFlags usage = 0;                       // as created
 };
 
 // The sun's shadow map (postfx's fog reads it too).

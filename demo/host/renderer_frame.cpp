@@ -63,7 +63,7 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     in.ambient = scene.ambient;
     if (shadows) {
         const ImageInfo& s = shadowInfo.image;
-        in.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout};
+        in.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout, s.usage};
         in.shadowMap.worldToClip = glm::dmat4(fit.viewProj);
         in.shadowMap.reversedZ = false;
         // The shadow pass already biases the stored depth by the rasteriser's slope-scaled bias;
@@ -86,9 +86,13 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     postfx::FrameInfo frame;
     frame.commandBuffer = cmd;
     frame.frameIndex = frameIndex;
-    frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL};
-    frame.depth = {gbuffer.depth.image, gbuffer.depth.view, gbuffer.depth.format, extent,
-                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL, hdr.usage};
+    frame.depth = {gbuffer.depth.image,
+                   gbuffer.depth.view,
+                   gbuffer.depth.format,
+                   extent,
+                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                   gbuffer.depth.usage};
     frame.output = fogOutput;
     frame.timeSeconds = in.timeSeconds;
     frame.camera = in.camera;

@@ -208,7 +208,8 @@ std::string App::fogQualityText() const {
     const std::string name = fogQualityName(scene_.fog.quality);
     if (scene_.fog.quality != postfx::FogQuality::Auto) return name;
     postfx::FogQuality chosen = postfx::FogQuality::Custom;
-    if (!renderer_->postfxContext().fogAutoQuality(chosen).ok()) return name + ": measuring the presets";
+    if (!postfx::fogAutoQuality(renderer_->postfxContext(), chosen).ok())
+        return name + ": measuring the presets";
     return name + ": " + fogQualityName(chosen);
 }
 

@@ -1,5 +1,7 @@
-// The one header shared by postfx's C++ and GLSL: uniform structs, binding numbers, workgroup sizes.
-// Only vec4/uvec4/mat4 members, so std140 and the C++ layout agree; sizes are static_asserted.
+// The header shared by postfx's C++ and GLSL for the context's own passes, and the machinery every
+// effect's shared header (shaders/<effect>/<effect>_shared.h) uses: PFX_CONST, the GLSL names of the
+// C++ types. Structs have only vec4/uvec4/mat4 members, so std140 and the C++ layout agree; their sizes
+// are static_asserted.
 #ifndef POSTFX_SHARED_H
 #define POSTFX_SHARED_H
 
@@ -23,60 +25,9 @@ PFX_CONST(uint, kCopyGroupSize, 8);   // postfx.copy workgroup: kCopyGroupSize²
 PFX_CONST(uint, kCopyBindingIn, 0);   // storage image: host color (read)
 PFX_CONST(uint, kCopyBindingOut, 1);  // storage image: host output (written)
 
-// ---- fog (shaders/fog/) ----
-PFX_CONST(uint, kFogGroupSize, 8);  // raymarch workgroup: kFogGroupSize² pixels
-
-PFX_CONST(uint, kFogBindingColorIn, 0);    // storage image: host color (read)
-PFX_CONST(uint, kFogBindingColorOut, 1);   // storage image: output (host color itself when in place)
-PFX_CONST(uint, kFogBindingDepth, 2);      // sampler2D: host depth (texelFetch)
-PFX_CONST(uint, kFogBindingShadowMap, 3);  // sampler2D: host shadow map (texelFetch)
-PFX_CONST(uint, kFogBindingNoise, 4);      // sampler3D: noise, trilinear, repeat
-PFX_CONST(uint, kFogBindingUniforms, 5);   // uniform buffer: FogUniforms
-// storage image: the reduced-resolution march (rgb: in-scattered radiance, a: transmittance), postfx's own
-PFX_CONST(uint, kFogBindingScatter, 6);
-
-// Upsampling of a reduced-resolution march (shaders/fog/upsample.comp): a low-resolution sample
-// is used for a pixel when its surface distance is within this fraction of the pixel's [1].
-PFX_CONST(float, kFogUpsampleDistanceTolerance, 0.1f);
-
-PFX_CONST(uint, kNoiseGroupSize, 4);       // noise generation workgroup: kNoiseGroupSize³ texels
-PFX_CONST(uint, kNoiseBindingTexture, 0);  // storage image: the r8 noise texture being generated
-
-// The height term's exponent -height_falloff·(y - base_height) is clamped to at most this, so that
-// h(y) = e^80 ≈ 5.5e34 stays finite in float far below the base height (fog.md, "Model").
-PFX_CONST(float, kMaxHeightExponent, 80.0f);
-
-// Flags in FogUniforms.flags.x
-PFX_CONST(uint, kFogFlagJitter, 1u);
-PFX_CONST(uint, kFogFlagNoise, 2u);
-PFX_CONST(uint, kFogFlagShadowMap, 4u);
-PFX_CONST(uint, kFogFlagShadowReversedZ, 8u);
-PFX_CONST(uint, kFogFlagSelfShadow, 16u);
-PFX_CONST(uint, kFogFlagAnalyticTail, 32u);
-PFX_CONST(uint, kFogFlagDepthReversedZ, 64u);
-PFX_CONST(uint, kFogFlagSkipEmptySpace, 128u);
-
-struct FogUniforms {
-    mat4 clipToView;      // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))
-    mat4 viewToShadow;    // camera-relative world -> shadow clip (built in double on the host)
-    vec4 toSun;           // xyz: unit direction toward the sun
-    vec4 sunIlluminance;  // rgb [lux]
-    vec4 ambient;         // rgb: uniform incident radiance
-    vec4 albedo;          // rgb: σs/σt
-    vec4 medium;          // x: density [1/m], y: height falloff [1/m], z: HG g (clamped), w: max distance [m]
-    vec4 heights;         // x: camera y - base height [m], y: the medium's top above base [m] (may be +Inf)
-    vec4 noise;           // xyz: noise coordinate of the camera, wrapped to [0,1); w: 0.01·tiling [1/m]
-    vec4 noiseRemap;      // x: threshold, y: multiplier
-    vec4 shadow;          // x: depth bias, y: kernel radius in texels (kernel = 2r+1)
-    vec4 march;           // x: transmittance cutoff, y: depth of "no geometry" (0 or 1)
-    uvec4 extent;         // x, y: output size [px], z: steps, w: frame index (mod 2^32)
-    uvec4 scatterExtent;  // x, y: size of the march [px]: extent.xy · resolution scale, rounded up
-    uvec4 flags;          // x: kFogFlag* bits
-};
-
-// ---- fog noise generation (shaders/fog/noise_generate.comp, shaders/common/noise.glsl) ----
-// Octave o of each fBm has a lattice of min(base << o, size) cells per tile: a power of two that
-// divides the (power-of-two) texture size, so the texture tiles.
+// ---- the tileable Perlin–Worley noise formula (shaders/common/noise.glsl; the fog generates its texture)
+// ---- Octave o of each fBm has a lattice of min(base << o, size) cells per tile: a power of two that divides
+// the (power-of-two) texture size, so the texture tiles.
 PFX_CONST(uint, kNoisePerlinOctaves, 4u);
 PFX_CONST(uint, kNoisePerlinBasePeriod, 4u);  // cells per tile of the first Perlin octave
 PFX_CONST(uint, kNoiseWorleyOctaves, 3u);
@@ -84,13 +35,7 @@ PFX_CONST(uint, kNoiseWorleyBasePeriod, 4u);  // cells per tile of the first Wor
 // Perlin–Worley values below this map to 0 (stretches the used range to mean ~0.5; noise.glsl).
 PFX_CONST(float, kNoiseRangeLow, 0.3f);
 
-struct NoisePush {  // push constants of noise_generate.comp
-    uvec4 params;   // x: texture size [texels], y: seed
-};
-
 #ifdef __cplusplus
-static_assert(sizeof(FogUniforms) == 2 * 64 + 13 * 16, "FogUniforms must match std140");
-static_assert(sizeof(NoisePush) == 16, "NoisePush must match the shader's push constants");
 }  // namespace postfx::gpu
 #endif
 

@@ -5,7 +5,7 @@
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/noise.glsl"
-#include "common/shared.h"
+#include "fog/fog_shared.h"
 
 layout(local_size_x = kNoiseGroupSize, local_size_y = kNoiseGroupSize, local_size_z = kNoiseGroupSize) in;
 

@@ -5,7 +5,7 @@
 // Variants: COLOR_RGBA32F selects the storage format (default rgba16f).
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/shared.h"
+#include "fog/fog_shared.h"
 
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 

@@ -152,18 +152,20 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
 
             frame.commandBuffer = cmd;
             frame.color = {colorImage.handle(), colorImage.view(), images.colorFormat, extent,
-                           images.colorLayout};
+                           images.colorLayout,  cd.usage};
             frame.depth = {depthImage.handle(), depthImage.view(), VK_FORMAT_D32_SFLOAT, extent,
-                           images.depthLayout};
+                           images.depthLayout,  dd.usage};
             if (images.separateOutput)
-                frame.output = {outputImage.handle(), outputImage.view(), images.colorFormat, extent,
-                                images.colorLayout};
+                frame.output = {outputImage.handle(), outputImage.view(),
+                                images.colorFormat,   extent,
+                                images.colorLayout,   cd.usage};
             if (shadow)
                 frame.shadowMap.image = {shadowImage.handle(),
                                          shadowImage.view(),
                                          VK_FORMAT_R32_SFLOAT,
                                          {images.shadowWidth, images.shadowHeight},
-                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+                                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                         sd.usage};
             if (onBeforeRecord) onBeforeRecord(frame);
             recordStatus = context.record(frame);
 

@@ -137,9 +137,10 @@ protected:
         }
         const VkExtent2D extent{kWidth, kHeight};
         frame.frameIndex = frameCounter++;  // jitter is off: the index changes nothing but the frame slot
-        frame.color = {color.image, color.view, color.format, extent, VK_IMAGE_LAYOUT_GENERAL};
-        frame.depth = {depth.image, depth.view, depth.format, extent,
-                       VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+        frame.color = {color.image, color.view, color.format, extent, VK_IMAGE_LAYOUT_GENERAL, color.usage};
+        frame.depth = {
+            depth.image, depth.view, depth.format, extent, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+            depth.usage};
         postfx::DepthConvention convention;
         convention.reversedZ = true;
         bool recorded = false;
@@ -230,9 +231,13 @@ double BaselineTest::runOnRenderer(demo::Renderer& renderer, const demo::RenderO
             postfx::FrameInfo frame;
             frame.commandBuffer = cmd;
             frame.frameIndex = 0;
-            frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL};
-            frame.depth = {depthInfo.image, depthInfo.view, depthInfo.format, extent,
-                           VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+            frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL, hdr.usage};
+            frame.depth = {depthInfo.image,
+                           depthInfo.view,
+                           depthInfo.format,
+                           extent,
+                           VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                           depthInfo.usage};
             frame.timeSeconds = 0.0;
             frame.camera.position = glm::dvec3(scene.camera.position);
             frame.camera.view = demo::cameraView(scene.camera);
@@ -245,7 +250,7 @@ double BaselineTest::runOnRenderer(demo::Renderer& renderer, const demo::RenderO
             const demo::ShadowMapInfo& shadow = renderer.shadowMap();
             if (shadow.enabled) {
                 const demo::ImageInfo& s = shadow.image;
-                frame.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout};
+                frame.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout, s.usage};
                 frame.shadowMap.worldToClip = glm::dmat4(shadow.viewProj);
                 frame.shadowMap.reversedZ = false;
                 const glm::mat4& m = shadow.viewProj;
@@ -253,7 +258,8 @@ double BaselineTest::runOnRenderer(demo::Renderer& renderer, const demo::RenderO
                     shadow.texelWorldSize * glm::length(glm::vec3(m[0][2], m[1][2], m[2][2]));
             }
             frame.fog = scene.fog;
-            const VkImageView noiseView = noise ? renderer.postfxContext().fogNoiseView() : VK_NULL_HANDLE;
+            const VkImageView noiseView =
+                noise ? postfx::fogNoiseView(renderer.postfxContext()) : VK_NULL_HANDLE;
             EXPECT_EQ(noise, noiseView != VK_NULL_HANDLE);
             recorded = baseline->record(cmd, frame, convention, which, stepLength, noiseView, queryPool, 0,
                                         recordError);

@@ -61,8 +61,10 @@ protected:
             },
             error))
             << error;
-        frame.color = {color.handle(), color.view(), VK_FORMAT_R16G16B16A16_SFLOAT, extent, colorLayout};
-        frame.depth = {depth.handle(), depth.view(), VK_FORMAT_D32_SFLOAT, extent, depthLayout};
+        frame.color = {color.handle(), color.view(), VK_FORMAT_R16G16B16A16_SFLOAT,
+                       extent,         colorLayout,  color.desc().usage};
+        frame.depth = {depth.handle(), depth.view(), VK_FORMAT_D32_SFLOAT,
+                       extent,         depthLayout,  depth.desc().usage};
     }
 
     postfx::core::Gpu gpu;

@@ -207,7 +207,8 @@ TEST_F(FogApiTest, RejectsBadSettingsNamingTheField) {
                                   reinterpret_cast<VkImageView>(uintptr_t(1)),
                                   VK_FORMAT_R8G8B8A8_UNORM,
                                   {4, 4},
-                                  VK_IMAGE_LAYOUT_GENERAL};
+                                  VK_IMAGE_LAYOUT_GENERAL,
+                                  VK_IMAGE_USAGE_SAMPLED_BIT};
          }},
     };
     const postfx::FrameInfo base = homogeneousFrame({0.0, 1.5, 0.0});

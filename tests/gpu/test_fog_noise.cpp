@@ -1,11 +1,11 @@
-// The fog's generated noise texture (postfx/src/fog/fog_noise.h) on a real device: its texels against
-// the CPU port of the generator, tiling, value statistics, and regeneration only when (size, seed)
-// changes. Sizes 32 and 16 keep lavapipe fast.
-#include "core/compute_pipeline.h"
-#include "core/gpu_resources.h"
-#include "fog/fog_noise.h"
+// The fog's generated noise texture on a real device, through the context (the fog declares it as a
+// persistent image built by fog.noise): its texels against the CPU port of the generator, tiling, value
+// statistics, and regeneration only when (size, seed) changes. Sizes 32 and 16 keep lavapipe fast.
 #include "fog/noise_cpu.h"
+#include "fog_harness.h"
 #include "gpu_test.h"
+
+#include <postfx/postfx.h>
 
 #include <cmath>
 #include <cstdint>
@@ -18,7 +18,6 @@ namespace test {
 namespace {
 
 using postfx::Result;
-using postfx::fog::FogNoise;
 
 class FogNoiseTest : public GpuTest {
 protected:
@@ -27,55 +26,73 @@ protected:
         ASSERT_TRUE(host);
         postfx::Status s = gpu.init(hostHandles());
         ASSERT_TRUE(s.ok()) << s.message;
-        s = arena.create(gpu, 4);
-        ASSERT_TRUE(s.ok()) << s.message;
-    }
-    void TearDown() override {
-        arena.reset();
-        GpuTest::TearDown();
+        // A wall 20 m away over a small image: the fog samples the noise, so the texture is needed.
+        images.width = 8;
+        images.height = 4;
+        images.color.assign(size_t(images.width) * images.height * 4, 1.0f);
+        frame.camera = testCamera({0.0, 1.0, 0.0}, 60.0f, 2.0f, 0.1f, 1000.0f, true);
+        for (uint32_t j = 0; j < images.height; ++j)
+            for (uint32_t i = 0; i < images.width; ++i)
+                images.depth.push_back(depthAtDistance(
+                    frame.camera, pixelDirection(frame.camera, i, j, images.width, images.height), 20.0));
+        frame.fog.enabled = true;
+        frame.fog.steps = 2;
+        frame.fog.noise.enabled = true;
     }
 
-    // One submission: recordGenerate (its return value in `generated`), then a read-back of the texture.
-    std::vector<uint8_t> generateAndRead(FogNoise& noise, bool* generated = nullptr) {
-        std::vector<uint8_t> texels;
-        if (!noise.ready() && noise.size() == 0) {
-            ADD_FAILURE() << "prepare() first";
-            return texels;
-        }
-        postfx::core::GpuBuffer readback;
-        postfx::Status s = readback.create(gpu, noise.texelBytes(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true,
-                                           "noise readback");
+    // Records one fog frame with noise (size, seed) through `context`; returns whether its plan (and so
+    // the recorded passes) generated the texture. `beforeRecord` runs in the frame's command buffer
+    // just before record().
+    bool render(postfx::Context& context, uint32_t size, uint32_t seed, uint64_t frameIndex,
+                const std::function<void(VkCommandBuffer)>& beforeRecord = {}) {
+        postfx::FrameInfo f = frame;
+        f.frameIndex = frameIndex;
+        f.fog.noise.textureSize = size;
+        f.fog.noise.seed = seed;
+        postfx::FramePlan plan;
+        FogHarness harness(*host, gpu);
+        harness.onBeforeRecord = [&](const postfx::FrameInfo& recorded) {
+            EXPECT_TRUE(context.plan(recorded, plan).ok());
+            if (beforeRecord) beforeRecord(recorded.commandBuffer);
+        };
+        std::vector<float> color;
+        const postfx::Status s = harness.run(context, images, f, color);
         EXPECT_TRUE(s.ok()) << s.message;
-        if (!s) return texels;
-        EXPECT_TRUE(arena.beginFrame().ok());
+        return plan.pass("fog.noise") != nullptr;
+    }
+
+    // The context's noise texture, read back in a submission of its own.
+    std::vector<uint8_t> read(const postfx::Context& context) {
+        std::vector<uint8_t> texels;
+        const VkImageView view = postfx::fogNoiseView(context);
+        EXPECT_NE(view, VkImageView(VK_NULL_HANDLE));
+        postfx::core::GpuBuffer readback;
+        EXPECT_TRUE(
+            readback.create(gpu, 256 * 256 * 256, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback").ok());
+        uint32_t size = 0;
+        postfx::Status s;
         std::string error;
-        bool recorded = false;
-        postfx::Status generateStatus, readStatus;
         EXPECT_TRUE(host->submitAndWait(
             [&](VkCommandBuffer cmd) {
-                recorded = noise.recordGenerate(cmd, arena, generateStatus);
-                readStatus = noise.recordReadback(cmd, readback.handle(), 0);
+                s = postfx::recordFogNoiseReadback(context, cmd, readback.handle(), 0, size);
             },
             error))
             << error;
-        EXPECT_TRUE(generateStatus.ok()) << generateStatus.message;
-        EXPECT_TRUE(readStatus.ok()) << readStatus.message;
-        if (generated) *generated = recorded;
-        if (!readStatus) return texels;
-        texels.resize(noise.texelBytes());
-        std::memcpy(texels.data(), readback.mapped(), texels.size());
+        EXPECT_TRUE(s.ok()) << s.message;
+        if (!s) return texels;
+        const uint8_t* mapped = static_cast<const uint8_t*>(readback.mapped());
+        texels.assign(mapped, mapped + size_t(size) * size * size);
         return texels;
     }
 
+    // A fresh context's texture for (size, seed).
     std::vector<uint8_t> generate(uint32_t size, uint32_t seed) {
-        FogNoise noise;
-        postfx::Status s = noise.prepare(gpu, size, seed);
+        std::unique_ptr<postfx::Context> context;
+        const postfx::Status s = createContext(context);
         EXPECT_TRUE(s.ok()) << s.message;
-        if (!s) return {};
-        bool generated = false;
-        std::vector<uint8_t> texels = generateAndRead(noise, &generated);
-        EXPECT_TRUE(generated);
-        return texels;
+        if (!context) return {};
+        EXPECT_TRUE(render(*context, size, seed, 0));
+        return read(*context);
     }
 
     // GPU texels against the CPU port's unquantized values.
@@ -107,7 +124,8 @@ protected:
     }
 
     postfx::core::Gpu gpu;
-    postfx::core::DescriptorArena arena;
+    FogHarnessImages images;
+    postfx::FrameInfo frame;
 };
 
 double mean(const std::vector<uint8_t>& t) {
@@ -188,143 +206,80 @@ TEST_F(FogNoiseTest, ValuesUseTheRangeAndFollowTheSeed) {
 }
 
 TEST_F(FogNoiseTest, GeneratesOnlyWhenSizeOrSeedChanges) {
-    FogNoise noise;
-    EXPECT_EQ(noise.bytes(), 0u);  // nothing allocated before prepare()
-    EXPECT_EQ(noise.view(), VkImageView(VK_NULL_HANDLE));
-    EXPECT_EQ(noise.size(), 0u);
-    EXPECT_FALSE(noise.ready());
-    noise.release();  // harmless when nothing is held
-    EXPECT_EQ(noise.bytes(), 0u);
+    std::unique_ptr<postfx::Context> context;
+    ASSERT_TRUE(createContext(context).ok());
+    EXPECT_EQ(postfx::fogNoiseView(*context), VkImageView(VK_NULL_HANDLE));  // nothing before a frame
 
-    // Nothing to record before prepare().
-    postfx::Status status{Result::VulkanError, "stale"};
-    std::string error;
-    ASSERT_TRUE(host->submitAndWait(
-        [&](VkCommandBuffer cmd) { EXPECT_FALSE(noise.recordGenerate(cmd, arena, status)); }, error))
-        << error;
-    EXPECT_TRUE(status.ok());
-
-    // A size that is not a power of two in [16, 256] is rejected, naming the field; nothing allocated.
+    // A size that is not a power of two in [16, 256] is rejected, naming the field; nothing is held.
     for (uint32_t bad : {0u, 8u, 24u, 512u}) {
-        postfx::Status s = noise.prepare(gpu, bad, 1);
+        postfx::FrameInfo f = frame;
+        f.fog.noise.textureSize = bad;
+        std::vector<float> color;
+        const postfx::Status s = FogHarness(*host, gpu).run(*context, images, f, color);
         EXPECT_EQ(s.code, Result::InvalidArgument) << bad;
         EXPECT_NE(s.message.find("texture_size"), std::string::npos) << s.message;
-        EXPECT_EQ(noise.bytes(), 0u);
     }
+    EXPECT_EQ(postfx::fogNoiseView(*context), VkImageView(VK_NULL_HANDLE));
 
-    ASSERT_TRUE(noise.prepare(gpu, 32, 1).ok());
-    EXPECT_GE(noise.bytes(), VkDeviceSize(32 * 32 * 32));
-    EXPECT_NE(noise.view(), VkImageView(VK_NULL_HANDLE));
-    EXPECT_EQ(noise.size(), 32u);
-    EXPECT_EQ(noise.texelBytes(), VkDeviceSize(32 * 32 * 32));
-    EXPECT_FALSE(noise.ready());  // marked, not generated yet
-    bool generated = false;
-    const std::vector<uint8_t> first = generateAndRead(noise, &generated);
-    EXPECT_TRUE(generated);
-    EXPECT_TRUE(noise.ready());
-    const VkImageView view = noise.view();
+    uint64_t frameIndex = 0;
+    EXPECT_TRUE(render(*context, 32, 1, frameIndex++));
+    const std::vector<uint8_t> first = read(*context);
+    const VkImageView view = postfx::fogNoiseView(*context);
 
-    // Same (size, seed): nothing is recorded, the texture stays (a read-back still works).
-    ASSERT_TRUE(noise.prepare(gpu, 32, 1).ok());
-    EXPECT_TRUE(noise.ready());
-    const std::vector<uint8_t> unchanged = generateAndRead(noise, &generated);
-    EXPECT_FALSE(generated);
-    EXPECT_EQ(unchanged, first);
-    EXPECT_EQ(noise.view(), view);
+    // Same (size, seed): nothing is recorded, the texture stays.
+    EXPECT_FALSE(render(*context, 32, 1, frameIndex++));
+    EXPECT_EQ(read(*context), first);
+    EXPECT_EQ(postfx::fogNoiseView(*context), view);
 
-    // A new seed: regenerated into the same image (after the earlier read-backs).
-    ASSERT_TRUE(noise.prepare(gpu, 32, 2).ok());
-    EXPECT_FALSE(noise.ready());
-    EXPECT_EQ(noise.view(), view);
-    const std::vector<uint8_t> second = generateAndRead(noise, &generated);
-    EXPECT_TRUE(generated);
+    // A new seed: regenerated into the same image.
+    EXPECT_TRUE(render(*context, 32, 2, frameIndex++));
+    EXPECT_EQ(postfx::fogNoiseView(*context), view);
+    const std::vector<uint8_t> second = read(*context);
     EXPECT_NE(second, first);
     EXPECT_EQ(second, generate(32, 2));
-    ASSERT_TRUE(noise.prepare(gpu, 32, 2).ok());
-    generateAndRead(noise, &generated);
-    EXPECT_FALSE(generated);
+    EXPECT_FALSE(render(*context, 32, 2, frameIndex++));
 
     // Back to the first seed: the first texture again.
-    ASSERT_TRUE(noise.prepare(gpu, 32, 1).ok());
-    EXPECT_EQ(generateAndRead(noise, &generated), first);
-    EXPECT_TRUE(generated);
+    EXPECT_TRUE(render(*context, 32, 1, frameIndex++));
+    EXPECT_EQ(read(*context), first);
 
     // A new size: a new image, regenerated.
-    ASSERT_TRUE(noise.prepare(gpu, 16, 1).ok());
-    EXPECT_EQ(noise.size(), 16u);
-    EXPECT_FALSE(noise.ready());
-    const std::vector<uint8_t> small = generateAndRead(noise, &generated);
-    EXPECT_TRUE(generated);
-    expectMatchesCpu(small, 16, 1);
-
-    // Generation and a second prepare+record in one command buffer: the second records nothing.
-    ASSERT_TRUE(noise.prepare(gpu, 16, 9).ok());
-    ASSERT_TRUE(arena.beginFrame().ok());
-    bool firstRecord = false, secondRecord = true;
-    ASSERT_TRUE(host->submitAndWait(
-        [&](VkCommandBuffer cmd) {
-            firstRecord = noise.recordGenerate(cmd, arena, status);
-            EXPECT_TRUE(status.ok()) << status.message;
-            EXPECT_TRUE(noise.prepare(gpu, 16, 9).ok());
-            secondRecord = noise.recordGenerate(cmd, arena, status);
-            EXPECT_TRUE(status.ok()) << status.message;
-        },
-        error))
-        << error;
-    EXPECT_TRUE(firstRecord);
-    EXPECT_FALSE(secondRecord);
-
-    noise.release();
-    EXPECT_EQ(noise.bytes(), 0u);
-    EXPECT_EQ(noise.view(), VkImageView(VK_NULL_HANDLE));
-    EXPECT_FALSE(noise.ready());
-    // After release, prepare starts over (pipeline and image recreated, generation marked).
-    ASSERT_TRUE(noise.prepare(gpu, 16, 9).ok());
-    EXPECT_GT(noise.bytes(), 0u);
-    EXPECT_EQ(generateAndRead(noise, &generated).size(), 16u * 16u * 16u);
-    EXPECT_TRUE(generated);
+    EXPECT_TRUE(render(*context, 16, 1, frameIndex++));
+    expectMatchesCpu(read(*context), 16, 1);
 }
 
-// Generate, read back, regenerate with another seed, read back: all in one command buffer, so the
-// synchronization validation checks the regeneration waits for the earlier read of the old texels.
+// Generate, then in one command buffer read back and regenerate with another seed, so the
+// synchronization validation checks that the regeneration waits for the earlier read of the old texels.
 TEST_F(FogNoiseTest, RegeneratesAfterReadsInTheSameCommandBuffer) {
     constexpr uint32_t kSize = 16;
-    FogNoise noise;
-    ASSERT_TRUE(noise.prepare(gpu, kSize, 11).ok());
-    const VkDeviceSize bytes = noise.texelBytes();
+    const VkDeviceSize bytes = kSize * kSize * kSize;
+    std::unique_ptr<postfx::Context> context;
+    ASSERT_TRUE(createContext(context).ok());
+    ASSERT_TRUE(render(*context, kSize, 11, 0));
     postfx::core::GpuBuffer readback;
-    ASSERT_TRUE(readback.create(gpu, 2 * bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback").ok());
-    ASSERT_TRUE(arena.beginFrame().ok());
-    std::string error;
-    ASSERT_TRUE(host->submitAndWait(
-        [&](VkCommandBuffer cmd) {
-            postfx::Status s;
-            EXPECT_TRUE(noise.recordGenerate(cmd, arena, s));
-            EXPECT_TRUE(noise.recordReadback(cmd, readback.handle(), 0).ok());
-            EXPECT_TRUE(noise.prepare(gpu, kSize, 12).ok());
-            EXPECT_TRUE(noise.recordGenerate(cmd, arena, s));
-            EXPECT_TRUE(s.ok()) << s.message;
-            EXPECT_TRUE(noise.recordReadback(cmd, readback.handle(), bytes).ok());
-        },
-        error))
-        << error;
+    ASSERT_TRUE(readback.create(gpu, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback").ok());
+    postfx::Status readStatus;
+    EXPECT_TRUE(render(*context, kSize, 12, 1, [&](VkCommandBuffer cmd) {
+        uint32_t size = 0;
+        readStatus = postfx::recordFogNoiseReadback(*context, cmd, readback.handle(), 0, size);
+    }));
+    EXPECT_TRUE(readStatus.ok()) << readStatus.message;
     const uint8_t* mapped = static_cast<const uint8_t*>(readback.mapped());
     EXPECT_EQ(std::vector<uint8_t>(mapped, mapped + bytes), postfx::fog::generateNoiseCpu(kSize, 11));
-    EXPECT_EQ(std::vector<uint8_t>(mapped + bytes, mapped + 2 * bytes),
-              postfx::fog::generateNoiseCpu(kSize, 12));
+    EXPECT_EQ(read(*context), postfx::fog::generateNoiseCpu(kSize, 12));
 }
 
 TEST_F(FogNoiseTest, ReadbackNeedsAGeneratedTexture) {
-    FogNoise noise;
+    std::unique_ptr<postfx::Context> context;
+    ASSERT_TRUE(createContext(context).ok());
     postfx::core::GpuBuffer readback;
     ASSERT_TRUE(readback.create(gpu, 16 * 16 * 16, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback").ok());
     std::string error;
+    uint32_t size = 0;
     ASSERT_TRUE(host->submitAndWait(
         [&](VkCommandBuffer cmd) {
-            EXPECT_EQ(noise.recordReadback(cmd, readback.handle(), 0).code, Result::InvalidArgument);
-            EXPECT_TRUE(noise.prepare(gpu, 16, 1).ok());
-            EXPECT_EQ(noise.recordReadback(cmd, readback.handle(), 0).code,
-                      Result::InvalidArgument);  // marked only
+            EXPECT_EQ(postfx::recordFogNoiseReadback(*context, cmd, readback.handle(), 0, size).code,
+                      Result::InvalidArgument);
         },
         error))
         << error;

@@ -125,7 +125,7 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
         std::unique_ptr<postfx::Context> asCustom = newContext();  // renders the presets as Custom
         ASSERT_TRUE(context && asCustom);
         FogQuality chosen = FogQuality::Custom;
-        EXPECT_EQ(context->fogAutoQuality(chosen).code, Result::NotReady);  // nothing recorded yet
+        EXPECT_EQ(postfx::fogAutoQuality(*context, chosen).code, Result::NotReady);  // nothing recorded yet
         postfx::FrameInfo frame = fogFrame();
         frame.fog.quality = FogQuality::Auto;
         frame.fog.autoBudgetMs = budget;
@@ -145,7 +145,7 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
                 if (context->readPassTimings(0, timings).code == Result::Unsupported)
                     GTEST_SKIP() << "no GPU timings on this device";
             }
-            const postfx::Status c = context->fogAutoQuality(chosen);
+            const postfx::Status c = postfx::fogAutoQuality(*context, chosen);
             if (i < kMeasuring) {
                 EXPECT_EQ(c.code, Result::NotReady) << "frame " << i;
                 // What was rendered is the preset whose turn it is.
@@ -172,7 +172,7 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
         frame.fog.noise.enabled = true;
         frame.frameIndex = kMeasuring + 2;
         ASSERT_TRUE(harness.run(*context, im, frame, out).ok());
-        EXPECT_EQ(context->fogAutoQuality(chosen).code, Result::NotReady);
+        EXPECT_EQ(postfx::fogAutoQuality(*context, chosen).code, Result::NotReady);
     }
 }
 
@@ -190,20 +190,20 @@ TEST_F(FogQualityTest, AutoTimingsCarryToANewContext) {
     std::unique_ptr<postfx::Context> given = newContext();
     std::unique_ptr<postfx::Context> asCustom = newContext();
     ASSERT_TRUE(given && asCustom);
-    EXPECT_TRUE(given->fogAutoTimings().empty());
+    EXPECT_TRUE(postfx::fogAutoTimings(*given).empty());
     postfx::FogAutoTimings t;
     t.width = kWidth;
     t.height = kHeight;
     t.presetMs[0] = 1.0f, t.presetMs[1] = 2.0f, t.presetMs[2] = 3.0f, t.presetMs[3] = 4.0f;
     postfx::FogAutoTimings otherKey = t;
     otherKey.noise = true;
-    ASSERT_TRUE(given->setFogAutoTimings({t, otherKey}).ok());
-    ASSERT_EQ(given->fogAutoTimings().size(), 2u);
-    EXPECT_EQ(given->fogAutoTimings()[0].presetMs[2], 3.0f);
+    ASSERT_TRUE(postfx::setFogAutoTimings(*given, {t, otherKey}).ok());
+    ASSERT_EQ(postfx::fogAutoTimings(*given).size(), 2u);
+    EXPECT_EQ(postfx::fogAutoTimings(*given)[0].presetMs[2], 3.0f);
     frame.frameIndex = 0;
     ASSERT_TRUE(harness.run(*given, im, frame, out).ok());
     FogQuality chosen = FogQuality::Custom;
-    ASSERT_TRUE(given->fogAutoQuality(chosen).ok());
+    ASSERT_TRUE(postfx::fogAutoQuality(*given, chosen).ok());
     EXPECT_EQ(chosen, FogQuality::Medium);
     postfx::FrameInfo medium = frame;
     medium.fog = postfx::applyFogQuality(frame.fog, FogQuality::Medium);
@@ -221,12 +221,12 @@ TEST_F(FogQualityTest, AutoTimingsCarryToANewContext) {
     empty.width = 0;
     for (const auto& [bad, field] :
          {std::pair{nan, "presetMs[2]"}, std::pair{negative, "presetMs[0]"}, std::pair{empty, "extent"}}) {
-        const postfx::Status s = refused->setFogAutoTimings({t, bad});
+        const postfx::Status s = postfx::setFogAutoTimings(*refused, {t, bad});
         EXPECT_EQ(s.code, Result::InvalidArgument) << field;
-        EXPECT_NE(s.message.find("fog auto timings[1]"), std::string::npos) << s.message;
+        EXPECT_NE(s.message.find("timings[1]"), std::string::npos) << s.message;
         EXPECT_NE(s.message.find(field), std::string::npos) << s.message;
     }
-    EXPECT_TRUE(refused->fogAutoTimings().empty());
+    EXPECT_TRUE(postfx::fogAutoTimings(*refused).empty());
 
     // Measured on one context, given to another: the same times, and the new one chooses at once.
     std::unique_ptr<postfx::Context> measuring = newContext();
@@ -239,7 +239,7 @@ TEST_F(FogQualityTest, AutoTimingsCarryToANewContext) {
         if (i == 0 && measuring->readPassTimings(0, timings).code == Result::Unsupported)
             GTEST_SKIP() << "no GPU timings on this device";
     }
-    const std::vector<postfx::FogAutoTimings> measured = measuring->fogAutoTimings();
+    const std::vector<postfx::FogAutoTimings> measured = postfx::fogAutoTimings(*measuring);
     ASSERT_EQ(measured.size(), 1u);
     EXPECT_EQ(measured[0].width, kWidth);
     EXPECT_EQ(measured[0].height, kHeight);
@@ -248,12 +248,12 @@ TEST_F(FogQualityTest, AutoTimingsCarryToANewContext) {
     for (float ms : measured[0].presetMs)
         EXPECT_TRUE(std::isfinite(ms) && ms > 0.0f) << ms;
     std::unique_ptr<postfx::Context> next = newContext();
-    ASSERT_TRUE(next && next->setFogAutoTimings(measured).ok());
+    ASSERT_TRUE(next && postfx::setFogAutoTimings(*next, measured).ok());
     frame.frameIndex = 0;
     ASSERT_TRUE(harness.run(*next, im, frame, out).ok());
-    ASSERT_TRUE(next->fogAutoQuality(chosen).ok());
+    ASSERT_TRUE(postfx::fogAutoQuality(*next, chosen).ok());
     EXPECT_EQ(chosen, FogQuality::Ultra);
-    const std::vector<postfx::FogAutoTimings> carried = next->fogAutoTimings();
+    const std::vector<postfx::FogAutoTimings> carried = postfx::fogAutoTimings(*next);
     ASSERT_EQ(carried.size(), 1u);
     for (int i = 0; i < 4; ++i)
         EXPECT_EQ(carried[0].presetMs[i], measured[0].presetMs[i]);
@@ -281,7 +281,7 @@ TEST_F(FogQualityTest, AutoWithoutTimingsUsesMedium) {
         frame.frameIndex = i;
         ASSERT_TRUE(harness.run(*context, im, frame, out).ok());
         FogQuality chosen = FogQuality::Custom;
-        ASSERT_TRUE(context->fogAutoQuality(chosen).ok());
+        ASSERT_TRUE(postfx::fogAutoQuality(*context, chosen).ok());
         EXPECT_EQ(chosen, FogQuality::Medium);
     }
     EXPECT_EQ(messages.warnings, 1);

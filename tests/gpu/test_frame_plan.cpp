@@ -176,7 +176,7 @@ TEST_F(FramePlanTest, OffOrEmptyFogCreatesNothingAndReleasesWhatItHeld) {
     EXPECT_EQ(gCounts.dispatches, withFog.dispatches);
     EXPECT_EQ(gCounts.pipelines, withFog.pipelines);
     EXPECT_EQ(gCounts.frees, gCounts.allocations) << "memory still held after the frames in flight";
-    EXPECT_EQ(context->fogNoiseView(), VkImageView(VK_NULL_HANDLE));
+    EXPECT_EQ(postfx::fogNoiseView(*context), VkImageView(VK_NULL_HANDLE));
 }
 
 // A separate output that no effect writes gets the host's color through postfx.copy; with a fog, the fog

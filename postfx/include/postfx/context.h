@@ -8,6 +8,7 @@
 
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>
+#include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
 #include <vulkan/vulkan.h>
@@ -15,11 +16,16 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace postfx {
 
 struct ContextCreateInfo {
+    // Leave as is: the size of the struct as the host's compiler laid it out, which create() compares with
+    // the library's (a host built with other packing or another postfx header gets an error, not garbage).
+    uint32_t structSize = sizeof(ContextCreateInfo);
+
     // Borrowed handles; the host keeps ownership and must outlive the context.
     VkInstance instance = VK_NULL_HANDLE;
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
@@ -41,32 +47,50 @@ struct ContextCreateInfo {
 
 // Everything postfx needs for one frame.
 struct FrameInfo {
+    uint32_t structSize = sizeof(FrameInfo);  // leave as is (see ContextCreateInfo::structSize)
+
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;  // recording, outside a render pass
     uint64_t frameIndex = 0;  // increases by one per frame; selects per-frame resources and noise seeds
 
     // HDR scene color, linear radiance [W/(sr·m²) or cd/m², the host's choice, used consistently].
     // Formats: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, usage STORAGE. Effects composite into it.
+    // Its alpha is carried through unchanged.
     ImageInput color;
     // Scene depth, D32_SFLOAT / D16_UNORM / D24_UNORM_S8_UINT / X8_D24_UNORM_PACK32, usage SAMPLED,
     // same extent as color, in the context's DepthConvention.
     ImageInput depth;
-    // Optional: when present, the result goes here (same extent, a color format, usage STORAGE) and
-    // `color` is only read. When absent, effects composite into `color` in place.
+    // Optional: when present, the result goes here (not the color image; same extent and format, usage
+    // STORAGE) and `color` is only read. When absent, effects composite into `color` in place.
     ImageInput output;
 
     double timeSeconds = 0.0;  // host time [s], moves the noise with the wind; finite
+
+    // Inputs every effect shares (postfx/inputs.h), checked whichever effects run.
     CameraInput camera;
     SunInput sun;
-    glm::vec3 ambient{0.0f};  // uniform incident radiance for ambient in-scattering; each >= 0
+    Vec3 ambient{0.0f};  // uniform incident radiance for ambient in-scattering; each in [0, 1e7]
     ShadowMapInput shadowMap;
+    const LocalLight* lights = nullptr;  // lightCount local lights (may be null when 0); read during record()
+    uint32_t lightCount = 0;             // [0, kMaxLocalLights]
 
-    FogSettings fog;  // ray-marched fog (docs/effects/fog.md); off by default
+    // Effect settings. Each effect is off by default; the order they composite in is fixed
+    // (docs/architecture.md, "Composite order").
+    FogSettings fog;  // ray-marched fog (docs/effects/fog.md)
 };
 
 // GPU time of one postfx pass in one frame.
 struct PassTiming {
     std::string name;  // "fog.raymarch" (effect.pass)
     double milliseconds = 0.0;
+};
+
+// Quality Auto's measurements of one effect for one key (color extent and the effect's cost-relevant
+// features): the median GPU time of each of its presets' passes, work on slow inputs excluded.
+struct AutoQualityTimings {
+    std::string effect;              // "fog"
+    uint32_t width = 0, height = 0;  // color image extent [px]; each >= 1
+    uint32_t features = 0;           // bits the effect defines (fog: kFogAutoFeature*)
+    std::vector<float> presetMs;     // one per preset, lowest preset first [ms]; each finite, >= 0
 };
 
 class Context {
@@ -94,31 +118,34 @@ public:
     // framesInFlight ago) or were never written. Does not wait.
     Status readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const;
 
-    // The preset FogQuality::Auto chose for the last recorded frame's (color extent, noise on, shadow map
-    // present): NotReady while that key's presets are still being measured (or no Auto frame has been
-    // recorded). Medium when GPU timings are off.
-    Status fogAutoQuality(FogQuality& chosen) const;
-
-    // Auto's measurements, for a host that keeps them between runs, as engines keep the result of their
-    // quality auto-detection: every key measured so far (all four presets) or given. Key them by device,
-    // driver and postfx version where they are stored: the presets' cost depends on all three.
-    std::vector<FogAutoTimings> fogAutoTimings() const;
+    // Quality Auto (every effect with presets; the fog's typed view: fogAutoQuality in fog.h). The
+    // context measures the effect's presets on the running device from real frames (the first frames of
+    // every new key: the presets in turn, three frames each, median) and then uses the highest preset
+    // whose passes take at most the effect's budget, or the lowest if none fits.
+    //
+    // The preset index (0 = lowest) Auto chose for `effect`'s last recorded frame: NotReady while that
+    // key's presets are being measured or no Auto frame was recorded; InvalidArgument for an unknown
+    // effect or one without presets.
+    Status autoQuality(std::string_view effect, uint32_t& preset) const;
+    // Every key measured so far (all presets) or given, for a host that keeps them between runs. Key
+    // them by device, driver and postfx version where they are stored: the presets' cost depends on all
+    // three.
+    std::vector<AutoQualityTimings> autoQualityTimings() const;
     // Adds `timings` to Auto's cache (replacing keys it has), so frames with those keys choose from the
-    // first frame instead of measuring. InvalidArgument naming the entry for a zero extent or a time that
-    // is negative or not finite; then nothing is added.
-    Status setFogAutoTimings(const std::vector<FogAutoTimings>& timings);
+    // first frame. InvalidArgument naming the entry for an unknown effect, a preset count that is not
+    // the effect's, a zero extent or a time that is negative or not finite; then nothing is added.
+    Status setAutoQualityTimings(const std::vector<AutoQualityTimings>& timings);
 
-    // Records a copy of the fog's generated noise texture (R8, size³ bytes, x fastest, then y, then z)
-    // into `buffer` at `offset` (usage TRANSFER_DST); the host submits and reads it, e.g. to give the
-    // CPU reference the same noise data. `size` receives the texture's edge. InvalidArgument when no
-    // texture has been generated (fog with generated noise has not been recorded yet).
-    Status recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,
-                                  uint32_t& size) const;
-
-    // The fog's generated noise texture (3D, R8_UNORM, repeat-tileable), for hosts that want to sample the
-    // same noise: in SHADER_READ_ONLY_OPTIMAL once the frame that generated it has executed.
-    // VK_NULL_HANDLE when none is held (fog or generated noise off).
-    VkImageView fogNoiseView() const;
+    // An image postfx holds between frames (an effect's noise texture or LUT, named in its header, e.g.
+    // kFogNoiseTexture), for hosts that sample it too: its view, and the layout it is in once the frames
+    // recorded so far have executed. VK_NULL_HANDLE when it is not held or not built yet.
+    VkImageView imageView(ResourceName name, VkImageLayout* layout = nullptr) const;
+    // Records a copy of such an image into `buffer` at `offset` (usage TRANSFER_DST), texels tightly
+    // packed (x fastest, then y, then z) with the barriers around it; the copied bytes are visible to the
+    // host once the submission has completed. `extent` receives its size, `bytes` the bytes copied.
+    // InvalidArgument when it is not held or not built yet.
+    Status recordImageReadback(ResourceName name, VkCommandBuffer commandBuffer, VkBuffer buffer,
+                               VkDeviceSize offset, VkExtent3D& extent, VkDeviceSize& bytes) const;
 
     const ContextCreateInfo& createInfo() const;
 

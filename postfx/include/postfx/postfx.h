@@ -3,5 +3,7 @@
 
 #include <postfx/context.h>
 #include <postfx/fog.h>
+#include <postfx/frame_plan.h>
+#include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>

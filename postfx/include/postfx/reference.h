@@ -4,6 +4,7 @@
 #pragma once
 
 #include <postfx/fog.h>
+#include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
 
@@ -22,14 +23,14 @@ struct FogInputs {
 
     CameraInput camera;
     SunInput sun;
-    glm::vec3 ambient{0.0f};
+    Vec3 ambient{0.0f};
     double timeSeconds = 0.0;
     FogSettings settings;
 
     // Shadow map texels (row-major, top row = v 0), empty for none.
     std::span<const float> shadowDepth;
     uint32_t shadowWidth = 0, shadowHeight = 0;
-    glm::dmat4 shadowWorldToClip{1.0};
+    DMat4 shadowWorldToClip{1.0};
     bool shadowReversedZ = false;
     float shadowDepthBias = 0.0f;
 

@@ -3,7 +3,26 @@
 
 #include <vulkan/vulkan.h>
 
+#include <glm/glm.hpp>
+
+#include <string>
+
 namespace postfx {
+
+// Vectors and matrices of the public structs. GLM's packed types are named explicitly, so the structs'
+// layout is the same whatever GLM configuration the host compiles with (GLM_FORCE_DEFAULT_ALIGNED_GENTYPES,
+// GLM_FORCE_INTRINSICS, a default precision): without them a host built with aligned GLM types would hand
+// postfx structs of another layout. A host's glm::vec3 / glm::mat4 of any qualifier converts implicitly.
+// In a build with GLM's defaults (as postfx's own) they are glm::vec3, glm::dvec3, glm::mat4, ...
+using Vec3 = glm::vec<3, float, glm::packed_highp>;
+using DVec3 = glm::vec<3, double, glm::packed_highp>;
+using UVec2 = glm::vec<2, glm::uint, glm::packed_highp>;
+using Mat4 = glm::mat<4, 4, float, glm::packed_highp>;
+using DMat4 = glm::mat<4, 4, double, glm::packed_highp>;
+static_assert(sizeof(Vec3) == 12 && alignof(Vec3) == 4, "postfx::Vec3 must be three packed floats");
+static_assert(sizeof(DVec3) == 24 && alignof(DVec3) == 8, "postfx::DVec3 must be three packed doubles");
+static_assert(sizeof(Mat4) == 64 && alignof(Mat4) == 4, "postfx::Mat4 must be 16 packed floats");
+static_assert(sizeof(DMat4) == 128 && alignof(DMat4) == 8, "postfx::DMat4 must be 16 packed doubles");
 
 // How the host's depth buffer maps view distance to [0, 1]. Fixed at create time.
 struct DepthConvention {
@@ -19,8 +38,21 @@ struct ImageInput {
     VkFormat format = VK_FORMAT_UNDEFINED;
     VkExtent2D extent = {0, 0};
     VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;  // layout at the point record() is recorded
+    // The usage the image was created with (VkImageCreateInfo::usage): postfx checks that it allows what
+    // postfx does with the image (STORAGE for color and output, SAMPLED for depth and the shadow map).
+    VkImageUsageFlags usage = 0;
 
     bool present() const { return image != VK_NULL_HANDLE; }
 };
+
+// The name of a resource postfx holds between frames that a host may read (an effect's generated noise
+// texture, a LUT): each effect's header names its own, e.g. postfx::kFogNoiseTexture. `value` is the
+// name the frame plan lists it under.
+struct ResourceName {
+    const char* value = "";
+};
+
+// "VK_FORMAT_R8G8B8A8_UNORM" for the formats postfx names in its messages; "VkFormat 1234" otherwise.
+std::string formatName(VkFormat format);
 
 }  // namespace postfx

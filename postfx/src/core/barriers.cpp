@@ -2,7 +2,9 @@
 
 namespace postfx::core {
 
-void transition(const Gpu& gpu, VkCommandBuffer cmd, const ImageTransition& t) {
+namespace {
+
+VkImageMemoryBarrier imageBarrier(const ImageTransition& t) {
     VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
     barrier.srcAccessMask = t.srcAccess;
     barrier.dstAccessMask = t.dstAccess;
@@ -12,7 +14,41 @@ void transition(const Gpu& gpu, VkCommandBuffer cmd, const ImageTransition& t) {
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = t.image;
     barrier.subresourceRange = {t.aspect, 0, 1, 0, 1};
+    return barrier;
+}
+
+}  // namespace
+
+void transition(const Gpu& gpu, VkCommandBuffer cmd, const ImageTransition& t) {
+    const VkImageMemoryBarrier barrier = imageBarrier(t);
     gpu.fn.vkCmdPipelineBarrier(cmd, t.srcStage, t.dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
+void BarrierBatch::add(const ImageTransition& t) {
+    images_.push_back(imageBarrier(t));
+    src_ |= t.srcStage;
+    dst_ |= t.dstStage;
+}
+
+void BarrierBatch::computeMemory(VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+    memory_ = true;
+    memorySrc_ |= srcAccess;
+    memoryDst_ |= dstAccess;
+    src_ |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    dst_ |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+}
+
+void BarrierBatch::record(const Gpu& gpu, VkCommandBuffer cmd) {
+    if (empty()) return;
+    VkMemoryBarrier memory{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    memory.srcAccessMask = memorySrc_;
+    memory.dstAccessMask = memoryDst_;
+    gpu.fn.vkCmdPipelineBarrier(cmd, src_, dst_, 0, memory_ ? 1 : 0, &memory, 0, nullptr,
+                                uint32_t(images_.size()), images_.data());
+    images_.clear();
+    src_ = dst_ = 0;
+    memory_ = false;
+    memorySrc_ = memoryDst_ = 0;
 }
 
 ImageTransition acquireHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout hostLayout,
@@ -42,14 +78,6 @@ ImageTransition releaseHostImage(VkImage image, VkImageAspectFlags aspect, VkIma
     t.dstStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
     t.dstAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
     return t;
-}
-
-void computeToCompute(const Gpu& gpu, VkCommandBuffer cmd) {
-    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    gpu.fn.vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0, nullptr);
 }
 
 VkImageAspectFlags aspectOfFormat(VkFormat format) {

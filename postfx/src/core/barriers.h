@@ -8,6 +8,8 @@
 
 #include "core/gpu.h"
 
+#include <vector>
+
 namespace postfx::core {
 
 struct ImageTransition {
@@ -23,15 +25,29 @@ struct ImageTransition {
 
 void transition(const Gpu& gpu, VkCommandBuffer cmd, const ImageTransition& t);
 
+// Barriers collected and recorded as one vkCmdPipelineBarrier (stage masks: the union of theirs).
+class BarrierBatch {
+public:
+    void add(const ImageTransition& t);
+    // A global memory barrier compute -> compute: `srcAccess` (0: execution only) -> `dstAccess`.
+    void computeMemory(VkAccessFlags srcAccess, VkAccessFlags dstAccess);
+    bool empty() const { return images_.empty() && !memory_; }
+    // Records the batch (nothing when empty) and empties it.
+    void record(const Gpu& gpu, VkCommandBuffer cmd);
+
+private:
+    std::vector<VkImageMemoryBarrier> images_;
+    VkPipelineStageFlags src_ = 0, dst_ = 0;
+    bool memory_ = false;
+    VkAccessFlags memorySrc_ = 0, memoryDst_ = 0;
+};
+
 // A host image (in `hostLayout`) about to be accessed by postfx compute passes in `layout`.
 ImageTransition acquireHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout hostLayout,
                                  VkImageLayout layout, VkAccessFlags computeAccess);
 // The same image handed back to the host in `hostLayout` after postfx's compute access.
 ImageTransition releaseHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout layout,
                                  VkImageLayout hostLayout, VkAccessFlags computeAccess);
-
-// Compute shader writes -> compute shader reads (or writes) of the same resources (global barrier).
-void computeToCompute(const Gpu& gpu, VkCommandBuffer cmd);
 
 VkImageAspectFlags aspectOfFormat(VkFormat format);
 

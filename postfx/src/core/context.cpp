@@ -1,8 +1,8 @@
 #include <postfx/context.h>
 
-#include "core/barriers.h"
+#include "core/checks.h"
 #include "core/context_impl.h"
-#include "core/copy_pass.h"
+#include "effects.h"
 
 #include <string>
 
@@ -13,68 +13,24 @@ namespace {
 constexpr uint32_t kMaxFramesInFlight = 8;
 constexpr uint32_t kDescriptorSetsPerFrame = 64;
 
-Status invalid(std::string message) {
-    return {Result::InvalidArgument, std::move(message)};
-}
-
 Status validateCreateInfo(const ContextCreateInfo& info) {
+    using core::invalid;
+    if (info.structSize != sizeof(ContextCreateInfo))
+        return invalid("ContextCreateInfo.structSize " + std::to_string(info.structSize) +
+                       " differs from the library's " + std::to_string(sizeof(ContextCreateInfo)) +
+                       ": the host was compiled with another postfx header or struct packing");
     if (!info.instance) return invalid("ContextCreateInfo.instance is VK_NULL_HANDLE");
     if (!info.physicalDevice) return invalid("ContextCreateInfo.physicalDevice is VK_NULL_HANDLE");
     if (!info.device) return invalid("ContextCreateInfo.device is VK_NULL_HANDLE");
     if (!info.getInstanceProcAddr) return invalid("ContextCreateInfo.getInstanceProcAddr is null");
     if (!info.getDeviceProcAddr) return invalid("ContextCreateInfo.getDeviceProcAddr is null");
     if (info.maxExtent.width == 0 || info.maxExtent.height == 0)
-        return invalid("ContextCreateInfo.maxExtent is " + std::to_string(info.maxExtent.width) + "x" +
-                       std::to_string(info.maxExtent.height) + ": both sides must be > 0");
+        return invalid("ContextCreateInfo.maxExtent is " + core::extentText(info.maxExtent) +
+                       ": both sides must be > 0");
     if (info.framesInFlight == 0 || info.framesInFlight > kMaxFramesInFlight)
         return invalid("ContextCreateInfo.framesInFlight is " + std::to_string(info.framesInFlight) +
                        ": must be in 1.." + std::to_string(kMaxFramesInFlight));
     return Status::success();
-}
-
-bool isColorFormat(VkFormat f) {
-    return f == VK_FORMAT_R16G16B16A16_SFLOAT || f == VK_FORMAT_R32G32B32A32_SFLOAT;
-}
-
-bool isDepthFormat(VkFormat f) {
-    return f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM || f == VK_FORMAT_D24_UNORM_S8_UINT ||
-           f == VK_FORMAT_X8_D24_UNORM_PACK32 || f == VK_FORMAT_D32_SFLOAT_S8_UINT;
-}
-
-std::string extentText(VkExtent2D e) {
-    return std::to_string(e.width) + "x" + std::to_string(e.height);
-}
-
-Status validateImage(const ImageInput& image, const char* name, bool (*formatOk)(VkFormat),
-                     const char* formats, VkExtent2D maxExtent) {
-    const std::string n = std::string("FrameInfo.") + name;
-    if (!image.present()) return invalid(n + ".image is VK_NULL_HANDLE");
-    if (!image.view) return invalid(n + ".view is VK_NULL_HANDLE");
-    if (!formatOk(image.format))
-        return invalid(n + ".format " + std::to_string(image.format) + " is not supported (expected " +
-                       formats + ")");
-    if (image.extent.width == 0 || image.extent.height == 0)
-        return invalid(n + ".extent is " + extentText(image.extent));
-    if (image.extent.width > maxExtent.width || image.extent.height > maxExtent.height)
-        return invalid(n + ".extent " + extentText(image.extent) + " exceeds ContextCreateInfo.maxExtent " +
-                       extentText(maxExtent));
-    if (image.layout == VK_IMAGE_LAYOUT_UNDEFINED || image.layout == VK_IMAGE_LAYOUT_PREINITIALIZED)
-        return invalid(n + ".layout is UNDEFINED/PREINITIALIZED: postfx needs the image's contents");
-    return Status::success();
-}
-
-// `frame` with the fog's steps, jitter, shadow kernel and resolution scale set by `preset`
-// (Context::record and plan).
-FrameInfo withFogPreset(const FrameInfo& frame, FogQuality preset) {
-    FrameInfo resolved = frame;
-    resolved.fog = applyFogQuality(frame.fog, preset);
-    resolved.fog.quality = preset;
-    return resolved;
-}
-
-// A separate output that no effect writes still gets the host's color (postfx.copy).
-bool needsCopy(const FrameInfo& frame, bool fogRuns) {
-    return frame.output.present() && !fogRuns;
 }
 
 }  // namespace
@@ -88,6 +44,25 @@ Status Context::Impl::report(Status status) const {
 void Context::Impl::warn(const std::string& message) const {
     if (info.messageCallback)
         info.messageCallback(MessageSeverity::Warning, message.c_str(), info.messageUserData);
+}
+
+int Context::Impl::effectIndex(std::string_view name) const {
+    for (size_t i = 0; i < effects.size(); ++i)
+        if (name == effects[i]->name()) return int(i);
+    return -1;
+}
+
+void Context::Impl::addEffect(std::unique_ptr<core::Effect> effect) {
+    effects.push_back(std::move(effect));
+    std::vector<const char*> names;
+    std::vector<uint32_t> presets, fallback;
+    for (const auto& e : effects) {
+        names.push_back(e->name());
+        presets.push_back(e->presetCount());
+        fallback.push_back(e->fallbackPreset());
+    }
+    graph.setEffectNames(std::move(names));
+    autoQuality.setEffects(std::move(presets), std::move(fallback));
 }
 
 Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& out) {
@@ -109,13 +84,13 @@ Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& 
     std::vector<VkQueueFamilyProperties> families(familyCount);
     gpu.fn.vkGetPhysicalDeviceQueueFamilyProperties(info.physicalDevice, &familyCount, families.data());
     if (info.queueFamilyIndex >= familyCount)
-        return fail(invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
-                            " is out of range (the device has " + std::to_string(familyCount) +
-                            " families)"));
+        return fail(
+            core::invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
+                          " is out of range (the device has " + std::to_string(familyCount) + " families)"));
     const VkQueueFamilyProperties& family = families[info.queueFamilyIndex];
     if (!(family.queueFlags & VK_QUEUE_COMPUTE_BIT))
-        return fail(invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
-                            " does not support compute"));
+        return fail(core::invalid("ContextCreateInfo.queueFamilyIndex " +
+                                  std::to_string(info.queueFamilyIndex) + " does not support compute"));
 
     if (Status s =
             impl->timer.create(gpu, info.framesInFlight, info.gpuTimings ? family.timestampValidBits : 0);
@@ -128,6 +103,9 @@ Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& 
         impl->arenas.push_back(std::make_unique<core::DescriptorArena>());
         if (Status s = impl->arenas.back()->create(gpu, kDescriptorSetsPerFrame); !s) return fail(s);
     }
+    if (Status s = impl->graph.create(gpu, info.framesInFlight, info.depth); !s) return fail(s);
+    for (std::unique_ptr<core::Effect>& effect : makeEffects(gpu))
+        impl->addEffect(std::move(effect));
     out.reset(new Context(std::move(impl)));
     return Status::success();
 }
@@ -139,122 +117,137 @@ const ContextCreateInfo& Context::createInfo() const {
     return impl_->info;
 }
 
-Status Context::Impl::validateFrame(const FrameInfo& frame) const {
-    if (Status s = validateImage(frame.color, "color", isColorFormat,
-                                 "R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT", info.maxExtent);
-        !s)
-        return s;
-    if (Status s = validateImage(frame.depth, "depth", isDepthFormat, "a depth format", info.maxExtent); !s)
-        return s;
-    if (frame.depth.extent.width != frame.color.extent.width ||
-        frame.depth.extent.height != frame.color.extent.height)
-        return invalid("FrameInfo.depth.extent " + extentText(frame.depth.extent) +
-                       " differs from FrameInfo.color.extent " + extentText(frame.color.extent));
-    if (frame.fog.enabled) return fog::FogPass::validate(frame);
-    return Status::success();
-}
+Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& autoQuality,
+                                   FrameInfo& resolved, core::Frame& out,
+                                   std::vector<AutoUse>* measuring) const {
+    if (Status s = core::checkSharedInputs(frame, info); !s) return s;
+    // Each active effect's preset replaces its knobs before its settings are checked; Auto picks the
+    // preset (reading finished frames' timings, so before the timer starts this frame).
+    resolved = frame;
+    if (measuring) measuring->assign(effects.size(), AutoUse{});
+    for (size_t e = 0; e < effects.size(); ++e) {
+        const core::Effect& effect = *effects[e];
+        if (effect.presetCount() == 0 || !effect.active(frame)) continue;
+        const core::QualityRequest q = effect.quality(frame);
+        if (q.kind == core::QualityRequest::Kind::Custom) continue;
+        uint32_t preset = q.preset;
+        if (q.kind == core::QualityRequest::Kind::Auto) {
+            const core::AutoQualityKey key{int(e), frame.color.extent.width, frame.color.extent.height,
+                                           effect.autoFeatures(frame)};
+            preset = autoQuality.select(key, q.budgetMs, timer);
+            if (measuring) (*measuring)[e] = {key, preset};
+        }
+        effect.applyPreset(resolved, preset);
+    }
+    for (const auto& effect : effects)
+        if (Status s = effect->validate(resolved); !s) return s;
 
-void Context::Impl::buildPlan(const FrameInfo& frame, FramePlan& plan) const {
-    plan = {};
-    const bool fogRuns = fog::FogPass::runs(frame);
-    if (fogRuns) fog::FogPass::plan(frame, fog.get(), info.framesInFlight, plan);
-    if (needsCopy(frame, fogRuns)) plan.passes.push_back(core::CopyPass::plan(frame));
+    graph.begin(out, resolved);
+    for (size_t e = 0; e < effects.size(); ++e) {
+        if (!effects[e]->active(resolved)) continue;
+        core::FrameBuilder builder(graph, out, int(e));
+        if (Status s = effects[e]->declare(builder); !s) return s;
+    }
+    graph.compile(out);
+    return Status::success();
 }
 
 Status Context::plan(const FrameInfo& frame, FramePlan& out) const {
     out = {};
     const Impl& impl = *impl_;
-    // A preset can change the passes and resources (its resolution scale): Auto is planned as the preset
-    // record() would use now (a copy of its state selects; nothing is collected or measured).
-    FogQuality preset = frame.fog.quality;
-    if (preset == FogQuality::Auto) {
-        fog::AutoQuality copy = impl.fogAutoQuality;
-        preset = copy.select(fog::AutoQualityKey::of(frame), frame.fog.autoBudgetMs, impl.timer);
-    }
-    const FrameInfo resolved =
-        fog::FogPass::runs(frame) && preset != FogQuality::Custom ? withFogPreset(frame, preset) : frame;
-    if (Status s = impl.validateFrame(resolved); !s) return impl.report(s);
-    impl.buildPlan(resolved, out);
+    // Auto is planned as the preset record() would use now: a copy of its state selects (nothing is
+    // collected or measured).
+    core::AutoQuality autoQuality = impl.autoQuality;
+    FrameInfo resolved;
+    core::Frame declared;
+    if (Status s = impl.prepareFrame(frame, autoQuality, resolved, declared, nullptr); !s)
+        return impl.report(s);
+    impl.graph.plan(declared, out);
     return Status::success();
 }
 
 Status Context::record(const FrameInfo& frame) {
     Impl& impl = *impl_;
-    if (!frame.commandBuffer) return impl.report(invalid("FrameInfo.commandBuffer is VK_NULL_HANDLE"));
-    if (Status s = validateImage(frame.color, "color", isColorFormat,
-                                 "R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT", impl.info.maxExtent);
-        !s)
+    if (!frame.commandBuffer) return impl.report(core::invalid("FrameInfo.commandBuffer is VK_NULL_HANDLE"));
+    std::vector<Impl::AutoUse> measuring;
+    if (Status s = impl.prepareFrame(frame, impl.autoQuality, impl.resolved, impl.frame, &measuring); !s)
         return impl.report(s);
-
-    // Quality presets replace steps/jitter/shadowKernel/resolutionScale before the checks; Auto picks the
-    // preset (reading finished frames' timings, so before the timer starts this frame).
-    FrameInfo resolved;
-    const FrameInfo* effective = &frame;
-    const fog::AutoQualityKey autoKey = fog::AutoQualityKey::of(frame);
-    const bool fogRuns = fog::FogPass::runs(frame);
-    if (fogRuns && frame.fog.quality != FogQuality::Custom) {
-        FogQuality preset = frame.fog.quality;
-        if (preset == FogQuality::Auto) {
-            if (!impl.timer.enabled() && !impl.warnedAutoWithoutTimings) {
-                impl.warnedAutoWithoutTimings = true;
-                impl.warn(
-                    "fog quality Auto without GPU timings (gpuTimings off or unsupported): using Medium");
-            }
-            preset = impl.fogAutoQuality.select(autoKey, frame.fog.autoBudgetMs, impl.timer);
+    for (const Impl::AutoUse& m : measuring)
+        if (m.preset != ~0u && !impl.timer.enabled() && !impl.warnedAutoWithoutTimings) {
+            impl.warnedAutoWithoutTimings = true;
+            impl.warn(std::string(impl.effects[size_t(m.key.effect)]->name()) +
+                      " quality Auto without GPU timings (gpuTimings off or unsupported): using its fallback "
+                      "preset");
         }
-        resolved = withFogPreset(frame, preset);
-        effective = &resolved;
-    }
-    if (Status s = impl.validateFrame(*effective); !s) return impl.report(s);
 
     core::DescriptorArena& arena = impl.arena(frame.frameIndex);
     if (Status s = arena.beginFrame(); !s) return impl.report(s);
     impl.timer.beginFrame(frame.commandBuffer, frame.frameIndex);
     impl.retirement.collect(frame.frameIndex, impl.info.framesInFlight);
-    if (fogRuns) {
-        if (!impl.fog) impl.fog = std::make_unique<fog::FogPass>();
-        if (Status s = impl.fog->record(impl.gpu, impl.info, arena, impl.timer, impl.retirement, *effective);
-            !s)
-            return impl.report(s);
-        if (frame.fog.quality == FogQuality::Auto)
-            impl.fogAutoQuality.recorded(frame.frameIndex, autoKey, effective->fog.quality);
-    } else {
-        // Off or empty: nothing recorded, and its GPU objects go once the frames in flight are done.
-        impl.retirement.retire(frame.frameIndex, std::move(impl.fog));
-    }
-    if (needsCopy(frame, fogRuns)) {
-        if (Status s = impl.copy.record(impl.gpu, arena, impl.timer, *effective); !s) return impl.report(s);
-    }
+    if (Status s = impl.graph.record(impl.frame, frame.commandBuffer, frame.frameIndex, arena, impl.timer,
+                                     impl.retirement);
+        !s)
+        return impl.report(s);
+    for (const Impl::AutoUse& m : measuring)
+        if (m.preset != ~0u) impl.autoQuality.recorded(frame.frameIndex, m.key, m.preset);
     return Status::success();
 }
 
-Status Context::fogAutoQuality(FogQuality& chosen) const {
-    return impl_->fogAutoQuality.chosen(chosen);
+Status Context::autoQuality(std::string_view effect, uint32_t& preset) const {
+    const int e = impl_->effectIndex(effect);
+    if (e < 0 || impl_->effects[size_t(e)]->presetCount() == 0)
+        return impl_->report(
+            core::invalid("autoQuality: '" + std::string(effect) + "' is not an effect with presets"));
+    return impl_->autoQuality.chosen(e, preset);
 }
 
-std::vector<FogAutoTimings> Context::fogAutoTimings() const {
-    return impl_->fogAutoQuality.timings();
+std::vector<AutoQualityTimings> Context::autoQualityTimings() const {
+    std::vector<AutoQualityTimings> out;
+    for (const auto& [key, ms] : impl_->autoQuality.timings())
+        out.push_back({impl_->effects[size_t(key.effect)]->name(), key.width, key.height, key.features, ms});
+    return out;
 }
 
-Status Context::setFogAutoTimings(const std::vector<FogAutoTimings>& timings) {
-    return impl_->report(impl_->fogAutoQuality.give(timings));
+Status Context::setAutoQualityTimings(const std::vector<AutoQualityTimings>& timings) {
+    std::vector<std::pair<core::AutoQualityKey, std::vector<float>>> given;
+    for (size_t k = 0; k < timings.size(); ++k) {
+        const AutoQualityTimings& t = timings[k];
+        const std::string name = "auto quality timings[" + std::to_string(k) + "]";
+        const int e = impl_->effectIndex(t.effect);
+        if (e < 0 || impl_->effects[size_t(e)]->presetCount() == 0)
+            return impl_->report(
+                core::invalid(name + ".effect: '" + t.effect + "' is not an effect with presets"));
+        const uint32_t presets = impl_->effects[size_t(e)]->presetCount();
+        if (t.presetMs.size() != presets)
+            return impl_->report(core::invalid(name + ".presetMs: " + std::to_string(t.presetMs.size()) +
+                                               " times, " + t.effect + " has " + std::to_string(presets) +
+                                               " presets"));
+        if (t.width == 0 || t.height == 0)
+            return impl_->report(core::invalid(name + ": extent must be at least 1x1"));
+        for (size_t i = 0; i < t.presetMs.size(); ++i)
+            if (!std::isfinite(t.presetMs[i]) || t.presetMs[i] < 0.0f)
+                return impl_->report(core::invalid(name + ".presetMs[" + std::to_string(i) +
+                                                   "]: " + core::numberText(t.presetMs[i]) +
+                                                   " must be finite and >= 0"));
+        given.emplace_back(core::AutoQualityKey{e, t.width, t.height, t.features}, t.presetMs);
+    }
+    impl_->autoQuality.give(given);
+    return Status::success();
 }
 
-Status Context::recordFogNoiseReadback(VkCommandBuffer commandBuffer, VkBuffer buffer, VkDeviceSize offset,
-                                       uint32_t& size) const {
-    const fog::FogNoise* noise = impl_->fog ? impl_->fog->noise() : nullptr;
+VkImageView Context::imageView(ResourceName name, VkImageLayout* layout) const {
+    const core::FrameGraph::HeldImage held = impl_->graph.heldImage(name.value);
+    if (layout) *layout = held.image ? held.layout : VK_IMAGE_LAYOUT_UNDEFINED;
+    return held.image ? held.image->view() : VK_NULL_HANDLE;
+}
+
+Status Context::recordImageReadback(ResourceName name, VkCommandBuffer commandBuffer, VkBuffer buffer,
+                                    VkDeviceSize offset, VkExtent3D& extent, VkDeviceSize& bytes) const {
     if (!commandBuffer)
-        return impl_->report(invalid("recordFogNoiseReadback: commandBuffer is VK_NULL_HANDLE"));
-    if (!buffer) return impl_->report(invalid("recordFogNoiseReadback: buffer is VK_NULL_HANDLE"));
-    if (!noise || !noise->ready())
-        return impl_->report(invalid("recordFogNoiseReadback: no fog noise texture has been generated yet"));
-    size = noise->size();
-    return impl_->report(noise->recordReadback(commandBuffer, buffer, offset));
-}
-
-VkImageView Context::fogNoiseView() const {
-    const fog::FogNoise* noise = impl_->fog ? impl_->fog->noise() : nullptr;
-    return noise && noise->ready() ? noise->view() : VK_NULL_HANDLE;
+        return impl_->report(core::invalid("recordImageReadback: commandBuffer is VK_NULL_HANDLE"));
+    if (!buffer) return impl_->report(core::invalid("recordImageReadback: buffer is VK_NULL_HANDLE"));
+    return impl_->report(
+        impl_->graph.recordReadback(name.value, commandBuffer, buffer, offset, extent, bytes));
 }
 
 Status Context::readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const {

@@ -1,16 +1,17 @@
-// What a postfx::Context holds. Effects reach the device, the per-frame descriptor sets and the pass
-// timer through it.
+// What a postfx::Context holds: the borrowed device, the registered effects, the frame graph with the
+// resources it holds between frames, quality Auto, the pass timer and the per-frame descriptor sets.
+// Nothing here knows an effect by name.
 #pragma once
 
 #include <postfx/context.h>
 
+#include "core/auto_quality.h"
 #include "core/compute_pipeline.h"
-#include "core/copy_pass.h"
+#include "core/effect.h"
+#include "core/frame_graph.h"
 #include "core/gpu.h"
 #include "core/pass_timer.h"
 #include "core/retirement.h"
-#include "fog/fog_auto_quality.h"
-#include "fog/fog_pass.h"
 
 #include <memory>
 #include <vector>
@@ -22,22 +23,33 @@ struct Context::Impl {
     core::Gpu gpu;
     core::PassTimer timer;
     std::vector<std::unique_ptr<core::DescriptorArena>> arenas;  // one per frame in flight
-    std::unique_ptr<fog::FogPass> fog;                           // null while the fog is off
-    fog::AutoQuality fogAutoQuality;                             // FogQuality::Auto's measurements
-    core::CopyPass copy;  // postfx.copy: its pipeline is created on first need and kept
+    std::vector<std::unique_ptr<core::Effect>> effects;          // in composite order
+    core::AutoQuality autoQuality;
+    core::FrameGraph graph;
+    core::Frame frame;   // record()'s declarations, reused from frame to frame
+    FrameInfo resolved;  // record()'s frame with presets applied
     bool warnedAutoWithoutTimings = false;
     core::Retirement retirement;  // objects frames in flight may still use; declared last, freed first
 
+    // Adds an effect after the registered ones (tests add test-only effects; call before recording).
+    void addEffect(std::unique_ptr<core::Effect> effect);
+
     // Sends a failed status to the host's message callback and returns it unchanged.
     Status report(Status status) const;
-    // Everything record() checks in `frame` (quality resolved) but the command buffer.
-    Status validateFrame(const FrameInfo& frame) const;
-    // The plan of `frame` (validated, quality resolved) given what the context holds now. record() takes
-    // the same decisions (FogPass::runs and the fog's own, needsCopy) without building it.
-    void buildPlan(const FrameInfo& frame, FramePlan& plan) const;
     void warn(const std::string& message) const;
 
+    // `frame` checked, each active effect's preset chosen (Auto: by `autoQuality`) and applied into
+    // `resolved`, and the frame declared and compiled into `out`. `measuring` receives, per effect, the
+    // Auto key and preset to report after recording (preset ~0u: none).
+    struct AutoUse {
+        core::AutoQualityKey key;
+        uint32_t preset = ~0u;
+    };
+    Status prepareFrame(const FrameInfo& frame, core::AutoQuality& autoQuality, FrameInfo& resolved,
+                        core::Frame& out, std::vector<AutoUse>* measuring) const;
+
     core::DescriptorArena& arena(uint64_t frameIndex) { return *arenas[frameIndex % arenas.size()]; }
+    int effectIndex(std::string_view name) const;
 };
 
 }  // namespace postfx

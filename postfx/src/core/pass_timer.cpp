@@ -27,31 +27,30 @@ void PassTimer::beginFrame(VkCommandBuffer cmd, uint64_t frameIndex) {
     current_ = static_cast<uint32_t>(frameIndex % slots_.size());
     Slot& slot = slots_[current_];
     slot.frameIndex = frameIndex;
-    slot.passNames.clear();
+    slot.passes.clear();
     if (enabled())
         gpu_->fn.vkCmdResetQueryPool(cmd, pool_, current_ * kMaxPassesPerFrame * 2, kMaxPassesPerFrame * 2);
 }
 
-void PassTimer::beginPass(VkCommandBuffer cmd, const std::string& name) {
+void PassTimer::beginPass(VkCommandBuffer cmd, const std::string& name, int effect, bool autoTimed) {
     if (!enabled()) return;
     Slot& slot = slots_[current_];
-    if (slot.passNames.size() >= kMaxPassesPerFrame) return;  // untimed beyond the range
-    uint32_t query = (current_ * kMaxPassesPerFrame + static_cast<uint32_t>(slot.passNames.size())) * 2;
-    slot.passNames.push_back(name);
+    if (slot.passes.size() >= kMaxPassesPerFrame) return;  // untimed beyond the range
+    uint32_t query = (current_ * kMaxPassesPerFrame + static_cast<uint32_t>(slot.passes.size())) * 2;
+    slot.passes.push_back({name, effect, autoTimed});
     gpu_->fn.vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, query);
 }
 
 void PassTimer::endPass(VkCommandBuffer cmd) {
     if (!enabled()) return;
     const Slot& slot = slots_[current_];
-    if (slot.passNames.empty() || slot.passNames.size() > kMaxPassesPerFrame) return;
-    uint32_t query =
-        (current_ * kMaxPassesPerFrame + static_cast<uint32_t>(slot.passNames.size()) - 1) * 2 + 1;
+    if (slot.passes.empty() || slot.passes.size() > kMaxPassesPerFrame) return;
+    uint32_t query = (current_ * kMaxPassesPerFrame + static_cast<uint32_t>(slot.passes.size()) - 1) * 2 + 1;
     gpu_->fn.vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, query);
 }
 
-Status PassTimer::read(uint64_t frameIndex, std::vector<PassTiming>& out) const {
-    out.clear();
+Status PassTimer::readMs(uint64_t frameIndex, std::vector<double>& ms) const {
+    ms.clear();
     if (!enabled())
         return {Result::Unsupported, "GPU timings are off (gpuTimings) or the queue has no timestamps"};
     const uint32_t slotIndex = static_cast<uint32_t>(frameIndex % slots_.size());
@@ -60,8 +59,8 @@ Status PassTimer::read(uint64_t frameIndex, std::vector<PassTiming>& out) const 
         return {Result::InvalidArgument,
                 "frameIndex " + std::to_string(frameIndex) +
                     ": no timings recorded (never recorded, or overwritten by a newer frame)"};
-    if (slot.passNames.empty()) return Status::success();
-    const uint32_t count = static_cast<uint32_t>(slot.passNames.size()) * 2;
+    if (slot.passes.empty()) return Status::success();
+    const uint32_t count = static_cast<uint32_t>(slot.passes.size()) * 2;
     std::vector<uint64_t> values(count * 2);  // (value, availability) pairs
     VkResult r = gpu_->fn.vkGetQueryPoolResults(
         gpu_->device, pool_, slotIndex * kMaxPassesPerFrame * 2, count, values.size() * sizeof(uint64_t),
@@ -71,12 +70,32 @@ Status PassTimer::read(uint64_t frameIndex, std::vector<PassTiming>& out) const 
     for (uint32_t i = 0; i < count; ++i)
         if (values[i * 2 + 1] == 0)
             return {Result::NotReady, "frame " + std::to_string(frameIndex) + " not finished"};
-    for (size_t p = 0; p < slot.passNames.size(); ++p) {
+    for (size_t p = 0; p < slot.passes.size(); ++p) {
         const uint64_t begin = values[p * 4] & validMask_;
         const uint64_t end = values[p * 4 + 2] & validMask_;
         const uint64_t ticks = (end - begin) & validMask_;  // wraps within the valid bits
-        out.push_back({slot.passNames[p], double(ticks) * nsPerTick * 1e-6});
+        ms.push_back(double(ticks) * nsPerTick * 1e-6);
     }
+    return Status::success();
+}
+
+Status PassTimer::read(uint64_t frameIndex, std::vector<PassTiming>& out) const {
+    out.clear();
+    std::vector<double> ms;
+    if (Status s = readMs(frameIndex, ms); !s) return s;
+    const Slot& slot = slots_[frameIndex % slots_.size()];
+    for (size_t p = 0; p < ms.size(); ++p)
+        out.push_back({slot.passes[p].name, ms[p]});
+    return Status::success();
+}
+
+Status PassTimer::readTagged(uint64_t frameIndex, std::vector<TaggedTiming>& out) const {
+    out.clear();
+    std::vector<double> ms;
+    if (Status s = readMs(frameIndex, ms); !s) return s;
+    const Slot& slot = slots_[frameIndex % slots_.size()];
+    for (size_t p = 0; p < ms.size(); ++p)
+        out.push_back({slot.passes[p].effect, slot.passes[p].autoTimed, ms[p]});
     return Status::success();
 }
 

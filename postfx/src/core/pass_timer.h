@@ -26,17 +26,33 @@ public:
 
     // Starts `frameIndex`: resets its query range in the command buffer and forgets its old passes.
     void beginFrame(VkCommandBuffer cmd, uint64_t frameIndex);
-    // Brackets one pass; calls must pair up and must not nest.
-    void beginPass(VkCommandBuffer cmd, const std::string& name);
+    // Brackets one pass; calls must pair up and must not nest. `effect` (-1: the context's own pass) and
+    // `autoTimed` (counts toward the effect's quality Auto measurement) tag it for readTagged().
+    void beginPass(VkCommandBuffer cmd, const std::string& name, int effect = -1, bool autoTimed = false);
     void endPass(VkCommandBuffer cmd);
 
     Status read(uint64_t frameIndex, std::vector<PassTiming>& out) const;
 
+    struct TaggedTiming {
+        int effect;
+        bool autoTimed;
+        double milliseconds;
+    };
+    // The same timings with their tags.
+    Status readTagged(uint64_t frameIndex, std::vector<TaggedTiming>& out) const;
+
 private:
+    struct Pass {
+        std::string name;
+        int effect;
+        bool autoTimed;
+    };
     struct Slot {
         uint64_t frameIndex = ~0ull;
-        std::vector<std::string> passNames;
+        std::vector<Pass> passes;
     };
+    // Ticks of each pass of `frameIndex` into `ms` [ms].
+    Status readMs(uint64_t frameIndex, std::vector<double>& ms) const;
     const Gpu* gpu_ = nullptr;
     VkQueryPool pool_ = VK_NULL_HANDLE;
     std::vector<Slot> slots_;

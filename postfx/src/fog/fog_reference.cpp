@@ -1,7 +1,8 @@
 // Double-precision CPU reference of the ray-marched fog: the model of docs/effects/fog.md evaluated
 // with a converged midpoint march (no jitter, no early cutoff), multithreaded over rows.
-#include "common/shared.h"
+#include "core/checks.h"
 #include "fog/fog_settings.h"
+#include "fog/fog_shared.h"
 #include "fog/reference_model.h"
 
 #include <postfx/reference.h>
@@ -21,22 +22,13 @@ namespace {
 using glm::dvec3;
 using glm::dvec4;
 
-Status invalid(const std::string& message) {
-    return {Result::InvalidArgument, message};
-}
+using core::allFinite;
+using core::invalid;
 
 Status checkCount(const char* field, size_t count, uint64_t expected, const char* what) {
     if (count == expected) return Status::success();
     return invalid(std::string(field) + ": " + std::to_string(count) + " values, expected " +
                    std::to_string(expected) + " (" + what + ")");
-}
-
-template <typename M>
-bool allFinite(const M& m) {
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r])) return false;
-    return true;
 }
 
 // Rotation-only view: the view matrix with its translation column zeroed (the march is camera-relative).
@@ -57,12 +49,8 @@ Status validate(const FogInputs& in) {
         if (!std::isfinite(in.depth[i]))
             return invalid("FogInputs.depth: value " + std::to_string(i) + " is not finite");
     if (Status s = fog::validateSettings(in.settings); !s) return s;
-    if (Status s = fog::validateLighting(in.sun, in.ambient); !s) return s;
-    const dvec3& p = in.camera.position;
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        return invalid("camera.position: is not finite");
-    if (!allFinite(in.camera.view)) return invalid("camera.view: is not finite");
-    if (!allFinite(in.camera.projection)) return invalid("camera.projection: is not finite");
+    if (Status s = core::checkLighting(in.sun, in.ambient); !s) return s;
+    if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
     if (!allFinite(clipToView(in.camera)))
         return invalid("camera.projection: projection · view rotation is not invertible");
     if (!std::isfinite(in.timeSeconds)) return invalid("FogInputs.timeSeconds: is not finite");

@@ -1,5 +1,7 @@
 #include "fog/fog_settings.h"
 
+#include "core/checks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,21 +11,14 @@
 namespace postfx::fog {
 namespace {
 
-std::string text(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-}
+using core::checkRange;
 
 Status bad(const std::string& field, const std::string& why) {
-    return {Result::InvalidArgument, field + ": " + why};
+    return core::invalid(field + ": " + why);
 }
 
-// Checks lo <= v <= hi (NaN fails); the message names the field and the range.
-Status inRange(const char* field, double v, double lo, double hi) {
-    if (std::isnan(v)) return bad(field, "is NaN");
-    if (v < lo || v > hi) return bad(field, text(v) + " is outside [" + text(lo) + ", " + text(hi) + "]");
-    return Status::success();
+std::string text(double v) {
+    return core::numberText(v);
 }
 
 // The quality presets, the one place their values are written (docs/effects/fog.md#quality-presets).
@@ -55,20 +50,20 @@ float clampedAnisotropy(float g) {
 }
 
 Status validateSettings(const FogSettings& s) {
-    if (Status r = inRange("fog.density", s.density, 0.0, 1e6); !r) return r;
+    if (Status r = checkRange("fog.density", s.density, 0.0, 1e6); !r) return r;
     for (int c = 0; c < 3; ++c)
-        if (Status r = inRange("fog.albedo", s.albedo[c], 0.0, 1.0); !r) return r;
-    if (Status r = inRange("fog.anisotropy", s.anisotropy, -1.0, 1.0); !r) return r;
-    if (Status r = inRange("fog.height_falloff", s.heightFalloff, 0.0, 10.0); !r) return r;
+        if (Status r = checkRange("fog.albedo", s.albedo[c], 0.0, 1.0); !r) return r;
+    if (Status r = checkRange("fog.anisotropy", s.anisotropy, -1.0, 1.0); !r) return r;
+    if (Status r = checkRange("fog.height_falloff", s.heightFalloff, 0.0, 10.0); !r) return r;
     if (!std::isfinite(s.baseHeight)) return bad("fog.base_height", "is not finite");
-    if (Status r = inRange("fog.max_distance", s.maxDistance, 0.0, 1e7); !r) return r;
+    if (Status r = checkRange("fog.max_distance", s.maxDistance, 0.0, 1e7); !r) return r;
     if (s.maxDistance <= 0.0f) return bad("fog.max_distance", "must be > 0");
     if (s.steps < 1 || s.steps > 4096)
         return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
-    if (Status r = inRange("fog.resolution_scale", s.resolutionScale, 0.25, 1.0); !r) return r;
+    if (Status r = checkRange("fog.resolution_scale", s.resolutionScale, 0.25, 1.0); !r) return r;
     if (!std::isfinite(s.autoBudgetMs)) return bad("fog.auto_budget_ms", "is not finite");
     if (s.autoBudgetMs <= 0.0f) return bad("fog.auto_budget_ms", text(s.autoBudgetMs) + " must be > 0");
-    if (Status r = inRange("fog.transmittance_cutoff", s.transmittanceCutoff, 0.0, 1.0); !r) return r;
+    if (Status r = checkRange("fog.transmittance_cutoff", s.transmittanceCutoff, 0.0, 1.0); !r) return r;
     if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
         return bad("fog.shadow_kernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
@@ -77,22 +72,12 @@ Status validateSettings(const FogSettings& s) {
     if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
         return bad("fog.noise.texture_size",
                    std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
-    if (Status r = inRange("fog.noise.tiling", n.tiling, 0.0, 1000.0); !r) return r;
+    if (Status r = checkRange("fog.noise.tiling", n.tiling, 0.0, 1000.0); !r) return r;
     if (n.tiling <= 0.0f) return bad("fog.noise.tiling", "must be > 0");
-    if (Status r = inRange("fog.noise.threshold", n.threshold, 0.0, 1.0); !r) return r;
-    if (Status r = inRange("fog.noise.multiplier", n.multiplier, 0.0, 1e3); !r) return r;
+    if (Status r = checkRange("fog.noise.threshold", n.threshold, 0.0, 1.0); !r) return r;
+    if (Status r = checkRange("fog.noise.multiplier", n.multiplier, 0.0, 1e3); !r) return r;
     for (int c = 0; c < 3; ++c)
-        if (Status r = inRange("fog.noise.wind", n.wind[c], -1e3, 1e3); !r) return r;
-    return Status::success();
-}
-
-Status validateLighting(const SunInput& sun, const glm::vec3& ambient) {
-    for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(sun.toSun[c])) return bad("sun.toSun", "is not finite");
-        if (Status r = inRange("sun.illuminance", sun.illuminance[c], 0.0, 1e7); !r) return r;
-        if (Status r = inRange("ambient", ambient[c], 0.0, 1e7); !r) return r;
-    }
-    if (glm::dot(sun.toSun, sun.toSun) < 1e-12f) return bad("sun.toSun", "is the zero vector");
+        if (Status r = checkRange("fog.noise.wind", n.wind[c], -1e3, 1e3); !r) return r;
     return Status::success();
 }
 
@@ -120,7 +105,7 @@ double fogMediumTop(const FogSettings& s, bool noiseEnabled) {
 
 }  // namespace fog
 
-glm::uvec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale) {
+UVec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale) {
     const double scale = std::isnan(resolutionScale) ? 1.0 : std::clamp(double(resolutionScale), 0.0, 1.0);
     auto axis = [&](uint32_t size) { return std::max(1u, uint32_t(std::ceil(double(size) * scale))); };
     return {axis(width), axis(height)};

@@ -4,7 +4,7 @@
 #include <postfx/fog.h>
 #include <postfx/result.h>
 
-#include "common/shared.h"
+#include "fog/fog_shared.h"
 
 namespace postfx::fog {
 
@@ -13,8 +13,6 @@ constexpr float kMaxHeightExponent = gpu::kMaxHeightExponent;  // -height_fallof
 
 // InvalidArgument naming the field ("fog.density: -1 is negative") for any value out of range or NaN.
 Status validateSettings(const FogSettings& settings);
-// The sun and ambient inputs (finite, non-negative illuminance, non-zero direction).
-Status validateLighting(const SunInput& sun, const glm::vec3& ambient);
 
 // The medium is empty everywhere: density 0, or noise on with multiplier 0 or a threshold at or above the
 // texels' maximum of 1. The fog then records nothing (docs/frame-plan.md) and the reference leaves the

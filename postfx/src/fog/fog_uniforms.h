@@ -4,7 +4,7 @@
 
 #include <postfx/context.h>
 
-#include "common/shared.h"
+#include "fog/fog_shared.h"
 
 namespace postfx::fog {
 

@@ -3,7 +3,7 @@
 // GPU compiler may form differ (by an ulp or so).
 #include "fog/noise_cpu.h"
 
-#include "common/shared.h"
+#include "fog/fog_shared.h"
 
 #include <algorithm>
 #include <cmath>

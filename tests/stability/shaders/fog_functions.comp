@@ -4,7 +4,7 @@
 // for the test to compare against double precision (tests/stability/test_shader_functions.cpp).
 #extension GL_GOOGLE_include_directive : require
 
-#include "common/shared.h"
+#include "fog/fog_shared.h"
 
 layout(local_size_x = 64) in;
 

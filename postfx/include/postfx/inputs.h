@@ -1,0 +1,60 @@
+// The per-frame inputs every effect shares: the camera, the sun, the shadow map and local lights
+// (FrameInfo). Checked once by Context::record and Context::plan, whichever effects run.
+#pragma once
+
+#include <postfx/types.h>
+
+#include <cstdint>
+
+namespace postfx {
+
+// The camera that rendered color and depth.
+struct CameraInput {
+    DVec3 position{0.0};  // world position [m] (double: postfx works camera-relative); finite
+    Mat4 view{1.0f};      // world -> view; only its rotation is used (position gives the translation); finite
+    Mat4 projection{1.0f};  // view -> Vulkan clip, in the context's DepthConvention; finite, invertible
+};
+
+// The sun (or moon): a directional light.
+struct SunInput {
+    Vec3 toSun{0.0f, 1.0f, 0.0f};  // direction toward the sun, not zero (normalised by postfx); finite
+    Vec3 illuminance{0.0f};        // [lux] on a surface facing the sun; each in [0, 1e7]
+};
+
+// The host's sun shadow map. Optional: with no image the sun is unshadowed (visibility 1).
+//
+// A sample is compared with the map where its shadow-clip x, y fall inside [-1, 1] (outside: lit). Its
+// depth z = clip.z / clip.w against the stored depth: inside [0, 1] it is lit when not behind the stored
+// depth (with depthBias toward lit); before the near plane it is lit; beyond the far plane it is in shadow
+// where the texel holds a caster (a stored depth other than the cleared far value, 1 or 0 with reversedZ)
+// and lit where it holds none, so fog under a floating caster with no receiver in the map's range is
+// shadowed (docs/effects/fog.md, "Shadows").
+struct ShadowMapInput {
+    // Depth image (D32_SFLOAT, D16_UNORM, X8_D24_UNORM_PACK32, D24_UNORM_S8_UINT or R32_SFLOAT), usage
+    // SAMPLED, any square or rectangular size.
+    ImageInput image;
+    // World -> shadow clip space: x, y in [-1, 1] map to u, v = (x, y)/2 + 1/2, z/w is the stored depth.
+    DMat4 worldToClip{1.0};  // finite
+    bool reversedZ = false;  // true: larger stored depth is nearer the sun
+    float depthBias = 0.0f;  // added toward "lit" before comparing [shadow depth units]; finite, >= 0
+};
+
+// A local light (point or spot) for the effects that light their medium with local lights (froxel fog,
+// next). Effects that do not read lights ignore them; every light given is checked.
+enum class LightType : uint32_t { Point, Spot };
+
+struct LocalLight {
+    LightType type = LightType::Point;
+    DVec3 position{0.0};                // world position [m]; finite
+    Vec3 direction{0.0f, -1.0f, 0.0f};  // spot: the cone's axis, not zero (normalised by postfx); finite
+    Vec3 intensity{0.0f};               // luminous intensity per RGB channel [cd]; each in [0, 1e9]
+    float range = 100.0f;               // distance beyond which the light is ignored [m]; > 0, finite
+    float sourceRadius = 0.05f;         // guards the inverse square near the light [m]; in (0, range]
+    float innerConeAngle = 0.0f;        // spot: full intensity inside this half angle [rad]; in [0, outer]
+    float outerConeAngle = 0.785398f;   // spot: no light outside this half angle [rad]; in [0, π/2)
+};
+
+// At most this many local lights per frame (FrameInfo::lightCount).
+inline constexpr uint32_t kMaxLocalLights = 256;
+
+}  // namespace postfx

@@ -1,0 +1,55 @@
+// One effect behind the context's boundary (docs/architecture.md, "Effects"). The context holds one
+// instance of each registered effect (postfx/src/effects.cpp, in composite order) and asks it, every
+// frame, for its settings' checks, its quality presets and its declaration: the resources and passes
+// it needs for the frame (core/frame_graph.h). The context derives the frame plan, the barriers and the
+// recorded commands from those declarations; an effect records nothing itself.
+#pragma once
+
+#include <postfx/context.h>
+
+#include <cstdint>
+
+namespace postfx::core {
+
+class FrameBuilder;
+
+// How the frame asks an effect's quality to be chosen.
+struct QualityRequest {
+    enum class Kind { Custom, Preset, Auto };
+    Kind kind = Kind::Custom;  // Custom: the settings as given
+    uint32_t preset = 0;       // Preset: its index, 0 = lowest
+    float budgetMs = 0.0f;     // Auto: GPU time budget of the effect's passes [ms]
+};
+
+class Effect {
+public:
+    virtual ~Effect() = default;
+
+    // "fog": the prefix of its passes and resources in the frame plan and the timings.
+    virtual const char* name() const = 0;
+
+    // Checks the effect's settings in `frame` (the shared inputs are already checked); InvalidArgument
+    // naming the field. Called every frame, whether or not the effect runs.
+    virtual Status validate(const FrameInfo& frame) const = 0;
+
+    // Whether the effect has work in `frame` (enabled, and not empty). An effect that is not active
+    // declares nothing, so it holds nothing.
+    virtual bool active(const FrameInfo& frame) const = 0;
+
+    // Quality presets (core/auto_quality.h), lowest first; none by default.
+    virtual uint32_t presetCount() const { return 0; }
+    virtual QualityRequest quality(const FrameInfo& /*frame*/) const { return {}; }
+    // Sets the knobs preset `preset` sets in `frame`'s copy of the effect's settings.
+    virtual void applyPreset(FrameInfo& /*frame*/, uint32_t /*preset*/) const {}
+    // The preset Auto uses when the context has no GPU timings.
+    virtual uint32_t fallbackPreset() const { return 0; }
+    // Bits of `frame` besides the color extent that change the presets' cost; Auto measures each
+    // combination separately.
+    virtual uint32_t autoFeatures(const FrameInfo& /*frame*/) const { return 0; }
+
+    // Declares the frame's resources and passes into `builder` (frame validated, preset applied, the
+    // effect active). Must not create GPU objects or change the effect: plan() calls it too.
+    virtual Status declare(FrameBuilder& builder) const = 0;
+};
+
+}  // namespace postfx::core

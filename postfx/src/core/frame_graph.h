@@ -1,0 +1,237 @@
+// The frame graph: what a frame's effects declare (resources and passes), compiled into the frame plan
+// and recorded with barriers derived from the declarations (docs/architecture.md, "The frame graph").
+//
+// Each frame the context asks every active effect, in composite order, to declare through a
+// FrameBuilder: the resources it reads and writes (the host's images, views the host lends through
+// settings, images postfx owns, per-frame uniform data) as typed handles, and its passes (a compute
+// pipeline, which resource is bound at which binding and how it is used, the workgroups). compile()
+// then drops every pass whose outputs nothing reads (and a build of a persistent image whose inputs did
+// not change), and adds postfx.copy when a separate output would otherwise stay unwritten. plan() and
+// record() both read that compiled frame, so they cannot disagree.
+//
+// Barriers: the host's images are transitioned in once before the first pass (from whatever the host
+// did, ALL_COMMANDS / MEMORY_WRITE) and back once after the last; between passes a barrier is recorded
+// only where a declared read or write follows a write (or a write follows a read) of the same resource;
+// postfx's own images carry their layout and pending accesses from frame to frame.
+#pragma once
+
+#include <postfx/context.h>
+#include <postfx/frame_plan.h>
+
+#include "core/compute_pipeline.h"
+#include "core/gpu_resources.h"
+#include "core/pass_timer.h"
+#include "core/retirement.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace postfx::core {
+
+inline constexpr uint16_t kNoResource = 0xffff;
+
+// Typed handles of the frame's resources (indices into the frame's declarations).
+struct ImageRef {
+    uint16_t index = kNoResource;
+    bool valid() const { return index != kNoResource; }
+};
+struct BufferRef {
+    uint16_t index = kNoResource;
+    bool valid() const { return index != kNoResource; }
+};
+
+// The identity of a resource postfx owns, across frames and effects: one `inline constexpr` object per
+// resource in its effect's header; compared by address. `name` is the frame plan's ("fog.noise").
+struct ResourceId {
+    const char* name;
+};
+
+// The host's images of FrameInfo.
+enum class HostImage : uint8_t { Color, Depth, Output, ShadowMap };
+
+enum class SamplerKind : uint8_t { NearestClamp, LinearRepeat, LinearClamp };
+
+// How a pass uses a resource bound at a binding.
+enum class Use : uint8_t {
+    StorageRead,       // storage image, read
+    StorageWrite,      // storage image, written; the pass writes every texel later passes read, so an
+                       // owned image's old contents may be discarded
+    StorageReadWrite,  // storage image, read and written
+    Sampled,           // combined image sampler, read
+    BoundOnly,         // combined image sampler bound because the pipeline's layout has it, never read
+    Uniform,           // uniform buffer: this frame's slot
+};
+
+struct Access {
+    uint32_t binding = 0;
+    uint16_t resource = kNoResource;
+    Use use = Use::StorageRead;
+    SamplerKind sampler = SamplerKind::NearestClamp;
+};
+
+struct ResourceDecl {
+    enum class Kind : uint8_t { Host, External, Transient, Persistent, Uniform };
+    Kind kind = Kind::Host;
+    int effect = -1;  // declaring effect; -1: the context
+    const char* name = "";
+    const ResourceId* id = nullptr;  // owned resources
+    HostImage host = HostImage::Color;
+    VkImageView view = VK_NULL_HANDLE;  // external
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    ImageDesc desc;              // owned images
+    uint64_t buildKey = 0;       // persistent images: the inputs their contents were built from
+    uint32_t uniformOffset = 0;  // uniform: its data in Frame::uniformData
+    uint32_t uniformBytes = 0;
+    bool needsBuild = false;  // persistent: no held image with this desc and key (compile())
+    bool held = false;        // a recorded pass uses it (compile())
+};
+
+struct PassDecl {
+    const ComputePipelineDesc* pipeline = nullptr;  // static: pipelines are cached by its address
+    int effect = -1;
+    uint32_t groups[3] = {1, 1, 1};
+    std::array<std::byte, 128> push{};
+    uint32_t pushBytes = 0;
+    uint32_t firstAccess = 0, accessCount = 0;  // in Frame::accesses
+    bool builds = false;                        // writes a persistent image
+    bool live = false;                          // recorded (compile())
+};
+
+// One frame's declarations and their compiled form. Reused from frame to frame (no allocation once warm).
+struct Frame {
+    const FrameInfo* info = nullptr;
+    std::vector<ResourceDecl> resources;
+    std::vector<PassDecl> passes;
+    std::vector<Access> accesses;
+    std::vector<std::byte> uniformData;
+    uint16_t host[4] = {kNoResource, kNoResource, kNoResource, kNoResource};  // by HostImage
+    bool composited = false;       // a pass has written the composite target
+    std::vector<uint8_t> scratch;  // compile()'s
+};
+
+class FrameGraph;
+
+// What an effect declares through; handed to Effect::declare.
+class FrameBuilder {
+public:
+    FrameBuilder(const FrameGraph& graph, Frame& frame, int effect)
+        : graph_(graph), f_(frame), effect_(effect) {}
+
+    const FrameInfo& frame() const { return *f_.info; }
+    uint32_t framesInFlight() const;
+    const DepthConvention& depthConvention() const;  // the context's (ContextCreateInfo::depth)
+
+    // The host's depth and shadow map (invalid when absent).
+    ImageRef host(HostImage image) const { return {f_.host[size_t(image)]}; }
+    // Compositing into color: the image the next composite reads (host color, or the separate output
+    // once an earlier pass has written it) and the one it writes (the output when given, else color).
+    ImageRef compositeSource() const;
+    ImageRef compositeTarget() const;
+    // A view the host lends through settings (e.g. its own noise texture): bound in `layout`, which the
+    // host guarantees; postfx records no barrier for it.
+    ImageRef external(const char* name, VkImageView view, VkImageLayout layout);
+    // An image postfx owns whose contents live only within the frame; kept across frames (recreated when
+    // `desc` changes) while declared, released in the first frame that does not declare it.
+    ImageRef transientImage(const ResourceId& id, const ImageDesc& desc);
+    // An image postfx owns whose contents persist: the passes writing it run only when no image built
+    // from `buildKey` (and `desc`) is held and something reads it this frame.
+    ImageRef persistentImage(const ResourceId& id, const ImageDesc& desc, uint64_t buildKey);
+    // An image another effect declared earlier this frame (invalid if it did not).
+    ImageRef find(const ResourceId& id) const;
+    // Uniform data for this frame: `bytes` copied into a ring of framesInFlight slots.
+    BufferRef uniforms(const ResourceId& id, const void* data, uint32_t bytes);
+
+    // Declares a pass; add its bindings with the calls below before declaring the next pass.
+    FrameBuilder& pass(const ComputePipelineDesc& pipeline, uint32_t x, uint32_t y, uint32_t z);
+    FrameBuilder& bind(uint32_t binding, ImageRef image, Use use,
+                       SamplerKind sampler = SamplerKind::NearestClamp);
+    FrameBuilder& bind(uint32_t binding, BufferRef buffer);
+    FrameBuilder& push(const void* data, uint32_t bytes);  // at most 128 bytes
+
+private:
+    ImageRef ownedImage(const ResourceId& id, const ImageDesc& desc, ResourceDecl::Kind kind, uint64_t key);
+    const FrameGraph& graph_;
+    Frame& f_;
+    int effect_;
+};
+
+class FrameGraph {
+public:
+    FrameGraph() = default;
+    FrameGraph(const FrameGraph&) = delete;
+    FrameGraph& operator=(const FrameGraph&) = delete;
+    ~FrameGraph() { release(); }
+
+    Status create(const Gpu& gpu, uint32_t framesInFlight, const DepthConvention& depth);
+    void setEffectNames(std::vector<const char*> names) { effectNames_ = std::move(names); }
+    void release();
+    uint32_t framesInFlight() const { return framesInFlight_; }
+
+    // Starts `frame`'s declarations: the host's images of `info` (validated).
+    void begin(Frame& frame, const FrameInfo& info) const;
+    // Culls passes, marks the resources recorded passes use, adds postfx.copy where needed.
+    void compile(Frame& frame) const;
+    // The compiled frame as the public plan.
+    void plan(const Frame& frame, FramePlan& out) const;
+    // Creates and releases what the compiled frame needs, then records it: host images in, every live
+    // pass with its barriers, timestamps and dispatch, host images out. Nothing is recorded on error.
+    Status record(Frame& frame, VkCommandBuffer cmd, uint64_t frameIndex, DescriptorArena& arena,
+                  PassTimer& timer, Retirement& retirement);
+
+    // A held persistent image by plan name (built, else null).
+    struct HeldImage {
+        const GpuImage* image = nullptr;
+        VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+        bool pendingWrite = false;
+    };
+    HeldImage heldImage(const char* name) const;
+    Status recordReadback(const char* name, VkCommandBuffer cmd, VkBuffer buffer, VkDeviceSize offset,
+                          VkExtent3D& extent, VkDeviceSize& bytes) const;
+
+    // Objects held now (for tests): owned images, uniform rings and pipelines.
+    size_t heldObjects() const { return images_.size() + buffers_.size() + pipelines_.size(); }
+
+private:
+    friend class FrameBuilder;
+    struct OwnedImage {
+        const ResourceId* id = nullptr;
+        std::unique_ptr<GpuImage> image;
+        VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+        bool pendingWrite = false;    // written since its writes were last made visible
+        bool readSinceWrite = false;  // read since the last write (a write must wait for it)
+        bool built = false;           // persistent: contents built from builtKey
+        uint64_t builtKey = 0;
+        bool used = false;  // declared and held this frame
+    };
+    struct OwnedBuffer {
+        const ResourceId* id = nullptr;
+        std::unique_ptr<GpuBuffer> buffer;
+        VkDeviceSize slotBytes = 0;
+        bool used = false;
+    };
+    struct CachedPipeline {
+        const ComputePipelineDesc* desc = nullptr;
+        int effect = -1;
+        std::unique_ptr<ComputePipeline> pipeline;
+    };
+    const OwnedImage* findImage(const ResourceId* id) const;
+    Status prepare(Frame& frame, uint64_t frameIndex, Retirement& retirement);
+    Status sampler(SamplerKind kind, VkSampler& out);
+
+    const Gpu* gpu_ = nullptr;
+    uint32_t framesInFlight_ = 1;
+    DepthConvention depth_;
+    std::vector<const char*> effectNames_;
+    std::vector<OwnedImage> images_;
+    std::vector<OwnedBuffer> buffers_;
+    std::vector<CachedPipeline> pipelines_;
+    VkSampler samplers_[3] = {};
+    // Per-frame scratch of record(), kept to avoid allocation.
+    std::vector<ComputePipeline*> passPipelines_;
+    std::vector<VkDescriptorSet> passSets_;
+    std::vector<OwnedImage*> resourceImages_;  // by resource index: the owned image, or null
+};
+
+}  // namespace postfx::core

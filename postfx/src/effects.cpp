@@ -1,0 +1,16 @@
+// The registry: one line per effect. The order is the composite order: each effect composites over what
+// the effects before it left in color, attenuating it, so the farthest comes first (sky, then clouds,
+// then the fogs, as they arrive; docs/architecture.md, "Composite order").
+#include "effects.h"
+
+#include "fog/fog_effect.h"
+
+namespace postfx {
+
+std::vector<std::unique_ptr<core::Effect>> makeEffects(const core::Gpu& gpu) {
+    std::vector<std::unique_ptr<core::Effect>> effects;
+    effects.push_back(std::make_unique<fog::FogEffect>(gpu));  // ray-marched fog (docs/effects/fog.md)
+    return effects;
+}
+
+}  // namespace postfx
