@@ -110,6 +110,7 @@ TEST_F(CoreTest, RejectsBadCreateInfoNamingTheField) {
              i.maxExtent = {0, 1080};
          }},
         {"framesInFlight", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 0; }},
+        {"structSize", [](postfx::ContextCreateInfo& i) { i.structSize = 8; }},
         {"framesInFlight", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 99; }},
         {"queueFamilyIndex", [](postfx::ContextCreateInfo& i) { i.queueFamilyIndex = 1000; }},
     };
@@ -160,7 +161,46 @@ TEST_F(CoreTest, RecordValidatesFrameInputs) {
          [](postfx::FrameInfo& f) {
              f.depth.extent = {8, 8};
          }},
+        // Usage flags, formats by name, and the output image: checked whether or not an effect runs.
+        {"FrameInfo.color.usage lacks VK_IMAGE_USAGE_STORAGE_BIT",
+         [](postfx::FrameInfo& f) { f.color.usage = VK_IMAGE_USAGE_SAMPLED_BIT; }},
+        {"FrameInfo.depth.usage lacks VK_IMAGE_USAGE_SAMPLED_BIT",
+         [](postfx::FrameInfo& f) { f.depth.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT; }},
+        {"FrameInfo.color.format VK_FORMAT_R8G8B8A8_UNORM is not supported",
+         [](postfx::FrameInfo& f) { f.color.format = VK_FORMAT_R8G8B8A8_UNORM; }},
+        {"FrameInfo.output is FrameInfo.color", [](postfx::FrameInfo& f) { f.output = f.color; }},
+        {"FrameInfo.output.extent 8x8 differs",
+         [](postfx::FrameInfo& f) {
+             f.output = f.color;
+             f.output.image = reinterpret_cast<VkImage>(uintptr_t(1));
+             f.output.extent = {8, 8};
+         }},
+        {"FrameInfo.output.format VK_FORMAT_R32G32B32A32_SFLOAT differs from FrameInfo.color.format "
+         "VK_FORMAT_R16G16B16A16_SFLOAT",
+         [](postfx::FrameInfo& f) {
+             f.output = f.color;
+             f.output.image = reinterpret_cast<VkImage>(uintptr_t(1));
+             f.output.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+         }},
+        {"FrameInfo.output.usage lacks VK_IMAGE_USAGE_STORAGE_BIT",
+         [](postfx::FrameInfo& f) {
+             f.output = f.color;
+             f.output.image = reinterpret_cast<VkImage>(uintptr_t(1));
+             f.output.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+         }},
+        {"FrameInfo.shadowMap.image.usage lacks VK_IMAGE_USAGE_SAMPLED_BIT",
+         [](postfx::FrameInfo& f) {
+             f.shadowMap.image = f.depth;
+             f.shadowMap.image.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+         }},
+        {"FrameInfo.camera.projection", [](postfx::FrameInfo& f) { f.camera.projection = glm::mat4(0.0f); }},
+        {"FrameInfo.structSize", [](postfx::FrameInfo& f) { f.structSize = sizeof(postfx::FrameInfo) + 16; }},
+        {"FrameInfo.lights is null", [](postfx::FrameInfo& f) { f.lightCount = 1; }},
+        {"FrameInfo.lightCount 257 exceeds", [](postfx::FrameInfo& f) { f.lightCount = 257; }},
     };
+    // A bad light is named with its index.
+    postfx::LocalLight lights[2];
+    lights[1].intensity = glm::vec3(-1.0f);
     std::string error;
     ASSERT_TRUE(host->submitAndWait(
         [&](VkCommandBuffer cmd) {
@@ -172,6 +212,12 @@ TEST_F(CoreTest, RecordValidatesFrameInputs) {
                 EXPECT_EQ(s.code, Result::InvalidArgument) << c.expected;
                 EXPECT_NE(s.message.find(c.expected), std::string::npos) << s.message;
             }
+            postfx::FrameInfo withLights = frame;
+            withLights.commandBuffer = cmd;
+            withLights.lights = lights;
+            withLights.lightCount = 2;
+            postfx::Status bad = context->record(withLights);
+            EXPECT_NE(bad.message.find("FrameInfo.lights[1].intensity"), std::string::npos) << bad.message;
             postfx::FrameInfo f = frame;
             f.commandBuffer = cmd;
             f.frameIndex = 7;

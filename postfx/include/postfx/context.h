@@ -152,6 +152,7 @@ public:
     struct Impl;  // internal; defined in postfx/src/core
 
 private:
+    friend struct ContextAccess;  // postfx's internals (tests add test-only effects through it)
     explicit Context(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };

@@ -52,4 +52,9 @@ struct Context::Impl {
     int effectIndex(std::string_view name) const;
 };
 
+// The context's internals, for postfx's own code and tests (e.g. adding a test-only effect).
+struct ContextAccess {
+    static Context::Impl& of(Context& context) { return *context.impl_; }
+};
+
 }  // namespace postfx
