@@ -107,6 +107,17 @@ struct SunInput {
 };
 
 // The host's sun shadow map. Optional: with no image the sun is unshadowed (visibility 1).
+//
+// Each PCF tap tests the fog sample's shadow depth z = c.z/c.w (c = worldToClip · x) against one texel:
+//   - inside the map's depth range (z in [0, 1]): lit when z - depthBias <= stored (reversed Z:
+//     z + depthBias >= stored);
+//   - beyond the far plane (z > 1; reversed Z: z < 0): in shadow where the texel holds a caster, lit
+//     where it holds the cleared far value (1; reversed Z: 0), so fog under a caster with no receiver
+//     below it inside the map is shadowed;
+//   - before the near plane (z < 0; reversed Z: z > 1): lit.
+// Outside the map's u, v in [0, 1] the sample is lit. So the map's volume must hold every caster (its
+// receivers need not be inside), with texels where nothing was drawn at the cleared far value; fog before
+// the near plane is lit even under a caster that depth clamping flattened onto it.
 struct ShadowMapInput {
     // Depth image (D32_SFLOAT, D16_UNORM or R32_SFLOAT), usage SAMPLED, any square or rectangular size.
     ImageInput image;
