@@ -22,3 +22,8 @@ if(NOT rc EQUAL 0 OR NOT messages STREQUAL "")
     message(FATAL_ERROR "glslang on ${SRC} (warnings are errors):\n${messages}")
 endif()
 file(RENAME "${OUT}.tmp" "${OUT}")
+# glslang names the file it wrote (OUT.tmp) as the depfile's target; the build's output is OUT, and a
+# depfile naming another target leaves OUT out of date with nothing: an edited include did not rebuild.
+file(READ "${DEPFILE}" deps)
+string(REPLACE "${OUT}.tmp:" "${OUT}:" deps "${deps}")
+file(WRITE "${DEPFILE}" "${deps}")

@@ -88,6 +88,41 @@ ShadowFit fitShadowMap(const Scene& scene, uint32_t mapSize) {
             lsHi.z = std::max(lsHi.z, z + margin);
         }
     }
+    // The fog's reach: postfx marches each ray at most max_distance from the camera (the analytic tail
+    // beyond reads no shadow map), so its samples inside the footprint lie in a ball around the camera,
+    // clipped to the camera's side of each plane (nothing behind one is seen). Extend the far side of the
+    // depth range to the farthest such point, so that the fog under a caster with no receiver below it is
+    // compared inside the map. (postfx shadows a sample beyond the far plane under a caster anyway; this
+    // keeps the map the description of all the fog sees.) The near side stays at the casters: nothing
+    // nearer the sun shadows, and postfx lights the fog before the near plane.
+    if (scene.fog.enabled) {
+        const glm::vec3 camera = glm::vec3(view * glm::vec4(scene.camera.position, 1.0f));
+        const float reach = scene.fog.maxDistance;
+        // Distance in the light's xy from the camera to the footprint rectangle: the ball's chord
+        // along the sun inside the footprint reaches down to camera.z - sqrt(reach² - d²).
+        const glm::vec2 nearest = glm::clamp(glm::vec2(camera), glm::vec2(lsLo), glm::vec2(lsHi));
+        const float d = glm::length(glm::vec2(camera) - nearest);
+        if (d < reach) {
+            float fogFar = camera.z - std::sqrt(reach * reach - d * d);
+            for (const Object& o : scene.objects) {
+                if (o.type != ObjectType::Plane) continue;
+                const glm::vec3 n = glm::mat3(view) * o.normal;
+                const glm::vec3 p = glm::vec3(view * glm::vec4(o.position, 1.0f));
+                // The camera's side of the plane is bounded away from the sun (z decreasing) when it is
+                // the side toward the sun: then nothing visible inside the footprint lies farther than
+                // the plane's lowest z over the footprint's corners.
+                const float side = glm::dot(n, camera - p);
+                if (std::abs(n.z) < 1e-4f || side * n.z <= 0.0f) continue;
+                float lowest = kInf;
+                for (int i = 0; i < 4; ++i) {
+                    const float x = (i & 1) ? lsHi.x : lsLo.x, y = (i & 2) ? lsHi.y : lsLo.y;
+                    lowest = std::min(lowest, (glm::dot(n, p) - n.x * x - n.y * y) / n.z);
+                }
+                fogFar = std::max(fogFar, lowest);
+            }
+            lsLo.z = std::min(lsLo.z, std::max(fogFar, zCasterLo - 1e4f) - margin);
+        }
+    }
     // orthoRH_ZO maps view z = -near to depth 0 and z = -far to depth 1.
     const glm::mat4 proj = glm::orthoRH_ZO(lsLo.x, lsHi.x, lsLo.y, lsHi.y, -lsHi.z, -lsLo.z);
     fit.valid = true;

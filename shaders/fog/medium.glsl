@@ -24,23 +24,34 @@ float extinction(vec3 x) {
     return fog.medium.x * heightTerm(fog.heights.x + x.y) * noiseTerm(x);
 }
 
-// Shadow-map visibility: mean of kernel² texel comparisons around the sample (1 outside the map).
+// One PCF tap of the shadow test: whether texel depth `stored` leaves a sample at shadow depth `z` lit.
+// Inside the map's depth range [0, 1] the depth comparison with the bias decides. Beyond the far plane
+// the map cannot tell where along the texel's column its caster is, only that it is nearer the sun than
+// the sample: shadowed wherever the texel holds one (is not the cleared far value), lit where it does not.
+// Before the near plane (handled by the caller) nothing is between the sample and the sun: lit.
+bool shadowTapLit(float z, float stored, bool reversed) {
+    if (reversed) return z < 0.0 ? stored <= 0.0 : z + fog.shadow.x >= stored;
+    return z > 1.0 ? stored >= 1.0 : z - fog.shadow.x <= stored;
+}
+
+// Shadow-map visibility: mean of kernel² texel tests around the sample (1 outside the map's uv or before
+// its near plane).
 float shadowVisibility(vec3 x) {
     if (!fogFlag(kFogFlagShadowMap)) return 1.0;
     vec4 clip = fog.viewToShadow * vec4(x, 1.0);
     vec3 s = clip.xyz / clip.w;
     vec2 uv = s.xy * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || s.z < 0.0 || s.z > 1.0) return 1.0;
+    bool reversed = fogFlag(kFogFlagShadowReversedZ);
+    bool beforeNear = reversed ? !(s.z <= 1.0) : !(s.z >= 0.0);  // NaN (clip.w = 0) too, like the reference
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || beforeNear) return 1.0;
     ivec2 size = textureSize(shadowMap, 0);
     ivec2 center = min(ivec2(uv * vec2(size)), size - 1);
     int r = int(fog.shadow.y);
-    bool reversed = fogFlag(kFogFlagShadowReversedZ);
     float lit = 0.0;
     for (int b = -r; b <= r; ++b) {
         for (int a = -r; a <= r; ++a) {
             float stored = texelFetch(shadowMap, clamp(center + ivec2(a, b), ivec2(0), size - 1), 0).r;
-            bool isLit = reversed ? s.z + fog.shadow.x >= stored : s.z - fog.shadow.x <= stored;
-            lit += isLit ? 1.0 : 0.0;
+            lit += shadowTapLit(s.z, stored, reversed) ? 1.0 : 0.0;
         }
     }
     float taps = float(2 * r + 1);

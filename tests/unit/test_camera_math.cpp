@@ -85,4 +85,57 @@ TEST(CameraMath, ShadowFitCoversEveryFiniteObject) {
     EXPECT_FALSE(demo::fitShadowMap(planesOnly, 2048).valid);
 }
 
+// A floating slab seen from the side, sun straight up: without fog the map's depth range ends under the
+// slab; with fog it reaches down to what the fog's march reaches (max_distance around the camera inside
+// the footprint), and with a ground plane under the camera no farther than the ground.
+TEST(CameraMath, ShadowFitReachesTheFogUnderAFloatingCaster) {
+    demo::Scene scene;
+    scene.sun.direction = {0.0f, 1.0f, 0.0f};
+    demo::Object slab;
+    slab.type = demo::ObjectType::Box;
+    slab.position = {0.0f, 10.0f, 0.0f};
+    slab.halfSize = {5.0f, 0.5f, 5.0f};
+    scene.objects = {slab};
+    scene.camera.position = {0.0f, 2.0f, 30.0f};
+    scene.camera.lookAt = {0.0f, 2.0f, 0.0f};
+    scene.fog.maxDistance = 100.0f;
+    auto depth = [](const demo::ShadowFit& fit, glm::vec3 p) {
+        const glm::vec4 c = fit.viewProj * glm::vec4(p, 1.0f);
+        EXPECT_LE(std::abs(c.x / c.w), 1.0f);  // the point is over the slab's footprint
+        EXPECT_LE(std::abs(c.y / c.w), 1.0f);
+        return c.z / c.w;
+    };
+    const glm::vec3 underSlab(0.0f, 2.0f, 0.0f), deepUnder(4.0f, -60.0f, -4.0f);
+
+    scene.fog.enabled = false;
+    const demo::ShadowFit casters = demo::fitShadowMap(scene, 1024);
+    ASSERT_TRUE(casters.valid);
+    EXPECT_GT(depth(casters, underSlab), 1.0f);  // beyond the far plane: only the slab is in depth
+
+    scene.fog.enabled = true;
+    const demo::ShadowFit fog = demo::fitShadowMap(scene, 1024);
+    EXPECT_EQ(fog.texelWorldSize, casters.texelWorldSize);      // xy stays the casters' footprint
+    EXPECT_GE(depth(fog, glm::vec3(0.0f, 10.5f, 0.0f)), 0.0f);  // the slab's top is still inside
+    EXPECT_LE(depth(fog, underSlab), 1.0f);
+    // Farthest fog inside the footprint: the camera is 25 - margin from it in the light's xy, so the
+    // ball of 100 m reaches about sqrt(100² - 25²) ≈ 97 m below the camera's height.
+    EXPECT_LE(depth(fog, deepUnder), 1.0f);
+    EXPECT_GT(depth(fog, glm::vec3(0.0f, 2.0f - 100.0f, 0.0f)), 1.0f);
+
+    // A ground plane under the camera: the fog sees nothing below it, the range ends there (+ margin).
+    demo::Object ground;
+    ground.position = {0.0f, 0.0f, 0.0f};
+    ground.normal = {0.0f, 1.0f, 0.0f};
+    scene.objects.push_back(ground);
+    const demo::ShadowFit grounded = demo::fitShadowMap(scene, 1024);
+    EXPECT_LE(depth(grounded, glm::vec3(0.0f, 0.0f, 0.0f)), 1.0f);
+    EXPECT_GT(depth(grounded, glm::vec3(0.0f, -5.0f, 0.0f)), 1.0f);
+
+    // A camera whose fog never reaches the footprint adds nothing.
+    scene.objects.pop_back();
+    scene.camera.position = {0.0f, 2.0f, 300.0f};
+    const demo::ShadowFit far = demo::fitShadowMap(scene, 1024);
+    EXPECT_GT(depth(far, underSlab), 1.0f);
+}
+
 }  // namespace

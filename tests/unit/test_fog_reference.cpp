@@ -363,7 +363,7 @@ TEST(FogReference, ShadowVisibilityBoundaryOutsideAndRowOrder) {
     texel = above;
     EXPECT_EQ(shadowVisibility(map, x), 0.0);
     EXPECT_EQ(shadowVisibility(map, {1.5, 0.0, 0.5}), 1.0);  // outside uv
-    EXPECT_EQ(shadowVisibility(map, {0.0, 0.0, 1.5}), 1.0);  // outside z
+    EXPECT_EQ(shadowVisibility(map, {0.0, 0.0, 1.5}), 1.0);  // before the near plane (reversed Z)
     map.depth = {};
     EXPECT_EQ(shadowVisibility(map, x), 1.0);  // no map
 
@@ -375,6 +375,51 @@ TEST(FogReference, ShadowVisibilityBoundaryOutsideAndRowOrder) {
     // Kernel 3 on the 1x2 map: texel indices clamped, 6 of 9 taps on row 0 at v < 0.5.
     tall.kernel = 3;
     EXPECT_DOUBLE_EQ(shadowVisibility(tall, {0.0, -0.5, 0.5}), 3.0 / 9.0);
+}
+
+// The map's depth range: beyond the far plane a tap is in shadow where its texel holds a caster (is not
+// the cleared far value) and lit where it does not, whatever the bias; before the near plane every tap is
+// lit, casters or not; inside [0, 1] the comparison decides (fog.md, "Shadow-map visibility").
+TEST(FogReference, ShadowVisibilityOutsideTheDepthRange) {
+    using postfx::reference::detail::ShadowMap;
+    using postfx::reference::detail::shadowVisibility;
+    float texel = 0.25f;  // a caster
+    ShadowMap map{std::span<const float>(&texel, 1), 1, 1, glm::dmat4(1.0), false, 0.0, 1};
+    const glm::dvec3 beyondFar(0.0, 0.0, 1.5), beforeNear(0.0, 0.0, -0.5), atFar(0.0, 0.0, 1.0);
+    EXPECT_EQ(shadowVisibility(map, beyondFar), 0.0);   // under a caster: shadowed (was lit before)
+    EXPECT_EQ(shadowVisibility(map, beforeNear), 1.0);  // between the sun and the map: lit
+    EXPECT_EQ(shadowVisibility(map, atFar), 0.0);       // inside: 1 > 0.25
+    map.bias = 1.0;                                     // a bias reaching past the caster ...
+    EXPECT_EQ(shadowVisibility(map, atFar), 1.0);       // ... lights it inside the range,
+    EXPECT_EQ(shadowVisibility(map, beyondFar), 0.0);   // not beyond the far plane
+    map.bias = 0.0;
+    texel = 1.0f;  // cleared: nothing along the texel's column
+    EXPECT_EQ(shadowVisibility(map, beyondFar), 1.0);
+    EXPECT_EQ(shadowVisibility(map, beforeNear), 1.0);
+    EXPECT_EQ(shadowVisibility(map, atFar), 1.0);
+    texel = std::nextafter(1.0f, 0.0f);  // the farthest caster the map can hold
+    EXPECT_EQ(shadowVisibility(map, beyondFar), 0.0);
+
+    // Reversed Z: far is 0, near is 1, cleared is 0.
+    map.reversedZ = true;
+    texel = 0.75f;
+    EXPECT_EQ(shadowVisibility(map, {0.0, 0.0, -0.5}), 0.0);  // beyond the far plane, under a caster
+    EXPECT_EQ(shadowVisibility(map, {0.0, 0.0, 1.5}), 1.0);   // before the near plane
+    EXPECT_EQ(shadowVisibility(map, {0.0, 0.0, 0.0}), 0.0);   // inside: 0 < 0.75
+    texel = 0.0f;
+    EXPECT_EQ(shadowVisibility(map, {0.0, 0.0, -0.5}), 1.0);
+    texel = std::nextafter(0.0f, 1.0f);
+    EXPECT_EQ(shadowVisibility(map, {0.0, 0.0, -0.5}), 0.0);
+
+    // Per tap: a 3×1 map of caster, cleared, caster under a 3×3 kernel at the middle texel, beyond the
+    // far plane: the cleared column's 3 taps are lit, the casters' 6 shadowed.
+    for (const bool reversed : {false, true}) {
+        const float caster = reversed ? 0.75f : 0.25f, cleared = reversed ? 0.0f : 1.0f;
+        const float row[3] = {caster, cleared, caster};
+        const ShadowMap wide{row, 3, 1, glm::dmat4(1.0), reversed, 0.0, 3};
+        EXPECT_DOUBLE_EQ(shadowVisibility(wide, {0.0, 0.0, reversed ? -0.5 : 1.5}), 3.0 / 9.0) << reversed;
+        EXPECT_EQ(shadowVisibility(wide, {0.0, 0.0, reversed ? 1.5 : -0.5}), 1.0) << reversed;
+    }
 }
 
 // --- 8. Noise -------------------------------------------------------------------------------------------

@@ -23,12 +23,16 @@ struct SunInput {
 
 // The host's sun shadow map. Optional: with no image the sun is unshadowed (visibility 1).
 //
-// A sample is compared with the map where its shadow-clip x, y fall inside [-1, 1] (outside: lit). Its
-// depth z = clip.z / clip.w against the stored depth: inside [0, 1] it is lit when not behind the stored
-// depth (with depthBias toward lit); before the near plane it is lit; beyond the far plane it is in shadow
-// where the texel holds a caster (a stored depth other than the cleared far value, 1 or 0 with reversedZ)
-// and lit where it holds none, so fog under a floating caster with no receiver in the map's range is
-// shadowed (docs/effects/fog.md, "Shadows").
+// Each PCF tap tests the sample's shadow depth z = c.z/c.w (c = worldToClip · x) against one texel:
+//   - inside the map's depth range (z in [0, 1]): lit when z - depthBias <= stored (reversed Z:
+//     z + depthBias >= stored);
+//   - beyond the far plane (z > 1; reversed Z: z < 0): in shadow where the texel holds a caster, lit
+//     where it holds the cleared far value (1; reversed Z: 0), so fog under a caster with no receiver
+//     below it inside the map is shadowed;
+//   - before the near plane (z < 0; reversed Z: z > 1): lit.
+// Outside the map's u, v in [0, 1] the sample is lit. So the map's volume must hold every caster (its
+// receivers need not be inside), with texels where nothing was drawn at the cleared far value; fog before
+// the near plane is lit even under a caster that depth clamping flattened onto it (docs/effects/fog.md).
 struct ShadowMapInput {
     // Depth image (D32_SFLOAT, D16_UNORM, X8_D24_UNORM_PACK32, D24_UNORM_S8_UINT or R32_SFLOAT), usage
     // SAMPLED, any square or rectangular size.

@@ -66,24 +66,33 @@ double sampleNoise(std::span<const float> texels, uint32_t size, const glm::dvec
     return sum;
 }
 
+// One tap of the shadow test (the GPU's shadowTapLit): inside the map's depth range [0, 1], `z - bias <=
+// stored` (standard Z) or `z + bias >= stored` (reversed Z). Beyond the far plane (z > 1 standard, z < 0
+// reversed) the texel's caster, wherever it is along the column, is nearer the sun than the sample: shadowed
+// when the texel holds one (stored < 1 standard, > 0 reversed: not the cleared far value), lit otherwise.
+// Before the near plane the caller has already returned lit.
+bool shadowTapLit(const ShadowMap& map, double z, double stored) {
+    if (map.reversedZ) return z < 0.0 ? stored <= 0.0 : z + map.bias >= stored;
+    return z > 1.0 ? stored >= 1.0 : z - map.bias <= stored;
+}
+
 // Shadow-map visibility V: c = worldToClip · x_world, uv = c.xy/c.w · 0.5 + 0.5, z = c.z/c.w; outside
-// uv ∈ [0,1]² or z ∉ [0,1] V = 1; otherwise the mean over the kernel × kernel texels around
-// ij = floor(uv · size) (indices clamped to the map) of `z - bias <= stored` (standard Z) or
-// `z + bias >= stored` (reversed Z).
+// uv ∈ [0,1]² or before the near plane (z < 0 standard, z > 1 reversed) V = 1; otherwise the mean of
+// shadowTapLit over the kernel × kernel texels around ij = floor(uv · size) (indices clamped to the map).
 double shadowVisibility(const ShadowMap& map, const glm::dvec3& world) {
     if (map.depth.empty()) return 1.0;
     const glm::dvec4 c = map.worldToClip * glm::dvec4(world, 1.0);
     const double u = c.x / c.w * 0.5 + 0.5, v = c.y / c.w * 0.5 + 0.5, z = c.z / c.w;
     // Written so that NaN (c.w = 0) also lands outside.
-    if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0 && z >= 0.0 && z <= 1.0)) return 1.0;
+    const bool beforeNear = map.reversedZ ? !(z <= 1.0) : !(z >= 0.0);
+    if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0) || beforeNear) return 1.0;
     const int64_t w = map.width, h = map.height, r = (int64_t(map.kernel) - 1) / 2;
     const int64_t i = int64_t(std::floor(u * double(w))), j = int64_t(std::floor(v * double(h)));
     int lit = 0;
     for (int64_t b = -r; b <= r; ++b) {
         for (int64_t a = -r; a <= r; ++a) {
             const int64_t x = std::clamp<int64_t>(i + a, 0, w - 1), y = std::clamp<int64_t>(j + b, 0, h - 1);
-            const double stored = map.depth[size_t(y * w + x)];
-            lit += map.reversedZ ? (z + map.bias >= stored) : (z - map.bias <= stored);
+            lit += shadowTapLit(map, z, map.depth[size_t(y * w + x)]);
         }
     }
     return double(lit) / double(map.kernel * map.kernel);

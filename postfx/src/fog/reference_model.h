@@ -28,8 +28,13 @@ struct ShadowMap {
     uint32_t kernel = 1;  // odd
 };
 
-// V(x) at world position `world`: the mean of the kernel × kernel depth comparisons; 1 outside the map
-// or when there is no map.
+// One tap at shadow depth `z` (c.z/c.w) against texel depth `stored`, for z not before the near plane:
+// inside [0, 1] the biased depth comparison; beyond the far plane lit only where the texel holds no caster
+// (stored is the cleared far value: 1 standard, 0 reversed).
+bool shadowTapLit(const ShadowMap& map, double z, double stored);
+
+// V(x) at world position `world`: the mean of shadowTapLit over the kernel × kernel texels; 1 outside the
+// map's uv, before its near plane, or when there is no map.
 double shadowVisibility(const ShadowMap& map, const glm::dvec3& world);
 
 // Tsun(x) = exp(-τsun), τsun = density · h / (height_falloff · toSunY) when height_falloff · toSunY > 0,
