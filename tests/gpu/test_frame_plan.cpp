@@ -250,7 +250,7 @@ INSTANTIATE_TEST_SUITE_P(
     Committed, FramePlanScenes,
     ::testing::Values(
         // No effects, and a fog of density 0: nothing at all.
-        SceneExpectation{"default.json", kNone, kNone, 0, false},
+        SceneExpectation{"plain.json", kNone, kNone, 0, false},
         SceneExpectation{"fog_zero_density.json", kNone, kNone, 0, false},
         // Valley fog without noise: the march, its 1-byte noise stand-in and two 512-byte uniform slots.
         SceneExpectation{"fog_valley.json", kMarch, kMarch, 1 + 1024, true},

@@ -284,6 +284,16 @@ TEST(DefaultScene, MatchesItsDescription) {
     EXPECT_FALSE(s.fog.enabled);  // no effects.fog
 }
 
+// The host renderer's scene without effects (tests that need no fog use it): shadows on, fog off.
+TEST(SceneFiles, PlainHasNoEffects) {
+    Scene s;
+    std::string error;
+    ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/plain.json", s, error)) << error;
+    EXPECT_TRUE(s.sun.shadows);
+    EXPECT_GE(s.objects.size(), 2u);
+    EXPECT_FALSE(s.fog.enabled);  // no effects.fog
+}
+
 TEST(SceneFiles, LitPlane) {
     Scene s;
     std::string error;
