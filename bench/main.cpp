@@ -10,12 +10,12 @@
 #include "runner.h"
 #include "stats.h"
 
+#include "cli_args.h"
 #include "scene/scene.h"
 
 #include <postfx/fog.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -26,6 +26,8 @@
 #include <vector>
 
 namespace {
+
+namespace cli = demo::cli;
 
 const char* kUsage =
     "usage: postfx-bench [--scenes a,b,...] [--scene-dir DIR] [--size WxH] [--warmup W] [--warmup-ms T]\n"
@@ -67,10 +69,6 @@ const char* kUsage =
     "  --validation           Vulkan validation layer with synchronization validation; any message fails\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
 
-struct UsageError {
-    std::string message;
-};
-
 struct Args {
     std::vector<std::string> scenes = {"fog_default", "fog_height", "fog_shadowed", "fog_valley",
                                        "fog_valley_unskipped"};
@@ -91,163 +89,89 @@ struct Args {
     std::vector<bench::PresetBudget> presetBudgets = bench::defaultPresetBudgets();
 };
 
-bool parseUint(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
-    if (text.empty() || text.front() < '0' || text.front() > '9') return false;
-    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
-    return ec == std::errc() && end == text.data() + text.size() && out >= lo && out <= hi;
-}
-
-bool parseDouble(const std::string& text, double& out) {
-    try {
-        size_t used = 0;
-        out = std::stod(text, &used);
-        return used == text.size() && std::isfinite(out);
-    } catch (const std::exception&) {
-        return false;
-    }
-}
-
-std::vector<std::string> splitList(const std::string& text) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    while (start <= text.size()) {
-        const size_t comma = text.find(',', start);
-        const std::string item =
-            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        if (!item.empty()) items.push_back(item);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-    }
-    return items;
-}
-
 Args parseArgs(int argc, char** argv) {
     Args args;
     bool quick = false;
     bool sizeGiven = false, warmupGiven = false, warmupMsGiven = false, coldGiven = false,
          framesGiven = false, refGiven = false, stepsGiven = false, noiseGiven = false, lengthsGiven = false,
          scalesGiven = false;
-    auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) throw UsageError{std::string(argv[i]) + " needs a value"};
-        return argv[++i];
-    };
-    auto uintList = [](const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
-        std::vector<uint32_t> out;
-        for (const std::string& item : splitList(text)) {
-            uint32_t v = 0;
-            if (!parseUint(item, lo, hi, v))
-                throw UsageError{option + " '" + text + "': expected integers in " + std::to_string(lo) +
-                                 ".." + std::to_string(hi) + ", comma-separated"};
-            out.push_back(v);
-        }
-        if (out.empty()) throw UsageError{option + " is empty"};
-        return out;
+    const auto toFloats = [](const std::vector<double>& values) {
+        return std::vector<float>(values.begin(), values.end());
     };
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
+        const auto value = [&] { return cli::optionValue(argc, argv, i); };
         if (a == "-h" || a == "--help") {
             std::fputs(kUsage, stdout);
             std::exit(0);
         } else if (a == "--scenes") {
-            args.scenes = splitList(value(i));
-            if (args.scenes.empty()) throw UsageError{"--scenes is empty"};
+            args.scenes = cli::splitList(value());
+            if (args.scenes.empty()) throw cli::UsageError{"--scenes is empty"};
         } else if (a == "--scene-dir") {
-            args.sceneDir = value(i);
+            args.sceneDir = value();
         } else if (a == "--size") {
-            const std::string s = value(i);
-            const size_t x = s.find('x');
-            if (x == std::string::npos ||
-                !parseUint(std::string_view(s).substr(0, x), 1, 16384, args.runner.width) ||
-                !parseUint(std::string_view(s).substr(x + 1), 1, 16384, args.runner.height))
-                throw UsageError{"--size '" + s + "': expected WIDTHxHEIGHT, each 1..16384"};
+            cli::sizeOption(value(), 16384, args.runner.width, args.runner.height);
             sizeGiven = true;
         } else if (a == "--warmup") {
-            const std::string s = value(i);
-            if (!parseUint(s, 0, 100000, args.runner.warmup))
-                throw UsageError{"--warmup '" + s + "': expected an integer in 0..100000"};
+            cli::uintOption(a, value(), 0, 100000, args.runner.warmup);
             warmupGiven = true;
         } else if (a == "--warmup-ms") {
-            const std::string s = value(i);
-            if (!parseDouble(s, args.runner.warmupMs) || args.runner.warmupMs < 0 ||
-                args.runner.warmupMs > 1e6)
-                throw UsageError{"--warmup-ms '" + s + "': expected a number of milliseconds in 0..1e6"};
+            args.runner.warmupMs = cli::numberOption(
+                a, value(), [](double v) { return v >= 0 && v <= 1e6; },
+                "a number of milliseconds in 0..1e6");
             warmupMsGiven = true;
         } else if (a == "--cold-warmup-ms") {
-            const std::string s = value(i);
-            if (!parseDouble(s, args.runner.coldWarmupMs) || args.runner.coldWarmupMs < 0 ||
-                args.runner.coldWarmupMs > 1e6)
-                throw UsageError{"--cold-warmup-ms '" + s + "': expected a number of milliseconds in 0..1e6"};
+            args.runner.coldWarmupMs = cli::numberOption(
+                a, value(), [](double v) { return v >= 0 && v <= 1e6; },
+                "a number of milliseconds in 0..1e6");
             coldGiven = true;
         } else if (a == "--frames") {
-            const std::string s = value(i);
-            if (!parseUint(s, 1, 100000, args.runner.frames))
-                throw UsageError{"--frames '" + s + "': expected an integer in 1..100000"};
+            cli::uintOption(a, value(), 1, 100000, args.runner.frames);
             framesGiven = true;
         } else if (a == "--reference-steps") {
-            const std::string s = value(i);
-            if (!parseUint(s, 1, 1u << 20, args.referenceSteps))
-                throw UsageError{"--reference-steps '" + s + "': expected an integer in 1..1048576"};
+            cli::uintOption(a, value(), 1, 1u << 20, args.referenceSteps);
             refGiven = true;
         } else if (a == "--error-stride") {
-            const std::string s = value(i);
-            if (!parseUint(s, 1, 4096, args.errorStride))
-                throw UsageError{"--error-stride '" + s + "': expected an integer in 1..4096"};
+            cli::uintOption(a, value(), 1, 4096, args.errorStride);
         } else if (a == "--texture-rate") {
-            const std::string s = value(i);
-            if (!parseDouble(s, args.textureRate) || !(args.textureRate > 0))
-                throw UsageError{"--texture-rate '" + s + "': expected a number > 0 [GTexel/s]"};
+            args.textureRate = cli::numberOption(
+                a, value(), [](double v) { return v > 0; }, "a number > 0 [GTexel/s]");
         } else if (a == "--out") {
-            args.out = value(i);
+            args.out = value();
         } else if (a == "--steps") {
-            args.steps = uintList(a, value(i), 1, 4096);
+            args.steps = cli::uintListOption(a, value(), 1, 4096);
             stepsGiven = true;
         } else if (a == "--scales") {
-            const std::string text = value(i);
-            args.scales.clear();
-            for (const std::string& item : splitList(text)) {
-                double v = 0;
-                if (!parseDouble(item, v) || v < 0.25 || v > 1.0)
-                    throw UsageError{"--scales '" + text +
-                                     "': expected numbers in [0.25, 1], comma-separated"};
-                args.scales.push_back(float(v));
-            }
-            if (args.scales.empty()) throw UsageError{"--scales is empty"};
+            args.scales = toFloats(cli::numberListOption(
+                a, value(), [](double v) { return v >= 0.25 && v <= 1.0; }, "numbers in [0.25, 1]"));
             scalesGiven = true;
         } else if (a == "--noise-sizes") {
-            args.noiseSizes = uintList(a, value(i), 16, 256);
+            args.noiseSizes = cli::uintListOption(a, value(), 16, 256);
             for (uint32_t n : args.noiseSizes)
                 if (n & (n - 1))
-                    throw UsageError{"--noise-sizes: " + std::to_string(n) + " is not a power of two"};
+                    throw cli::UsageError{"--noise-sizes: " + std::to_string(n) + " is not a power of two"};
             noiseGiven = true;
         } else if (a == "--shadow-kernels") {
-            args.shadowKernels = uintList(a, value(i), 1, 7);
+            args.shadowKernels = cli::uintListOption(a, value(), 1, 7);
             for (uint32_t k : args.shadowKernels)
-                if (k % 2 == 0) throw UsageError{"--shadow-kernels: " + std::to_string(k) + " is not odd"};
+                if (k % 2 == 0)
+                    throw cli::UsageError{"--shadow-kernels: " + std::to_string(k) + " is not odd"};
         } else if (a == "--step-lengths") {
-            const std::string text = value(i);
-            args.stepLengths.clear();
-            for (const std::string& item : splitList(text)) {
-                double v = 0;
-                if (!parseDouble(item, v) || !(v > 0))
-                    throw UsageError{"--step-lengths '" + text +
-                                     "': expected numbers > 0 [m], comma-separated"};
-                args.stepLengths.push_back(float(v));
-            }
-            if (args.stepLengths.empty()) throw UsageError{"--step-lengths is empty"};
+            args.stepLengths = toFloats(cli::numberListOption(
+                a, value(), [](double v) { return v > 0; }, "numbers > 0 [m]"));
             lengthsGiven = true;
         } else if (a == "--preset-scene") {
-            args.presetScene = value(i);
+            args.presetScene = value();
         } else if (a == "--preset-budgets") {
-            const std::string text = value(i);
-            const std::vector<std::string> items = splitList(text);
+            const std::string text = value();
             std::vector<bench::PresetBudget> budgets = bench::defaultPresetBudgets();
-            if (items.size() != budgets.size())
-                throw UsageError{"--preset-budgets '" + text +
-                                 "': expected 4 budgets [ms] (low,medium,high,ultra)"};
-            for (size_t k = 0; k < items.size(); ++k)
-                if (!parseDouble(items[k], budgets[k].ms) || !(budgets[k].ms > 0))
-                    throw UsageError{"--preset-budgets '" + text +
-                                     "': expected numbers > 0 [ms], comma-separated"};
+            if (cli::splitList(text).size() != budgets.size())
+                throw cli::UsageError{"--preset-budgets '" + text +
+                                      "': expected 4 budgets [ms] (low,medium,high,ultra)"};
+            const std::vector<double> ms = cli::numberListOption(
+                a, text, [](double v) { return v > 0; }, "numbers > 0 [ms]");
+            for (size_t k = 0; k < budgets.size(); ++k)
+                budgets[k].ms = ms[k];
             args.presetBudgets = budgets;
         } else if (a == "--no-presets") {
             args.presets = false;
@@ -258,7 +182,7 @@ Args parseArgs(int argc, char** argv) {
         } else if (a == "--validation") {
             args.runner.validation = true;
         } else {
-            throw UsageError{"unknown argument '" + a + "' (see --help)"};
+            throw cli::UsageError{"unknown argument '" + a + "' (see --help)"};
         }
     }
     if (quick) {
@@ -278,7 +202,7 @@ Args parseArgs(int argc, char** argv) {
                                ? "fog_default"
                                : args.scenes.front();
     else if (!std::count(args.scenes.begin(), args.scenes.end(), args.presetScene))
-        throw UsageError{"--preset-scene '" + args.presetScene + "' is not in --scenes"};
+        throw cli::UsageError{"--preset-scene '" + args.presetScene + "' is not in --scenes"};
     if (args.errorStride == 0) args.errorStride = std::max(1u, args.runner.width / 480);
     std::sort(args.steps.begin(), args.steps.end());
     std::sort(args.noiseSizes.begin(), args.noiseSizes.end());
@@ -550,7 +474,7 @@ int main(int argc, char** argv) {
     try {
         const Args args = parseArgs(argc, argv);
         return run(args, commandLine(argc, argv));
-    } catch (const UsageError& e) {
+    } catch (const cli::UsageError& e) {
         std::fprintf(stderr, "postfx-bench: %s\n%s", e.message.c_str(), kUsage);
         return 2;
     } catch (const std::exception& e) {

@@ -1,9 +1,9 @@
 // postfx-demo: the windowed demo. Shows a demo scene (G-buffer, sun + shadow map, lighting, postfx,
 // GPU tonemap) in a GLFW window with a free-flight camera and an ImGui overlay. Without a display it
 // renders the scene headless, as postfx-render does, to out/<scene>.png.
-#include "cli_args.h"
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
+#include "program.h"
 #include "scene/scene.h"
 #include "window/window_app.h"
 
@@ -12,7 +12,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <filesystem>
 #include <string>
 
@@ -20,7 +19,6 @@ namespace cli = demo::cli;
 
 namespace {
 
-constexpr uint32_t kMaxSize = 16384;
 constexpr uint32_t kMaxFrames = 100000000;
 
 const char* kUsage =
@@ -41,46 +39,38 @@ const char* kUsage =
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n"
     "exit status: 0 ok, 1 on any error (one line 'postfx-demo: <message>' on stderr)\n";
 
+const cli::Program kProgram("postfx-demo", kUsage, 1);
+
 struct Args {
-    std::string scene;
-    demo::window::AppOptions window;
-    bool sizeGiven = false;
+    cli::CommonArgs common;           // scene, --size, --frames, --validation
+    demo::window::AppOptions window;  // --size, --frames and --validation copied in
 };
 
 Args parseArgs(int argc, char** argv) {
     Args args;
-    auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) throw cli::UsageError{std::string(argv[i]) + " needs a value"};
-        return argv[++i];
-    };
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--size") {
-            cli::sizeOption(value(i), kMaxSize, args.window.width, args.window.height);
-            args.sizeGiven = true;
-        } else if (a == "--frames") {
-            cli::uintOption(a, value(i), 1, kMaxFrames, args.window.frames);
-        } else if (a == "--no-ui") {
+    args.common.width = args.window.width;
+    args.common.height = args.window.height;
+    args.common.frames = args.window.frames;
+    cli::parseArgs(argc, argv, kMaxFrames, args.common, [&](const std::string& a, const auto& /*next*/) {
+        if (a == "--no-ui") {
             args.window.ui = false;
-        } else if (a == "--validation") {
-            args.window.validation = true;
         } else if (a == "--hold") {
             args.window.hold = true;
-        } else if (a.size() > 1 && a[0] == '-') {
-            throw cli::UsageError{"unknown option '" + a + "' (see --help)"};
-        } else if (args.scene.empty()) {
-            args.scene = a;
         } else {
-            throw cli::UsageError{"more than one scene file given ('" + args.scene + "', '" + a + "')"};
+            return false;
         }
-    }
+        return true;
+    });
+    args.window.width = args.common.width;
+    args.window.height = args.common.height;
+    args.window.frames = args.common.frames;
+    args.window.validation = args.common.validation;
     if (args.window.hold && args.window.frames == 0) throw cli::UsageError{"--hold needs --frames N"};
     return args;
 }
 
 int fail(const std::string& message) {
-    std::fprintf(stderr, "postfx-demo: %s\n", message.c_str());
-    return 1;
+    return kProgram.fail(message);
 }
 
 // GLFW errors: kept quiet while glfwInit decides between window and headless, printed afterwards.
@@ -99,7 +89,8 @@ bool envSet(const char* name) {
 // No display: the same path as postfx-render (Renderer::render, then writeImage's CPU tonemap).
 int renderHeadless(const Args& args, const demo::Scene& scene) {
     namespace fs = std::filesystem;
-    const std::string name = args.scene.empty() ? "default-scene" : fs::path(args.scene).stem().string();
+    const std::string& sceneFile = args.common.scene;
+    const std::string name = sceneFile.empty() ? "default-scene" : fs::path(sceneFile).stem().string();
     std::error_code ec;
     fs::create_directories("out", ec);
     if (ec) return fail("cannot create the directory 'out': " + ec.message());
@@ -109,28 +100,24 @@ int renderHeadless(const Args& args, const demo::Scene& scene) {
     options.width = args.window.width;
     options.height = args.window.height;
     options.frames = std::max(args.window.frames, 1u);
-    demo::HostOptions hostOptions;
-    hostOptions.validation = args.window.validation;
+    auto host = kProgram.createHost(args.window.validation);
+    if (!host) return 1;
     std::string error;
-    auto host = demo::VulkanHost::create(hostOptions, error);
-    if (!host) return fail("Vulkan: " + error);
     {
         auto renderer = demo::Renderer::create(*host, options, error);
         demo::ImageF image;
         if (!renderer || !renderer->render(scene, image, error)) return fail(error);
         if (!demo::writeImage(output.string(), image, scene.camera.ev100, error)) return fail(error);
     }
-    if (size_t n = host->validationMessageCount(); n > 0)
-        return fail(std::to_string(n) + " Vulkan validation message(s), printed above");
+    if (int status = kProgram.validationStatus(*host)) return status;
     std::printf("postfx-demo: no display; rendered %s to %s\n",
-                args.scene.empty() ? "the default scene" : args.scene.c_str(), output.string().c_str());
+                sceneFile.empty() ? "the default scene" : sceneFile.c_str(), output.string().c_str());
     return 0;
 }
 
 int run(const Args& args) {
-    demo::Scene scene = demo::defaultScene();
-    std::string error;
-    if (!args.scene.empty() && !demo::loadSceneFile(args.scene, scene, error)) return fail(error);
+    demo::Scene scene;
+    if (!kProgram.loadScene(args.common.scene, scene)) return 1;
 
     if (!envSet("DISPLAY") && !envSet("WAYLAND_DISPLAY")) return renderHeadless(args, scene);
     glfwSetErrorCallback(onGlfwError);
@@ -152,19 +139,5 @@ int run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        for (int i = 1; i < argc; ++i) {
-            if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-                std::fputs(kUsage, stdout);
-                return 0;
-            }
-        }
-        return run(parseArgs(argc, argv));
-    } catch (const cli::UsageError& e) {
-        return fail(e.message);
-    } catch (const std::exception& e) {
-        return fail(std::string("unexpected error: ") + e.what());
-    } catch (...) {
-        return fail("unexpected error");
-    }
+    return kProgram.main(argc, argv, [&] { return run(parseArgs(argc, argv)); });
 }

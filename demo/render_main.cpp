@@ -1,7 +1,7 @@
 // postfx-render: renders a demo scene headless (G-buffer, sun + shadow map, lighting, postfx) and
 // writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog comes from
 // postfx's CPU reference (Renderer::renderReference) instead of the GPU pass.
-#include "cli_args.h"
+#include "program.h"
 
 #include <nlohmann/json.hpp>
 #include "host/renderer.h"
@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -20,7 +19,6 @@ namespace cli = demo::cli;
 
 namespace {
 
-constexpr uint32_t kMaxSize = 16384;
 constexpr uint32_t kMaxFrames = 100000;
 constexpr uint32_t kDefaultReferenceSteps = 4096;
 constexpr uint32_t kMaxReferenceSteps = 1u << 20;
@@ -48,10 +46,12 @@ const char* kUsage =
     "                     (so --frames 2 shows the steady state, without one-time work)\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
 
+const cli::Program kProgram("postfx-render", kUsage, 2);
+
 struct Args {
-    std::string scene, output;
-    demo::RenderOptions render;
-    bool validation = false;
+    cli::CommonArgs common;  // scene, --size, --frames, --validation
+    std::string output;
+    demo::RenderOptions render;  // --size and --frames copied in
     bool reference = false;
     uint32_t referenceSteps = kDefaultReferenceSteps;
     bool referenceStepsGiven = false;
@@ -60,39 +60,29 @@ struct Args {
 
 Args parseArgs(int argc, char** argv) {
     Args args;
-    auto value = [&](int& i) -> std::string {
-        if (i + 1 >= argc) throw cli::UsageError{std::string(argv[i]) + " needs a value"};
-        return argv[++i];
-    };
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
+    args.common.frames = args.render.frames;
+    cli::parseArgs(argc, argv, kMaxFrames, args.common, [&](const std::string& a, const auto& next) {
         if (a == "-o" || a == "--output") {
-            args.output = value(i);
-        } else if (a == "--size") {
-            cli::sizeOption(value(i), kMaxSize, args.render.width, args.render.height);
-        } else if (a == "--frames") {
-            cli::uintOption(a, value(i), 1, kMaxFrames, args.render.frames);
+            args.output = next();
         } else if (a == "--standard-z") {
             args.render.reversedZ = false;
         } else if (a == "--infinite-far") {
             args.render.infiniteFar = true;
-        } else if (a == "--validation") {
-            args.validation = true;
         } else if (a == "--print-plan") {
             args.printPlan = true;
         } else if (a == "--reference") {
             args.reference = true;
         } else if (a == "--reference-steps") {
-            cli::uintOption(a, value(i), 1, kMaxReferenceSteps, args.referenceSteps);
+            cli::uintOption(a, next(), 1, kMaxReferenceSteps, args.referenceSteps);
             args.referenceStepsGiven = true;
-        } else if (a.size() > 1 && a[0] == '-') {
-            throw cli::UsageError{"unknown option '" + a + "' (see --help)"};
-        } else if (args.scene.empty()) {
-            args.scene = a;
         } else {
-            throw cli::UsageError{"more than one scene file given ('" + args.scene + "', '" + a + "')"};
+            return false;
         }
-    }
+        return true;
+    });
+    args.render.width = args.common.width;
+    args.render.height = args.common.height;
+    args.render.frames = args.common.frames;
     if (args.printPlan) {
         if (!args.output.empty() || args.reference)
             throw cli::UsageError{"--print-plan writes no image: leave out -o and --reference"};
@@ -111,9 +101,8 @@ Args parseArgs(int argc, char** argv) {
     return args;
 }
 
-int fail(const std::string& message, int code = 1) {
-    std::fprintf(stderr, "postfx-render: %s\n", message.c_str());
-    return code;
+int fail(const std::string& message) {
+    return kProgram.fail(message);
 }
 
 // {"passes":[{"name", "effect", "reads", "writes", "groups"}], "resources":[{"name", "effect", "bytes"}],
@@ -150,20 +139,12 @@ int printPlan(demo::VulkanHost& host, const Args& args, const demo::Scene& scene
 }
 
 int run(const Args& args) {
-    demo::Scene scene = demo::defaultScene();
+    demo::Scene scene;
+    if (!kProgram.loadScene(args.common.scene, scene)) return 1;
+    auto host = kProgram.createHost(args.common.validation);
+    if (!host) return 1;
+    if (args.printPlan) return kProgram.validationStatus(*host, printPlan(*host, args, scene));
     std::string error;
-    if (!args.scene.empty() && !demo::loadSceneFile(args.scene, scene, error)) return fail(error);
-
-    demo::HostOptions hostOptions;
-    hostOptions.validation = args.validation;
-    auto host = demo::VulkanHost::create(hostOptions, error);
-    if (!host) return fail("Vulkan: " + error);
-    if (args.printPlan) {
-        const int code = printPlan(*host, args, scene);
-        if (size_t n = host->validationMessageCount(); n > 0)
-            return fail(std::to_string(n) + " Vulkan validation message(s), printed above");
-        return code;
-    }
     {
         auto renderer = demo::Renderer::create(*host, args.render, error);
         if (!renderer) return fail(error);
@@ -184,8 +165,7 @@ int run(const Args& args) {
         }
         if (!demo::writeImage(args.output, image, scene.camera.ev100, error)) return fail(error);
     }
-    if (size_t n = host->validationMessageCount(); n > 0)
-        return fail(std::to_string(n) + " Vulkan validation message(s), printed above");
+    if (int status = kProgram.validationStatus(*host)) return status;
     if (args.reference) {
         std::printf("postfx-render: wrote %s (%ux%u, frame %u with the fog reference) on %s\n",
                     args.output.c_str(), args.render.width, args.render.height, args.render.frames - 1,
@@ -201,19 +181,5 @@ int run(const Args& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        for (int i = 1; i < argc; ++i) {
-            if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
-                std::fputs(kUsage, stdout);
-                return 0;
-            }
-        }
-        return run(parseArgs(argc, argv));
-    } catch (const cli::UsageError& e) {
-        return fail(e.message, 2);
-    } catch (const std::exception& e) {
-        return fail(std::string("unexpected error: ") + e.what());
-    } catch (...) {
-        return fail("unexpected error");
-    }
+    return kProgram.main(argc, argv, [&] { return run(parseArgs(argc, argv)); });
 }

@@ -250,12 +250,14 @@ INSTANTIATE_TEST_SUITE_P(
     Committed, FramePlanScenes,
     ::testing::Values(
         // No effects, and a fog of density 0: nothing at all.
-        SceneExpectation{"default.json", kNone, kNone, 0, false},
+        SceneExpectation{"plain.json", kNone, kNone, 0, false},
         SceneExpectation{"fog_zero_density.json", kNone, kNone, 0, false},
         // Valley fog without noise: the march, its 1-byte noise stand-in and two 512-byte uniform slots.
         SceneExpectation{"fog_valley.json", kMarch, kMarch, 1 + 1024, true},
         // Full fog: noise generated once (128³ bytes), then only the march.
-        SceneExpectation{"fog_default.json", kNoiseAndMarch, kMarch, 128 * 128 * 128 + 1024, true}),
+        SceneExpectation{"fog_default.json", kNoiseAndMarch, kMarch, 128 * 128 * 128 + 1024, true},
+        // The built-in scene (the high preset: full resolution, so no scatter image): the same.
+        SceneExpectation{"default.json", kNoiseAndMarch, kMarch, 128 * 128 * 128 + 1024, true}),
     [](const auto& info) {
         std::string name = info.param.scene;
         return name.substr(0, name.find('.'));

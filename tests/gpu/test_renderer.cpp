@@ -1,5 +1,5 @@
 // The demo host renderer: its shading convention checked against the closed form, depth conventions
-// agreeing, and the default scene against a committed golden image.
+// agreeing, and the default scene and the plain scene (no effects) against committed golden images.
 #include "golden.h"
 #include "gpu_test.h"
 #include "host/renderer.h"
@@ -91,6 +91,12 @@ TEST_F(RendererTest, DepthConventionsRenderTheSameImage) {
 // The default scene against tests/golden/default_scene.exr (tolerance in golden.h).
 TEST_F(RendererTest, DefaultSceneMatchesGolden) {
     expectMatchesGolden(render(demo::defaultScene(), smallOptions(160, 90)), "default_scene");
+}
+
+// The host renderer alone (no effects: G-buffer, shadow map, lighting) against
+// tests/golden/plain_scene.exr.
+TEST_F(RendererTest, PlainSceneMatchesGolden) {
+    expectMatchesGolden(render(load("demo/scenes/plain.json"), smallOptions(160, 90)), "plain_scene");
 }
 
 }  // namespace

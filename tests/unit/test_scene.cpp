@@ -258,19 +258,33 @@ TEST(DefaultScene, ParsesAndEqualsDefaultScene) {
     expectSameScene(loaded, demo::defaultScene());
 }
 
+// The built-in scene shows the fog: height fog shaped by noise, lit by a low sun seen through a colonnade
+// (pillars under a beam) whose shadow map cuts the light into shafts, at a quality preset.
 TEST(DefaultScene, MatchesItsDescription) {
     const Scene s = demo::defaultScene();
     const float elevationDeg = glm::degrees(std::asin(s.sun.direction.y));
-    EXPECT_GE(elevationDeg, 12.0f);
-    EXPECT_LE(elevationDeg, 18.0f);
+    EXPECT_GE(elevationDeg, 8.0f);
+    EXPECT_LE(elevationDeg, 16.0f);
     EXPECT_TRUE(s.sun.shadows);
     EXPECT_GE(s.camera.position.y, 2.5f);
     EXPECT_LE(s.camera.position.y, 4.0f);
-    int planes = 0, pillars = 0, boxes = 0, spheres = 0;
+    // Looking into the light (forward scattering shows the shafts): the sun within 30° of the view's azimuth.
+    const glm::vec3 view = s.camera.lookAt - s.camera.position;
+    const glm::vec2 viewAzimuth = glm::normalize(glm::vec2(view.x, view.z)),
+                    sunAzimuth = glm::normalize(glm::vec2(s.sun.direction.x, s.sun.direction.z));
+    EXPECT_GE(glm::dot(viewAzimuth, sunAzimuth), std::cos(glm::radians(30.0f)));
+    int planes = 0, pillars = 0, beams = 0, boxes = 0, spheres = 0;
     for (const demo::Object& o : s.objects) {
         if (o.type == ObjectType::Plane) ++planes;
         if (o.type == ObjectType::Sphere) ++spheres;
-        if (o.type == ObjectType::Box) ++(o.halfSize.y >= 4.0f * o.halfSize.x ? pillars : boxes);
+        if (o.type == ObjectType::Box) {
+            if (o.halfSize.y >= 4.0f * o.halfSize.x)
+                ++pillars;
+            else if (o.halfSize.x >= 4.0f * o.halfSize.y)
+                ++beams;
+            else
+                ++boxes;
+        }
         if (o.type != ObjectType::Plane) {
             const float distance = glm::length(o.position - s.camera.position);
             EXPECT_GE(distance, 5.0f);
@@ -278,9 +292,29 @@ TEST(DefaultScene, MatchesItsDescription) {
         }
     }
     EXPECT_EQ(planes, 1);
-    EXPECT_GE(pillars, 3);
+    EXPECT_GE(pillars, 5);
+    EXPECT_GE(beams, 1);
     EXPECT_GE(boxes, 2);
     EXPECT_GE(spheres, 1);
+
+    EXPECT_TRUE(s.fog.enabled);
+    EXPECT_TRUE(postfx::validateFogSettings(s.fog).ok());
+    EXPECT_GT(s.fog.density, 0.0f);
+    EXPECT_GT(s.fog.heightFalloff, 0.0f);  // height fog
+    EXPECT_GT(s.fog.anisotropy, 0.0f);     // forward scattering
+    EXPECT_TRUE(s.fog.noise.enabled);
+    // A fixed preset: not Custom, and not Auto (which measures the GPU, so its image is not reproducible).
+    EXPECT_NE(s.fog.quality, postfx::FogQuality::Custom);
+    EXPECT_NE(s.fog.quality, postfx::FogQuality::Auto);
+}
+
+// The host renderer's scene without effects (tests that need no fog use it): shadows on, fog off.
+TEST(SceneFiles, PlainHasNoEffects) {
+    Scene s;
+    std::string error;
+    ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/plain.json", s, error)) << error;
+    EXPECT_TRUE(s.sun.shadows);
+    EXPECT_GE(s.objects.size(), 2u);
     EXPECT_FALSE(s.fog.enabled);  // no effects.fog
 }
 

@@ -430,10 +430,12 @@ TEST(SceneFogFiles, EachCommittedFogSceneLoadsWithFogOn) {
         if (n == "fog_default") {
             EXPECT_TRUE(s.sun.shadows);
             EXPECT_TRUE(s.fog.noise.enabled);
-            // The default scene with fog added: the same camera, sun and objects.
+            // The plain scene with fog added: the same camera, sun and objects.
             Scene withoutFog = s;
             withoutFog.fog = postfx::FogSettings{};
-            EXPECT_EQ(demo::sceneToJson(withoutFog), demo::sceneToJson(demo::defaultScene()));
+            Scene plain;
+            ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/plain.json", plain, error)) << error;
+            EXPECT_EQ(demo::sceneToJson(withoutFog), demo::sceneToJson(plain));
         }
     }
 }
