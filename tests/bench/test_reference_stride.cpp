@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
+#include <string>
 
 namespace {
 
@@ -17,6 +19,10 @@ struct StrideCase {
     const char* scene;
     uint32_t width, height, stride;
 };
+
+void PrintTo(const StrideCase& c, std::ostream* os) {
+    *os << c.scene << " " << c.width << "x" << c.height << " stride " << c.stride;
+}
 
 class ReferenceStride : public ::testing::TestWithParam<StrideCase> {};
 
@@ -65,6 +71,10 @@ TEST_P(ReferenceStride, MatchesTheFullReferenceAtItsPixels) {
 INSTANTIATE_TEST_SUITE_P(Scenes, ReferenceStride,
                          ::testing::Values(StrideCase{"fog_default", 40, 24, 4},
                                            StrideCase{"fog_shadowed", 37, 22, 3},
-                                           StrideCase{"fog_height", 33, 20, 5}));
+                                           StrideCase{"fog_height", 33, 20, 5}),
+                         [](const ::testing::TestParamInfo<StrideCase>& info) {
+                             return std::string(info.param.scene) + "_stride" +
+                                    std::to_string(info.param.stride);
+                         });
 
 }  // namespace

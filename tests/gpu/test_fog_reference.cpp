@@ -6,6 +6,7 @@
 #include "image_compare.h"
 #include "scene/scene.h"
 
+#include <ostream>
 #include <string>
 
 namespace test {
@@ -18,6 +19,11 @@ struct ReferenceCase {
     double maxRelativeRmse;   // GPU with the scene's own settings (one frame, jittered) vs reference
     double maxConvergedRmse;  // GPU at 512 steps without jitter vs reference: the same model
 };
+
+void PrintTo(const ReferenceCase& c, std::ostream* os) {
+    *os << c.scene << " (relative RMSE below " << c.maxRelativeRmse << ", converged below "
+        << c.maxConvergedRmse << ")";
+}
 
 class FogSceneTest : public GpuTest {
 protected:
@@ -101,6 +107,11 @@ struct ScaleCase {
     double maxUpsampledRmse;  // GPU at `scale` vs the full-resolution reference, 512 steps, no jitter
     double maxFractionOff;    // ... of pixels off by more than 5% there
 };
+
+void PrintTo(const ScaleCase& c, std::ostream* os) {
+    *os << c.scene << " at scale " << c.scale << " (relative RMSE below " << c.maxUpsampledRmse
+        << ", fraction off below " << c.maxFractionOff << ")";
+}
 
 class FogResolutionScaleTest : public FogSceneTest, public ::testing::WithParamInterface<ScaleCase> {};
 

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -212,6 +213,10 @@ struct SceneExpectation {
     uint64_t bytes;                                    // postfx's memory
     bool readsShadowMap;
 };
+
+void PrintTo(const SceneExpectation& e, std::ostream* os) {
+    *os << e.scene << " (" << e.bytes << " bytes)";
+}
 
 class FramePlanScenes : public GpuTest, public ::testing::WithParamInterface<SceneExpectation> {};
 

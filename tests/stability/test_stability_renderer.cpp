@@ -9,6 +9,7 @@
 #include "stability_frame.h"
 
 #include <cstdio>
+#include <ostream>
 #include <string>
 
 namespace test {
@@ -20,6 +21,11 @@ struct RendererCase {
     bool infiniteFar = false;
     double tolerance = 3e-3;  // relative, of max(|expected|, 1), per channel
 };
+
+void PrintTo(const RendererCase& c, std::ostream* os) {
+    *os << c.scene << (c.reversedZ ? ", reversed Z" : ", standard Z")
+        << (c.infiniteFar ? ", infinite far plane" : "");
+}
 
 class StabilityRenderer : public GpuTest, public ::testing::WithParamInterface<RendererCase> {};
 

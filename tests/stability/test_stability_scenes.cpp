@@ -9,6 +9,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <ostream>
 #include <string>
 
 namespace test {
@@ -26,6 +27,10 @@ struct SceneCase {
     Expect expect = Expect::Reference;
     VkFormat format = VK_FORMAT_R16G16B16A16_SFLOAT;
 };
+
+void PrintTo(const SceneCase& c, std::ostream* os) {
+    *os << c.name;
+}
 
 class StabilityScene : public GpuTest, public ::testing::WithParamInterface<SceneCase> {
 protected:

@@ -231,7 +231,10 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         R"({"type": "plane", "point": [1.5, -2, 0.1], "normal": [0, 3, 4], "albedo": [0.1, 0.2, 0.3]})",
         R"({"type": "box", "center": [-3, 0.5, 7.25], "half_size": [0.4, 4, 0.4], "albedo": [0.7, 0.2, 0.15]})",
-        R"({"type": "sphere", "center": [0.3, 1e-3, -1e4], "radius": 0.1, "albedo": [1, 1, 1]})"));
+        R"({"type": "sphere", "center": [0.3, 1e-3, -1e4], "radius": 0.1, "albedo": [1, 1, 1]})"),
+    [](const ::testing::TestParamInfo<const char*>& info) {
+        return json::parse(info.param)["type"].get<std::string>();  // plane, box, sphere
+    });
 
 TEST(SceneToJson, FloatsAreWrittenShort) {
     const Parsed p = parse(base());
