@@ -24,9 +24,9 @@ void PrintTo(const StrideCase& c, std::ostream* os) {
     *os << c.scene << " " << c.width << "x" << c.height << " stride " << c.stride;
 }
 
-class ReferenceStride : public ::testing::TestWithParam<StrideCase> {};
+class BenchReferenceStride : public ::testing::TestWithParam<StrideCase> {};
 
-TEST_P(ReferenceStride, MatchesTheFullReferenceAtItsPixels) {
+TEST_P(BenchReferenceStride, MatchesTheFullReferenceAtItsPixels) {
     const StrideCase c = GetParam();
     std::string error;
     demo::HostOptions hostOptions;
@@ -68,7 +68,7 @@ TEST_P(ReferenceStride, MatchesTheFullReferenceAtItsPixels) {
     EXPECT_EQ(host->validationMessageCount(), 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ReferenceStride,
+INSTANTIATE_TEST_SUITE_P(Scenes, BenchReferenceStride,
                          ::testing::Values(StrideCase{"fog_default", 40, 24, 4},
                                            StrideCase{"fog_shadowed", 37, 22, 3},
                                            StrideCase{"fog_height", 33, 20, 5}),

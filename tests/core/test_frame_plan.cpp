@@ -1,11 +1,10 @@
 // The frame plan (docs/frame-plan.md): exact pass lists and memory totals on committed scenes, the
 // recorded passes equal to the plan, nothing created or dispatched for an off or empty fog (counted at the
-// Vulkan calls themselves), memory released when the need goes away, empty-space skipping against the
-// un-skipped march, and the demo host drawing its shadow map only when something reads it.
+// Vulkan calls themselves), memory released when the need goes away. Empty-space skipping:
+// tests/fog/test_fog_empty_space.cpp; the demo drawing its shadow map only when read: tests/demo.
 #include "fog_harness.h"
 #include "gpu_test.h"
 #include "host/renderer.h"
-#include "image_compare.h"
 #include "scene/scene.h"
 
 #include <postfx/postfx.h>
@@ -75,7 +74,7 @@ std::vector<std::string> passNames(const postfx::FramePlan& plan) {
     return names;
 }
 
-class FramePlanTest : public GpuTest {
+class CoreFramePlanTest : public GpuTest {
 protected:
     void SetUp() override {
         GpuTest::SetUp();
@@ -129,7 +128,7 @@ protected:
 // Fog off, density 0, noise threshold 1 or multiplier 0: no pipeline, no memory, no dispatch, the color
 // unchanged; then a real fog creates them, and going back to an empty medium frees all its memory once the
 // frames in flight are done.
-TEST_F(FramePlanTest, OffOrEmptyFogCreatesNothingAndReleasesWhatItHeld) {
+TEST_F(CoreFramePlanTest, OffOrEmptyFogCreatesNothingAndReleasesWhatItHeld) {
     postfx::ContextCreateInfo info = hostHandles();
     info.getDeviceProcAddr = countingDeviceProcAddr;
     std::unique_ptr<postfx::Context> context;
@@ -182,7 +181,7 @@ TEST_F(FramePlanTest, OffOrEmptyFogCreatesNothingAndReleasesWhatItHeld) {
 
 // A separate output that no effect writes gets the host's color through postfx.copy; with a fog, the fog
 // writes it and there is no copy.
-TEST_F(FramePlanTest, SeparateOutputWithoutEffectsIsACopy) {
+TEST_F(CoreFramePlanTest, SeparateOutputWithoutEffectsIsACopy) {
     std::unique_ptr<postfx::Context> context;
     ASSERT_TRUE(createContext(context).ok());
     FogHarnessImages separate = images;
@@ -218,9 +217,9 @@ void PrintTo(const SceneExpectation& e, std::ostream* os) {
     *os << e.scene << " (" << e.bytes << " bytes)";
 }
 
-class FramePlanScenes : public GpuTest, public ::testing::WithParamInterface<SceneExpectation> {};
+class CoreFramePlanScenes : public GpuTest, public ::testing::WithParamInterface<SceneExpectation> {};
 
-TEST_P(FramePlanScenes, ExactPassesAndMemory) {
+TEST_P(CoreFramePlanScenes, ExactPassesAndMemory) {
     const SceneExpectation& e = GetParam();
     demo::Scene scene;
     std::string error;
@@ -252,7 +251,7 @@ TEST_P(FramePlanScenes, ExactPassesAndMemory) {
 
 const std::vector<std::string> kNone, kMarch{"fog.raymarch"}, kNoiseAndMarch{"fog.noise", "fog.raymarch"};
 INSTANTIATE_TEST_SUITE_P(
-    Committed, FramePlanScenes,
+    Committed, CoreFramePlanScenes,
     ::testing::Values(
         // No effects, and a fog of density 0: nothing at all.
         SceneExpectation{"default.json", kNone, kNone, 0, false},
@@ -265,88 +264,6 @@ INSTANTIATE_TEST_SUITE_P(
         std::string name = info.param.scene;
         return name.substr(0, name.find('.'));
     });
-
-// ---- empty-space skipping on the valley scene ----
-
-class EmptySpaceTest : public GpuTest {
-protected:
-    demo::ImageF render(const demo::Scene& scene, bool reference = false) {
-        std::string error;
-        demo::RenderOptions options;
-        options.width = 64;
-        options.height = 36;
-        options.shadowMapSize = 256;
-        auto renderer = demo::Renderer::create(*host, options, error);
-        EXPECT_TRUE(renderer) << error;
-        demo::ImageF image;
-        if (!renderer) return image;
-        if (reference) {
-            EXPECT_TRUE(renderer->renderReference(scene, image, error, scene.fog.steps)) << error;
-        } else {
-            EXPECT_TRUE(renderer->render(scene, image, error)) << error;
-        }
-        return image;
-    }
-    demo::Scene valley(uint32_t steps) {
-        demo::Scene scene;
-        std::string error;
-        EXPECT_TRUE(demo::loadSceneFile(kSourceDir + "/demo/scenes/fog_valley.json", scene, error)) << error;
-        scene.fog.steps = steps;
-        scene.fog.jitter = false;
-        scene.fog.transmittanceCutoff = 0.0f;
-        return scene;
-    }
-};
-
-// The skipped march against the un-skipped one, both converged (256 steps): the same image within the
-// march's own error; and the skipped march against the double-precision reference that skips the same way
-// (same step count, so the same samples).
-TEST_F(EmptySpaceTest, SkippingLeavesTheValleyImageUnchanged) {
-    demo::Scene skipped = valley(256);
-    demo::Scene full = skipped;
-    full.fog.skipEmptySpace = false;
-    const demo::ImageF a = render(skipped), b = render(full);
-    const ImageStats d = compareImages(a.rgba, b.rgba, a.width, a.height, 0.01, 1.0);
-    std::printf("[ empty space ] skipped vs un-skipped, 256 steps: %s\n", d.summary().c_str());
-    EXPECT_LT(d.relativeRmse, 2e-3);
-
-    demo::Scene few = valley(16);
-    const demo::ImageF gpu16 = render(few), ref16 = render(few, true);
-    const ImageStats r = compareImages(gpu16.rgba, ref16.rgba, gpu16.width, gpu16.height, 0.01, 1.0);
-    std::printf("[ empty space ] GPU vs reference, 16 steps: relative RMSE %.3g%%\n", 100.0 * r.relativeRmse);
-    EXPECT_LT(r.relativeRmse, 2e-3);
-    // At 16 steps the skipped march is much nearer the converged image than the un-skipped one.
-    demo::Scene fewFull = few;
-    fewFull.fog.skipEmptySpace = false;
-    const double skippedError = compareImages(gpu16.rgba, a.rgba, a.width, a.height, 0.01, 1.0).relativeRmse;
-    const double fullError =
-        compareImages(render(fewFull).rgba, a.rgba, a.width, a.height, 0.01, 1.0).relativeRmse;
-    std::printf("[ empty space ] 16 steps against converged: skipped %.3g%%, un-skipped %.3g%%\n",
-                100.0 * skippedError, 100.0 * fullError);
-    EXPECT_LT(skippedError, fullError);
-}
-
-// The demo host draws its shadow map only when something reads it: with no sunlight neither its lighting
-// nor postfx's fog (plan) reads it.
-TEST_F(EmptySpaceTest, DemoDrawsTheShadowMapOnlyWhenRead) {
-    std::string error;
-    demo::RenderOptions options;
-    options.width = 32;
-    options.height = 18;
-    options.shadowMapSize = 256;
-    auto renderer = demo::Renderer::create(*host, options, error);
-    ASSERT_TRUE(renderer) << error;
-    demo::Scene scene = valley(8);
-    demo::ImageF image;
-    ASSERT_TRUE(renderer->render(scene, image, error)) << error;
-    EXPECT_TRUE(renderer->shadowMap().enabled);
-    scene.sun.illuminance = glm::vec3(0.0f);
-    postfx::FramePlan plan;
-    ASSERT_TRUE(renderer->plan(scene, 1, plan, error)) << error;
-    EXPECT_FALSE(plan.reads("host.shadow_map"));
-    ASSERT_TRUE(renderer->render(scene, image, error)) << error;
-    EXPECT_FALSE(renderer->shadowMap().enabled);
-}
 
 }  // namespace
 }  // namespace test

@@ -56,7 +56,7 @@ std::vector<float> unpackHalf(const demo::GpuBuffer& buffer, size_t count) {
     return out;
 }
 
-class BaselineTest : public GpuTest {
+class BenchBaselineTest : public GpuTest {
 protected:
     void SetUp() override {
         GpuTest::SetUp();
@@ -198,10 +198,10 @@ protected:
 // `which` over its HDR image with the inputs the renderer gives postfx for `scene` (camera, sun, ambient,
 // shadow map when drawn, scene.fog; the fog's noise texture when `noise`), reads the result back and
 // compares it with `expected`. Returns the relative RMSE.
-double BaselineTest::runOnRenderer(demo::Renderer& renderer, const demo::RenderOptions& options,
-                                   const demo::Scene& hostScene, const demo::Scene& scene,
-                                   bench::Baseline which, float stepLength, bool noise,
-                                   const demo::ImageF& expected) {
+double BenchBaselineTest::runOnRenderer(demo::Renderer& renderer, const demo::RenderOptions& options,
+                                        const demo::Scene& hostScene, const demo::Scene& scene,
+                                        bench::Baseline which, float stepLength, bool noise,
+                                        const demo::ImageF& expected) {
     std::string error;
     const VkExtent2D extent{options.width, options.height};
     const size_t values = size_t(extent.width) * extent.height * 4;
@@ -281,7 +281,7 @@ demo::RenderOptions smallRender() {
     return options;
 }
 
-TEST_F(BaselineTest, RiemannConvergesToPostfxAndSeedDoesNot) {
+TEST_F(BenchBaselineTest, RiemannConvergesToPostfxAndSeedDoesNot) {
     demo::Scene scene;
     std::string error;
     ASSERT_TRUE(demo::loadSceneFile(kSourceDir + "/demo/scenes/fog_homogeneous.json", scene, error)) << error;
@@ -321,7 +321,7 @@ TEST_F(BaselineTest, RiemannConvergesToPostfxAndSeedDoesNot) {
 // postfx at 512 steps. postfx runs in the baseline's frame too, with density 1e-30 /m: not an empty medium
 // (density 0 would retire the fog and its noise texture, docs/frame-plan.md), so it keeps its noise
 // texture alive for Context::fogNoiseView, while the color it writes rounds to the un-fogged one.
-TEST_F(BaselineTest, ShadowMapAndNoiseInputsMatchPostfx) {
+TEST_F(BenchBaselineTest, ShadowMapAndNoiseInputsMatchPostfx) {
     for (const char* name : {"fog_shadowed.json", "fog_noise.json"}) {
         SCOPED_TRACE(name);
         demo::Scene scene;
@@ -359,7 +359,7 @@ TEST_F(BaselineTest, ShadowMapAndNoiseInputsMatchPostfx) {
 // Homogeneous medium, color 0, ambient 0: seed-as-written gives out = L·(1 - T) with
 // L = E·pSeed(cosθ, g)·σ·Δ·N and T = exp(-σΔ)^N, N = 20 samples. With the sun exactly along (or against)
 // the centre pixel's ray, cosθ = ±1 and the seed's phase is 0 for every g.
-TEST_F(BaselineTest, SeedPhaseMatchesClosedFormAndVanishesAtCosinePlusMinusOne) {
+TEST_F(BenchBaselineTest, SeedPhaseMatchesClosedFormAndVanishesAtCosinePlusMinusOne) {
     const uint32_t ci = kWidth / 2, cj = kHeight / 2;
     for (const float g : {-0.9f, 0.0f, 0.5f, 0.9f}) {
         for (const double sign : {1.0, -1.0}) {
@@ -405,7 +405,7 @@ TEST_F(BaselineTest, SeedPhaseMatchesClosedFormAndVanishesAtCosinePlusMinusOne) 
 
 // ---- both composites, in closed form ----
 
-TEST_F(BaselineTest, CompositesMatchClosedForm) {
+TEST_F(BenchBaselineTest, CompositesMatchClosedForm) {
     postfx::FrameInfo frame = homogeneousFrame();
     frame.ambient = {30.0f, 20.0f, 10.0f};
     const glm::vec4 background(100.0f, 50.0f, 25.0f, 0.25f);
@@ -444,7 +444,7 @@ TEST_F(BaselineTest, CompositesMatchClosedForm) {
 }
 
 // Bad inputs are rejected with a message, nothing recorded.
-TEST_F(BaselineTest, RejectsBadStepLength) {
+TEST_F(BenchBaselineTest, RejectsBadStepLength) {
     postfx::FrameInfo frame = homogeneousFrame();
     frame.color = {VK_NULL_HANDLE,
                    VK_NULL_HANDLE,

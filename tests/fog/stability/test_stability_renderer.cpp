@@ -1,8 +1,8 @@
 // Hard cases through the demo's host renderer on whole scenes (docs/stability.md, "Whole scenes"): each
-// committed scene in tests/stability/scenes is rendered by demo::Renderer (G-buffer, shadow map, lighting,
-// then postfx, as a host would) and by its CPU reference path (the same frame with postfx's fog replaced by
-// the double-precision reference with the scene's step count). Asserts: no NaN or Inf, nothing beyond
-// RGBA16F's largest finite value, and agreement with the reference clamped to that range.
+// committed scene in tests/fog/stability/scenes is rendered by demo::Renderer (G-buffer, shadow map,
+// lighting, then postfx, as a host would) and by its CPU reference path (the same frame with postfx's fog
+// replaced by the double-precision reference with the scene's step count). Asserts: no NaN or Inf, nothing
+// beyond RGBA16F's largest finite value, and agreement with the reference clamped to that range.
 #include "gpu_test.h"
 #include "host/renderer.h"
 #include "scene/scene.h"
@@ -16,7 +16,7 @@ namespace test {
 namespace {
 
 struct RendererCase {
-    const char* scene;  // under tests/stability/scenes
+    const char* scene;  // under tests/fog/stability/scenes
     bool reversedZ = true;
     bool infiniteFar = false;
     double tolerance = 3e-3;  // relative, of max(|expected|, 1), per channel
@@ -27,13 +27,13 @@ void PrintTo(const RendererCase& c, std::ostream* os) {
         << (c.infiniteFar ? ", infinite far plane" : "");
 }
 
-class StabilityRenderer : public GpuTest, public ::testing::WithParamInterface<RendererCase> {};
+class FogStabilityRenderer : public GpuTest, public ::testing::WithParamInterface<RendererCase> {};
 
-TEST_P(StabilityRenderer, FiniteAndWithinToleranceOfTheReference) {
+TEST_P(FogStabilityRenderer, FiniteAndWithinToleranceOfTheReference) {
     const RendererCase& c = GetParam();
     demo::Scene scene;
     std::string error;
-    const std::string path = std::string(POSTFX_SOURCE_DIR) + "/tests/stability/scenes/" + c.scene;
+    const std::string path = std::string(POSTFX_SOURCE_DIR) + "/tests/fog/stability/scenes/" + c.scene;
     ASSERT_TRUE(demo::loadSceneFile(path, scene, error)) << error;
     // The scenes' fog marches without jitter or early cutoff, so the reference with the same step count
     // samples the same points.
@@ -76,7 +76,7 @@ std::string caseName(const ::testing::TestParamInfo<RendererCase>& info) {
     return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, StabilityRenderer, ::testing::ValuesIn(kCases), caseName);
+INSTANTIATE_TEST_SUITE_P(Scenes, FogStabilityRenderer, ::testing::ValuesIn(kCases), caseName);
 
 }  // namespace
 }  // namespace test

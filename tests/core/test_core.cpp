@@ -5,8 +5,8 @@
 #include "core/compute_pipeline.h"
 #include "core/gpu_resources.h"
 #include "core/pass_timer.h"
+#include "core_test_shaders_spirv.h"
 #include "gpu_test.h"
-#include "gpu_tests_spirv.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -212,7 +212,7 @@ TEST_F(CoreTest, ComputeHelpersProduceExactResults) {
     const VkSpecializationMapEntry spec[] = {{0, 0, sizeof(float)}};
     postfx::core::ComputePipelineDesc pd;
     pd.name = "test.affine";
-    pd.spirv = test_spirv::core_affine_comp;
+    pd.spirv = core_test_spirv::core_affine_comp;
     pd.bindings = bindings;
     pd.pushConstantBytes = 12;
     pd.specialization = spec;
@@ -314,7 +314,7 @@ TEST_F(CoreTest, PipelineCreationRejectsBadDescriptions) {
     postfx::Status s = pipeline.create(gpu, pd);
     EXPECT_EQ(s.code, Result::InvalidArgument);
     EXPECT_NE(s.message.find("test.empty"), std::string::npos);
-    pd.spirv = test_spirv::core_affine_comp;
+    pd.spirv = core_test_spirv::core_affine_comp;
     pd.pushConstantBytes = 256;
     EXPECT_EQ(pipeline.create(gpu, pd).code, Result::InvalidArgument);
     EXPECT_FALSE(pipeline.valid());

@@ -13,21 +13,21 @@ float depthAt(const glm::mat4& proj, float d) {
     return clip.z / clip.w;
 }
 
-TEST(CameraMath, StandardZMapsNearToZeroFarToOne) {
+TEST(DemoCameraMath, StandardZMapsNearToZeroFarToOne) {
     const glm::mat4 p = demo::perspectiveProjection(1.0f, 16.0f / 9.0f, 0.1f, 500.0f, false, false);
     EXPECT_NEAR(depthAt(p, 0.1f), 0.0f, 1e-6f);
     EXPECT_NEAR(depthAt(p, 500.0f), 1.0f, 1e-6f);
     EXPECT_LT(depthAt(p, 1.0f), depthAt(p, 2.0f));
 }
 
-TEST(CameraMath, ReversedZMapsNearToOneFarToZero) {
+TEST(DemoCameraMath, ReversedZMapsNearToOneFarToZero) {
     const glm::mat4 p = demo::perspectiveProjection(1.0f, 1.0f, 0.1f, 500.0f, true, false);
     EXPECT_NEAR(depthAt(p, 0.1f), 1.0f, 1e-6f);
     EXPECT_NEAR(depthAt(p, 500.0f), 0.0f, 1e-6f);
     EXPECT_GT(depthAt(p, 1.0f), depthAt(p, 2.0f));
 }
 
-TEST(CameraMath, InfiniteFarHasClosedFormDepth) {
+TEST(DemoCameraMath, InfiniteFarHasClosedFormDepth) {
     const float n = 0.25f;
     const glm::mat4 reversed = demo::perspectiveProjection(1.0f, 1.0f, n, 0.0f, true, true);
     const glm::mat4 standard = demo::perspectiveProjection(1.0f, 1.0f, n, 0.0f, false, true);
@@ -37,7 +37,7 @@ TEST(CameraMath, InfiniteFarHasClosedFormDepth) {
     }
 }
 
-TEST(CameraMath, ImageYPointsUpInViewAndFovIsVertical) {
+TEST(DemoCameraMath, ImageYPointsUpInViewAndFovIsVertical) {
     const float fov = glm::radians(60.0f);
     const glm::mat4 p = demo::perspectiveProjection(fov, 2.0f, 0.1f, 100.0f, true, false);
     // A point on the top edge of the vertical field of view lands at clip y = -1 (Vulkan: top row).
@@ -48,7 +48,7 @@ TEST(CameraMath, ImageYPointsUpInViewAndFovIsVertical) {
     EXPECT_NEAR(right.x / right.w, 1.0f, 1e-5f);
 }
 
-TEST(CameraMath, ViewLooksFromPositionTowardLookAt) {
+TEST(DemoCameraMath, ViewLooksFromPositionTowardLookAt) {
     demo::Camera camera;
     camera.position = {1.0f, 2.0f, 3.0f};
     camera.lookAt = {1.0f, 2.0f, -7.0f};
@@ -61,7 +61,7 @@ TEST(CameraMath, ViewLooksFromPositionTowardLookAt) {
     EXPECT_NEAR(target.y, 0.0f, 1e-5f);
 }
 
-TEST(CameraMath, ShadowFitCoversEveryFiniteObject) {
+TEST(DemoCameraMath, ShadowFitCoversEveryFiniteObject) {
     const demo::Scene scene = demo::defaultScene();
     const demo::ShadowFit fit = demo::fitShadowMap(scene, 2048);
     ASSERT_TRUE(fit.valid);

@@ -1,7 +1,7 @@
 #version 450
 // The fog's shader functions on their own (docs/stability.md, "Shader functions"): one invocation per
 // row of a table of inputs, each evaluating one function with postfx's own GLSL and writing its result
-// for the test to compare against double precision (tests/stability/test_shader_functions.cpp).
+// for the test to compare against double precision (tests/fog/stability/test_shader_functions.cpp).
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/shared.h"

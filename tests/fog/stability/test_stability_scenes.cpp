@@ -32,7 +32,7 @@ void PrintTo(const SceneCase& c, std::ostream* os) {
     *os << c.name;
 }
 
-class StabilityScene : public GpuTest, public ::testing::WithParamInterface<SceneCase> {
+class FogStabilityScene : public GpuTest, public ::testing::WithParamInterface<SceneCase> {
 protected:
     void SetUp() override {
         GpuTest::SetUp();
@@ -53,7 +53,7 @@ protected:
     postfx::core::Gpu gpu;
 };
 
-TEST_P(StabilityScene, FiniteAndWithinToleranceOfTheExpectation) {
+TEST_P(FogStabilityScene, FiniteAndWithinToleranceOfTheExpectation) {
     const SceneCase& c = GetParam();
     StabilityFrame f = baseFrame();
     f.images.colorFormat = c.format;
@@ -222,7 +222,7 @@ const SceneCase kCases[] = {
     {"ResolutionScaleQuarter", [](StabilityFrame& f) { f.frame.fog.resolutionScale = 0.25f; }},
 };
 
-INSTANTIATE_TEST_SUITE_P(Cases, StabilityScene, ::testing::ValuesIn(kCases), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Cases, FogStabilityScene, ::testing::ValuesIn(kCases), [](const auto& info) {
     std::string name = info.param.name;
     for (char& ch : name)
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
@@ -235,13 +235,13 @@ INSTANTIATE_TEST_SUITE_P(Cases, StabilityScene, ::testing::ValuesIn(kCases), [](
 namespace test {
 namespace {
 
-class StabilityInputs : public StabilityScene {};
+class FogStabilityInputs : public FogStabilityScene {};
 
 // NaN, ±Inf and negative values in the host's color (docs/stability.md, "Host color"): NaN stays in
 // its pixel's channel, ±Inf counts as the format's largest finite value (never Inf out), negative values
 // are composited as given; every other pixel is exactly what it is with clean color, at full and at
 // reduced resolution (the upsample reads no other pixel's color).
-TEST_F(StabilityInputs, HostColorNanInfAndNegativeStayInTheirPixel) {
+TEST_F(FogStabilityInputs, HostColorNanInfAndNegativeStayInTheirPixel) {
     for (VkFormat format : {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT}) {
         for (float scale : {1.0f, 0.5f}) {
             SCOPED_TRACE(std::string(format == VK_FORMAT_R16G16B16A16_SFLOAT ? "rgba16f" : "rgba32f") +
@@ -304,7 +304,7 @@ void addShadowMap(StabilityFrame& f, uint32_t size, float stored) {
 }
 
 // A 1×1 shadow map (the occluder plane y = 0 everywhere): against the reference.
-TEST_F(StabilityInputs, OneTexelShadowMapMatchesReference) {
+TEST_F(FogStabilityInputs, OneTexelShadowMapMatchesReference) {
     StabilityFrame f = baseFrame();
     addShadowMap(f, 1, 0.5f);
     std::vector<float> gpuOut, reference;
@@ -318,7 +318,7 @@ TEST_F(StabilityInputs, OneTexelShadowMapMatchesReference) {
 // Every texel stores exactly the depth of the camera's height, so the samples of the rows near the
 // horizon compare equal (or within an ulp) to it: float on the GPU and double in the reference may
 // decide differently, so each pixel must lie between the all-lit and all-shadowed frames, finite.
-TEST_F(StabilityInputs, ShadowTexelOnTheComparisonBoundaryStaysBetweenLitAndShadowed) {
+TEST_F(FogStabilityInputs, ShadowTexelOnTheComparisonBoundaryStaysBetweenLitAndShadowed) {
     StabilityFrame f = baseFrame();
     const float cameraDepth = float((50.0 - f.cameraPosition.y) / 100.0);
     std::vector<float> boundary, lit, shadowed;

@@ -1,8 +1,8 @@
 // Bad parameters (docs/stability.md, "Bad parameters"): NaN in every floating-point fog setting, and
 // values just outside each documented range, are rejected by postfx's check (the one Context::record
 // runs) with InvalidArgument naming the field by its scene-file key. Images (zero-size, mismatched,
-// missing) are covered by tests/gpu/test_core.cpp (RecordValidatesFrameInputs), lighting and camera
-// by tests/gpu/test_fog_api.cpp; the command line by cli_bad_input.sh.
+// missing) are covered by tests/core/test_core.cpp (RecordValidatesFrameInputs), lighting and camera
+// by tests/fog/test_fog_api.cpp; the command line by tests/demo/cli_bad_input.sh.
 #include <gtest/gtest.h>
 #include <postfx/fog.h>
 
@@ -55,7 +55,7 @@ void expectRejected(const postfx::FogSettings& s, const std::string& key, const 
     EXPECT_EQ(status.message.find('\n'), std::string::npos) << "one line: " << status.message;
 }
 
-TEST(StabilityBadParameters, NanInfAndOutOfRangeInEverySettingAreRejectedNamingIt) {
+TEST(FogStabilityBadParameters, NanInfAndOutOfRangeInEverySettingAreRejectedNamingIt) {
     ASSERT_TRUE(postfx::validateFogSettings(valid()).ok());
     for (const Field& f : kFields) {
         for (float bad : {kNan, std::numeric_limits<float>::infinity(),
@@ -67,7 +67,7 @@ TEST(StabilityBadParameters, NanInfAndOutOfRangeInEverySettingAreRejectedNamingI
     }
 }
 
-TEST(StabilityBadParameters, IntegerSettingsOutsideTheirRangeAreRejected) {
+TEST(FogStabilityBadParameters, IntegerSettingsOutsideTheirRangeAreRejected) {
     postfx::FogSettings s = valid();
     s.steps = 0;
     expectRejected(s, "fog.steps", "0");

@@ -1,12 +1,12 @@
 // The fog's shader functions on their own (docs/stability.md, "Shader functions"): tables of hard inputs
 // evaluated by postfx's own GLSL (shaders/common, shaders/fog/medium.glsl, composite.glsl) in one compute
-// dispatch (tests/stability/shaders/fog_functions.comp), each result against the double-precision model
+// dispatch (tests/fog/stability/shaders/fog_functions.comp), each result against the double-precision model
 // (postfx/src/fog/reference_model.h) or the documented rule, to a stated tolerance, never NaN.
 #include "core/compute_pipeline.h"
 #include "core/gpu_resources.h"
 #include "fog/reference_model.h"
+#include "fog_test_shaders_spirv.h"
 #include "gpu_test.h"
-#include "stability_tests_spirv.h"
 
 #include <postfx/reference.h>
 
@@ -57,7 +57,7 @@ double oneMinusExpTolerance(double x) {
     return 8 * kUlp + expTolerance(x) * std::exp(-x) / std::max(-std::expm1(-x), 0.39);
 }
 
-class ShaderFunctions : public GpuTest {
+class FogShaderFunctions : public GpuTest {
 protected:
     void SetUp() override {
         GpuTest::SetUp();
@@ -77,7 +77,7 @@ protected:
                                                   {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
         postfx::core::ComputePipelineDesc pd;
         pd.name = "test.fog_functions";
-        pd.spirv = stability_spirv::fog_functions_comp;
+        pd.spirv = fog_test_spirv::fog_functions_comp;
         pd.bindings = bindings;
         pd.pushConstantBytes = 4;
         postfx::core::ComputePipeline pipeline;
@@ -168,7 +168,7 @@ std::vector<float> opticalDepths() {
 
 // Henyey–Greenstein at |g| up to 0.999 along (cos θ = 1), against (-1) and near the light direction: the
 // peak of 0.999 is 1.6e5 /sr, where 1 + g² - 2g·cosθ would cancel in float.
-TEST_F(ShaderFunctions, PhaseMatchesDoublePrecision) {
+TEST_F(FogShaderFunctions, PhaseMatchesDoublePrecision) {
     const float gs[] = {-0.999f, -0.99f, -0.6f, 0.0f, 0.3f, 0.6f, 0.99f, 0.999f};
     const double angles[] = {0.0, 1e-4, 1e-3, 0.01, 0.1, 0.5, 1.0, 1.5707963, 2.5, 3.1, 3.14159265};
     std::vector<FunctionCase> cases;
@@ -208,7 +208,7 @@ TEST_F(ShaderFunctions, PhaseMatchesDoublePrecision) {
 
 // 1 - e^{-x} and (1 - e^{-x})/x over 33 decades: no cancellation anywhere (at x = 1e-4 the direct
 // formula keeps ~11 bits), the exact limits at 0 and +Inf.
-TEST_F(ShaderFunctions, OneMinusExpKeepsFloatPrecisionAtEveryScale) {
+TEST_F(FogShaderFunctions, OneMinusExpKeepsFloatPrecisionAtEveryScale) {
     std::vector<FunctionCase> cases;
     for (float x : opticalDepths()) {
         FunctionCase c;
@@ -233,7 +233,7 @@ TEST_F(ShaderFunctions, OneMinusExpKeepsFloatPrecisionAtEveryScale) {
 // The medium's height term, its closed-form sun transmittance and the analytic tail's optical depth at
 // heights from -1e6 to 1e6 m, falloffs 0 to 10 /m, sun from the zenith to below the horizon, rays climbing,
 // level and descending, lengths 1 mm to infinity.
-TEST_F(ShaderFunctions, HeightFogTermsMatchDoublePrecision) {
+TEST_F(FogShaderFunctions, HeightFogTermsMatchDoublePrecision) {
     const float heights[] = {-1e6f, -1e3f, -8.0f, 0.0f, 0.5f, 10.0f, 300.0f, 1e3f, 1e5f, 1e6f};
     const float falloffs[] = {0.0f, 1e-3f, 0.1f, 10.0f};
     const float densities[] = {1e-12f, 0.02f, 1e6f};
@@ -312,7 +312,7 @@ TEST_F(ShaderFunctions, HeightFogTermsMatchDoublePrecision) {
 
 // One step's in-scattering T · light · (1 - e^{-τ}) at transmittances, lights and optical depths from 0
 // to the float range: finite, and the closed form.
-TEST_F(ShaderFunctions, IntegrateStepStaysFiniteAndExact) {
+TEST_F(FogShaderFunctions, IntegrateStepStaysFiniteAndExact) {
     const float transmittances[] = {0.0f, 1e-30f, 1e-3f, 1.0f};
     const float lights[] = {0.0f, 1.0f, 1e5f, 1e30f, kFloatMax};
     std::vector<FunctionCase> cases;
@@ -337,7 +337,7 @@ TEST_F(ShaderFunctions, IntegrateStepStaysFiniteAndExact) {
 
 // Interleaved gradient noise: in [0, 1) and finite for pixels up to 16384 and every frame index up to
 // 2^32 - 1 (the frame counter wraps).
-TEST_F(ShaderFunctions, InterleavedGradientNoiseStaysInTheUnitInterval) {
+TEST_F(FogShaderFunctions, InterleavedGradientNoiseStaysInTheUnitInterval) {
     std::vector<FunctionCase> cases;
     const uint32_t pixels[] = {0u, 1u, 7u, 1919u, 4095u, 16383u};
     const uint32_t frames[] = {0u, 1u, 63u, 64u, 1000003u, 0x7fffffffu, 0xffffffffu};
@@ -357,7 +357,7 @@ TEST_F(ShaderFunctions, InterleavedGradientNoiseStaysInTheUnitInterval) {
 
 // The composite over the host's color (docs/stability.md, "Host color"), RGBA16F variant: ±Inf counts as
 // ±65504, the result is clamped to ±65504, NaN stays in its channel, negatives composite as given.
-TEST_F(ShaderFunctions, CompositeFollowsTheHostColorRule) {
+TEST_F(FogShaderFunctions, CompositeFollowsTheHostColorRule) {
     const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
     const float colors[] = {0.0f, 1.0f, -5.0f, 65504.0f, 1e9f, inf, -inf, nan};
     const float transmittances[] = {0.0f, 1e-6f, 0.5f, 1.0f};

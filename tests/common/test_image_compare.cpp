@@ -15,7 +15,7 @@ std::vector<float> constant(size_t pixels, float v) {
     return image;
 }
 
-TEST(ImageCompare, IdenticalImagesHaveZeroError) {
+TEST(CommonImageCompare, IdenticalImagesHaveZeroError) {
     const auto a = constant(12, 5.0f);
     const test::ImageStats s = test::compareImages(a, a, 4, 3, 0.01, 1.0);
     EXPECT_EQ(s.relativeRmse, 0.0);
@@ -23,7 +23,7 @@ TEST(ImageCompare, IdenticalImagesHaveZeroError) {
     EXPECT_EQ(s.fractionOff, 0.0);
 }
 
-TEST(ImageCompare, UniformScaleGivesThatRelativeRmse) {
+TEST(CommonImageCompare, UniformScaleGivesThatRelativeRmse) {
     const auto expected = constant(12, 100.0f);
     const auto actual = constant(12, 103.0f);
     const test::ImageStats s = test::compareImages(actual, expected, 4, 3, 0.01, 1.0);
@@ -33,7 +33,7 @@ TEST(ImageCompare, UniformScaleGivesThatRelativeRmse) {
     EXPECT_EQ(test::compareImages(actual, expected, 4, 3, 0.05, 1.0).fractionOff, 0.0);
 }
 
-TEST(ImageCompare, OnePixelOffAndNonFiniteValuesAreCounted) {
+TEST(CommonImageCompare, OnePixelOffAndNonFiniteValuesAreCounted) {
     const auto expected = constant(4, 10.0f);
     auto actual = expected;
     actual[1] = 12.0f;      // pixel 0, green
@@ -45,7 +45,7 @@ TEST(ImageCompare, OnePixelOffAndNonFiniteValuesAreCounted) {
     EXPECT_TRUE(std::isfinite(s.relativeRmse));
 }
 
-TEST(ImageCompare, MismatchedSizesFail) {
+TEST(CommonImageCompare, MismatchedSizesFail) {
     const auto a = constant(4, 1.0f);
     const test::ImageStats s = test::compareImages(a, a, 4, 4, 0.01, 1.0);
     EXPECT_TRUE(std::isinf(s.relativeRmse));

@@ -10,8 +10,9 @@
 
 namespace test {
 
-void expectMatchesGolden(const demo::ImageF& image, const std::string& name) {
-    const std::string golden = std::string(POSTFX_SOURCE_DIR) + "/tests/golden/" + name + ".exr";
+void expectMatchesGolden(const demo::ImageF& image, const std::string& group, const std::string& name) {
+    const std::string golden =
+        std::string(POSTFX_SOURCE_DIR) + "/tests/" + group + "/golden/" + name + ".exr";
     std::string error;
     if (const char* accept = std::getenv("POSTFX_ACCEPT_GOLDENS"); accept && std::string(accept) == "1") {
         ASSERT_TRUE(demo::writeImage(golden, image, 15.0f, error)) << error;

@@ -1,5 +1,5 @@
 // The demo host renderer: its shading convention checked against the closed form, depth conventions
-// agreeing, and the default scene against a committed golden image.
+// agreeing, the default scene against a committed golden image, and its shadow map drawn only when read.
 #include "golden.h"
 #include "gpu_test.h"
 #include "host/renderer.h"
@@ -10,13 +10,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <glm/gtc/constants.hpp>
+#include <string>
 
 namespace test {
 namespace {
 
 const std::string kSourceDir = POSTFX_SOURCE_DIR;
 
-class RendererTest : public GpuTest {
+class DemoRendererTest : public GpuTest {
 protected:
     demo::ImageF render(const demo::Scene& scene, demo::RenderOptions options) {
         std::string error;
@@ -45,7 +46,7 @@ demo::RenderOptions smallOptions(uint32_t width, uint32_t height) {
 }
 
 // L = albedo/π · E · max(0, n·l) + albedo · ambient, on every pixel of a plane filling the view.
-TEST_F(RendererTest, LitPlaneMatchesShadingConvention) {
+TEST_F(DemoRendererTest, LitPlaneMatchesShadingConvention) {
     const demo::Scene scene = load("demo/scenes/lit_plane.json");
     ASSERT_EQ(scene.objects.size(), 1u);
     const demo::Object& plane = scene.objects[0];
@@ -60,7 +61,7 @@ TEST_F(RendererTest, LitPlaneMatchesShadingConvention) {
                 ASSERT_NEAR(image.at(x, y)[c], expected[c], 0.01f * expected[c]) << "pixel " << x << "," << y;
 }
 
-TEST_F(RendererTest, EmptySceneShowsSkyRadiance) {
+TEST_F(DemoRendererTest, EmptySceneShowsSkyRadiance) {
     demo::Scene scene = load("demo/scenes/lit_plane.json");
     scene.objects.clear();
     scene.sky = {1234.0f, 2345.0f, 3456.0f};
@@ -72,7 +73,7 @@ TEST_F(RendererTest, EmptySceneShowsSkyRadiance) {
 }
 
 // Standard and reversed Z, finite and infinite far plane: the same image (depth precision aside).
-TEST_F(RendererTest, DepthConventionsRenderTheSameImage) {
+TEST_F(DemoRendererTest, DepthConventionsRenderTheSameImage) {
     const demo::Scene scene = demo::defaultScene();
     demo::RenderOptions reversed = smallOptions(64, 36);
     const demo::ImageF a = render(scene, reversed);
@@ -88,9 +89,34 @@ TEST_F(RendererTest, DepthConventionsRenderTheSameImage) {
     }
 }
 
-// The default scene against tests/golden/default_scene.exr (tolerance in golden.h).
-TEST_F(RendererTest, DefaultSceneMatchesGolden) {
-    expectMatchesGolden(render(demo::defaultScene(), smallOptions(160, 90)), "default_scene");
+// The default scene against tests/demo/golden/default_scene.exr (tolerance in golden.h).
+TEST_F(DemoRendererTest, DefaultSceneMatchesGolden) {
+    expectMatchesGolden(render(demo::defaultScene(), smallOptions(160, 90)), "demo", "default_scene");
+}
+
+// The demo host draws its shadow map only when something reads it: with no sunlight neither its lighting
+// nor postfx's fog (plan) reads it.
+TEST_F(DemoRendererTest, DrawsTheShadowMapOnlyWhenRead) {
+    std::string error;
+    demo::RenderOptions options;
+    options.width = 32;
+    options.height = 18;
+    options.shadowMapSize = 256;
+    auto renderer = demo::Renderer::create(*host, options, error);
+    ASSERT_TRUE(renderer) << error;
+    demo::Scene scene = load("demo/scenes/fog_valley.json");
+    scene.fog.steps = 8;
+    scene.fog.jitter = false;
+    scene.fog.transmittanceCutoff = 0.0f;
+    demo::ImageF image;
+    ASSERT_TRUE(renderer->render(scene, image, error)) << error;
+    EXPECT_TRUE(renderer->shadowMap().enabled);
+    scene.sun.illuminance = glm::vec3(0.0f);
+    postfx::FramePlan plan;
+    ASSERT_TRUE(renderer->plan(scene, 1, plan, error)) << error;
+    EXPECT_FALSE(plan.reads("host.shadow_map"));
+    ASSERT_TRUE(renderer->render(scene, image, error)) << error;
+    EXPECT_FALSE(renderer->shadowMap().enabled);
 }
 
 }  // namespace

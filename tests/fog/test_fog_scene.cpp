@@ -104,7 +104,7 @@ void expectSameFog(const postfx::FogSettings& a, const postfx::FogSettings& b) {
 
 // ---- defaults ------------------------------------------------------------------------------------
 
-TEST(SceneFog, AbsentMeansDisabledDefaults) {
+TEST(FogScene, AbsentMeansDisabledDefaults) {
     for (const json& j : {base(), [] {
                               json e = base();
                               e["effects"] = json::object();
@@ -117,7 +117,7 @@ TEST(SceneFog, AbsentMeansDisabledDefaults) {
     }
 }
 
-TEST(SceneFog, EmptyObjectEnablesFogWithDefaults) {
+TEST(FogScene, EmptyObjectEnablesFogWithDefaults) {
     const Parsed p = parse(withFog(json::object()));
     ASSERT_TRUE(p.ok) << p.error;
     postfx::FogSettings expected;
@@ -125,7 +125,7 @@ TEST(SceneFog, EmptyObjectEnablesFogWithDefaults) {
     expectSameFog(p.scene.fog, expected);
 }
 
-TEST(SceneFog, EmptyNoiseObjectEnablesNoiseWithDefaults) {
+TEST(FogScene, EmptyNoiseObjectEnablesNoiseWithDefaults) {
     const Parsed p = parse(withFog({{"noise", json::object()}}));
     ASSERT_TRUE(p.ok) << p.error;
     postfx::FogSettings expected;
@@ -134,7 +134,7 @@ TEST(SceneFog, EmptyNoiseObjectEnablesNoiseWithDefaults) {
     expectSameFog(p.scene.fog, expected);
 }
 
-TEST(SceneFog, EnabledFalseIsKept) {
+TEST(FogScene, EnabledFalseIsKept) {
     const Parsed p = parse(withFog({{"enabled", false}, {"noise", {{"enabled", false}}}}));
     ASSERT_TRUE(p.ok) << p.error;
     EXPECT_FALSE(p.scene.fog.enabled);
@@ -143,7 +143,7 @@ TEST(SceneFog, EnabledFalseIsKept) {
 
 // ---- every key -----------------------------------------------------------------------------------
 
-TEST(SceneFog, EveryKeyIsRead) {
+TEST(FogScene, EveryKeyIsRead) {
     const Parsed p = parse(withFog(everyKey()));
     ASSERT_TRUE(p.ok) << p.error;
     const postfx::FogSettings& f = p.scene.fog;
@@ -173,7 +173,7 @@ TEST(SceneFog, EveryKeyIsRead) {
     EXPECT_EQ(f.noise.wind, glm::vec3(1.0f, -2.0f, 0.5f));
 }
 
-TEST(SceneFog, QualityDefaultsToCustomAndReadsEveryName) {
+TEST(FogScene, QualityDefaultsToCustomAndReadsEveryName) {
     const Parsed defaults = parse(withFog(json::object()));
     ASSERT_TRUE(defaults.ok) << defaults.error;
     EXPECT_EQ(defaults.scene.fog.quality, postfx::FogQuality::Custom);
@@ -196,7 +196,7 @@ TEST(SceneFog, QualityDefaultsToCustomAndReadsEveryName) {
 
 // Custom is the default quality, so a host that sets steps gets its steps; the knobs' defaults are the
 // Medium preset's values, so an untouched FogSettings costs what Medium costs.
-TEST(SceneFog, DefaultKnobsAreTheMediumPreset) {
+TEST(FogScene, DefaultKnobsAreTheMediumPreset) {
     const postfx::FogSettings defaults;
     const postfx::FogSettings medium = postfx::applyFogQuality(defaults, postfx::FogQuality::Medium);
     EXPECT_EQ(defaults.quality, postfx::FogQuality::Custom);
@@ -206,7 +206,7 @@ TEST(SceneFog, DefaultKnobsAreTheMediumPreset) {
     EXPECT_EQ(defaults.resolutionScale, medium.resolutionScale);
 }
 
-TEST(SceneFog, IntegersMayBeWrittenAsWholeDecimals) {
+TEST(FogScene, IntegersMayBeWrittenAsWholeDecimals) {
     const Parsed p = parse(withFog({{"steps", 64.0}, {"shadow_kernel", 7.0}, {"noise", {{"seed", 3.0}}}}));
     ASSERT_TRUE(p.ok) << p.error;
     EXPECT_EQ(p.scene.fog.steps, 64u);
@@ -214,7 +214,7 @@ TEST(SceneFog, IntegersMayBeWrittenAsWholeDecimals) {
     EXPECT_EQ(p.scene.fog.noise.seed, 3u);
 }
 
-TEST(SceneFog, EveryKeyRoundTrips) {
+TEST(FogScene, EveryKeyRoundTrips) {
     const Parsed first = parse(withFog(everyKey()));
     ASSERT_TRUE(first.ok) << first.error;
     const json out = demo::sceneToJson(first.scene);
@@ -237,7 +237,7 @@ TEST(SceneFog, EveryKeyRoundTrips) {
     EXPECT_EQ(demo::sceneToJson(second.scene), out);
 }
 
-TEST(SceneFog, DefaultsRoundTrip) {
+TEST(FogScene, DefaultsRoundTrip) {
     for (const json& fog : {json(nullptr), json::object()}) {
         const Parsed first = parse(fog.is_null() ? base() : withFog(fog));
         ASSERT_TRUE(first.ok) << first.error;
@@ -252,7 +252,7 @@ TEST(SceneFog, DefaultsRoundTrip) {
 }
 
 // Each key alone, at a few values including its range's ends, reads back exactly.
-TEST(SceneFog, EachKeyRoundTripsAtItsBounds) {
+TEST(FogScene, EachKeyRoundTripsAtItsBounds) {
     const std::vector<std::pair<std::string, json>> cases = {
         {"/density", 0},
         {"/density", 1e6},
@@ -383,9 +383,9 @@ std::vector<FogRejection> fogRejections() {
     };
 }
 
-class SceneFogRejects : public ::testing::TestWithParam<FogRejection> {};
+class FogSceneRejects : public ::testing::TestWithParam<FogRejection> {};
 
-TEST_P(SceneFogRejects, WithOneLineNamingTheKeyPath) {
+TEST_P(FogSceneRejects, WithOneLineNamingTheKeyPath) {
     const FogRejection& r = GetParam();
     json j = base();
     j["effects"] = r.effects;
@@ -397,12 +397,12 @@ TEST_P(SceneFogRejects, WithOneLineNamingTheKeyPath) {
     EXPECT_EQ(demo::sceneToJson(scene), demo::sceneToJson(demo::defaultScene()));  // left unchanged
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, SceneFogRejects, ::testing::ValuesIn(fogRejections()),
+INSTANTIATE_TEST_SUITE_P(Cases, FogSceneRejects, ::testing::ValuesIn(fogRejections()),
                          [](const ::testing::TestParamInfo<FogRejection>& info) { return info.param.name; });
 
 // ---- committed fog scenes ------------------------------------------------------------------------
 
-TEST(SceneFogFiles, EachCommittedFogSceneLoadsWithFogOn) {
+TEST(FogSceneFiles, EachCommittedFogSceneLoadsWithFogOn) {
     for (const char* name : {"fog_default", "fog_homogeneous", "fog_height", "fog_noise", "fog_shadowed"}) {
         SCOPED_TRACE(name);
         Scene s;

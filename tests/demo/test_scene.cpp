@@ -100,7 +100,7 @@ bool isOneLine(const std::string& s) {
 
 // ---- valid scenes ------------------------------------------------------------------------------
 
-TEST(SceneParse, MinimalSceneGetsDefaults) {
+TEST(DemoSceneParse, MinimalSceneGetsDefaults) {
     const Parsed p = parse(base());
     ASSERT_TRUE(p.ok) << p.error;
     EXPECT_TRUE(p.error.empty());
@@ -124,7 +124,7 @@ TEST(SceneParse, MinimalSceneGetsDefaults) {
     EXPECT_EQ(s.objects[2].type, ObjectType::Sphere);
 }
 
-TEST(SceneParse, OptionalKeysAreRead) {
+TEST(DemoSceneParse, OptionalKeysAreRead) {
     json j = base();
     j["camera"]["up"] = {0, 0, -1};
     j["camera"]["ev100"] = 9.5;
@@ -137,11 +137,11 @@ TEST(SceneParse, OptionalKeysAreRead) {
     EXPECT_FLOAT_EQ(p.scene.camera.ev100, 9.5f);
     expectVec3(p.scene.ambient, 1, 2, 3);
     expectVec3(p.scene.sky, 4, 5, 6);
-    EXPECT_TRUE(p.scene.fog.enabled);  // effects.fog: tests/unit/test_scene_fog.cpp
+    EXPECT_TRUE(p.scene.fog.enabled);  // effects.fog: tests/fog/test_fog_scene.cpp
     EXPECT_FLOAT_EQ(p.scene.fog.density, 0.03f);
 }
 
-TEST(SceneParse, IntegersAndFloatsAreNumbers) {
+TEST(DemoSceneParse, IntegersAndFloatsAreNumbers) {
     json j = base();
     j["camera"]["near"] = 1;  // integer
     j["camera"]["far"] = 2.5e3;
@@ -153,7 +153,7 @@ TEST(SceneParse, IntegersAndFloatsAreNumbers) {
     EXPECT_FLOAT_EQ(p.scene.camera.fovYDeg, 45.0f);
 }
 
-TEST(SceneParse, DirectionsAreNormalised) {
+TEST(DemoSceneParse, DirectionsAreNormalised) {
     json j = with("/sun/direction", {3, 0, 4});
     j["objects"][0]["normal"] = {0, 1e-30, 0};  // tiny but non-zero
     const Parsed p = parse(j);
@@ -162,13 +162,13 @@ TEST(SceneParse, DirectionsAreNormalised) {
     expectVec3(p.scene.objects[0].normal, 0, 1, 0);
 }
 
-TEST(SceneParse, EmptyObjectListIsValid) {
+TEST(DemoSceneParse, EmptyObjectListIsValid) {
     const Parsed p = parse(with("/objects", json::array()));
     ASSERT_TRUE(p.ok) << p.error;
     EXPECT_TRUE(p.scene.objects.empty());
 }
 
-TEST(SceneParse, BoundaryValuesAreAccepted) {
+TEST(DemoSceneParse, BoundaryValuesAreAccepted) {
     json j = base();
     j["objects"][0]["albedo"] = {0, 1, 0};
     j["sun"]["illuminance"] = {0, 0, 0};
@@ -178,7 +178,7 @@ TEST(SceneParse, BoundaryValuesAreAccepted) {
     EXPECT_TRUE(parse(j).ok) << parse(j).error;
 }
 
-TEST(SceneParse, FailureLeavesSceneUnchanged) {
+TEST(DemoSceneParse, FailureLeavesSceneUnchanged) {
     Scene scene = demo::defaultScene();
     std::string error;
     EXPECT_FALSE(demo::parseScene(with("/objects/2/radius", -1).dump(), scene, error));
@@ -187,9 +187,9 @@ TEST(SceneParse, FailureLeavesSceneUnchanged) {
 
 // ---- round trips of each object type -----------------------------------------------------------
 
-class ObjectRoundTrip : public ::testing::TestWithParam<const char*> {};
+class DemoObjectRoundTrip : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(ObjectRoundTrip, ParseSerialiseParse) {
+TEST_P(DemoObjectRoundTrip, ParseSerialiseParse) {
     json j = base();
     j["objects"] = json::array({json::parse(GetParam())});
     const Parsed first = parse(j);
@@ -227,7 +227,7 @@ TEST_P(ObjectRoundTrip, ParseSerialiseParse) {
 }
 
 INSTANTIATE_TEST_SUITE_P(
-    Objects, ObjectRoundTrip,
+    Objects, DemoObjectRoundTrip,
     ::testing::Values(
         R"({"type": "plane", "point": [1.5, -2, 0.1], "normal": [0, 3, 4], "albedo": [0.1, 0.2, 0.3]})",
         R"({"type": "box", "center": [-3, 0.5, 7.25], "half_size": [0.4, 4, 0.4], "albedo": [0.7, 0.2, 0.15]})",
@@ -236,7 +236,7 @@ INSTANTIATE_TEST_SUITE_P(
         return json::parse(info.param)["type"].get<std::string>();  // plane, box, sphere
     });
 
-TEST(SceneToJson, FloatsAreWrittenShort) {
+TEST(DemoSceneToJson, FloatsAreWrittenShort) {
     const Parsed p = parse(base());
     ASSERT_TRUE(p.ok) << p.error;
     const std::string text = demo::sceneToJson(p.scene).dump();
@@ -246,11 +246,11 @@ TEST(SceneToJson, FloatsAreWrittenShort) {
 
 // ---- the built-in default scene and the committed scene files ---------------------------------
 
-TEST(DefaultScene, EmbeddedTextEqualsTheCommittedFile) {
+TEST(DemoDefaultScene, EmbeddedTextEqualsTheCommittedFile) {
     EXPECT_EQ(demo::defaultSceneJson(), readFile(kScenesDir + "/default.json"));
 }
 
-TEST(DefaultScene, ParsesAndEqualsDefaultScene) {
+TEST(DemoDefaultScene, ParsesAndEqualsDefaultScene) {
     const Parsed p = parse(demo::defaultSceneJson());
     ASSERT_TRUE(p.ok) << p.error;
     expectSameScene(p.scene, demo::defaultScene());
@@ -261,7 +261,7 @@ TEST(DefaultScene, ParsesAndEqualsDefaultScene) {
     expectSameScene(loaded, demo::defaultScene());
 }
 
-TEST(DefaultScene, MatchesItsDescription) {
+TEST(DemoDefaultScene, MatchesItsDescription) {
     const Scene s = demo::defaultScene();
     const float elevationDeg = glm::degrees(std::asin(s.sun.direction.y));
     EXPECT_GE(elevationDeg, 12.0f);
@@ -287,7 +287,7 @@ TEST(DefaultScene, MatchesItsDescription) {
     EXPECT_FALSE(s.fog.enabled);  // no effects.fog
 }
 
-TEST(SceneFiles, LitPlane) {
+TEST(DemoSceneFiles, LitPlane) {
     Scene s;
     std::string error;
     ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/lit_plane.json", s, error)) << error;
@@ -305,7 +305,7 @@ TEST(SceneFiles, LitPlane) {
     expectVec3(s.camera.lookAt, 0, 0, 0);
 }
 
-TEST(SceneFiles, LoadErrorsNameTheFile) {
+TEST(DemoSceneFiles, LoadErrorsNameTheFile) {
     Scene s;
     std::string error;
     const std::string missing = kScenesDir + "/no_such_scene.json";
@@ -506,9 +506,9 @@ std::vector<Rejection> rejections() {
     return r;
 }
 
-class SceneRejects : public ::testing::TestWithParam<Rejection> {};
+class DemoSceneRejects : public ::testing::TestWithParam<Rejection> {};
 
-TEST_P(SceneRejects, WithOneLineNamingTheKeyPath) {
+TEST_P(DemoSceneRejects, WithOneLineNamingTheKeyPath) {
     const Rejection& c = GetParam();
     const Parsed p = parse(c.text);
     ASSERT_FALSE(p.ok) << c.text;
@@ -519,10 +519,10 @@ TEST_P(SceneRejects, WithOneLineNamingTheKeyPath) {
         << "error: " << p.error << "\nexpected: " << c.fragment;
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, SceneRejects, ::testing::ValuesIn(rejections()),
+INSTANTIATE_TEST_SUITE_P(Cases, DemoSceneRejects, ::testing::ValuesIn(rejections()),
                          [](const ::testing::TestParamInfo<Rejection>& info) { return info.param.name; });
 
-TEST(SceneParse, SyntaxErrorPositionIsLineAndColumn) {
+TEST(DemoSceneParse, SyntaxErrorPositionIsLineAndColumn) {
     // The error is at the '0' of "0.2", after a two-byte character on the same line.
     const std::string text = "{\n  \"camera\": {\n    \"é\" 0.2\n  }\n}\n";
     const Parsed p = parse(text);
@@ -531,7 +531,7 @@ TEST(SceneParse, SyntaxErrorPositionIsLineAndColumn) {
     EXPECT_NE(p.error.find("expected ':'"), std::string::npos) << p.error;
 }
 
-TEST(SceneParse, VeryDeepNestingDoesNotCrash) {
+TEST(DemoSceneParse, VeryDeepNestingDoesNotCrash) {
     const std::size_t depth = 1000000;
     const Parsed arrays = parse(std::string(depth, '[') + std::string(depth, ']'));
     EXPECT_FALSE(arrays.ok);
@@ -544,7 +544,7 @@ TEST(SceneParse, VeryDeepNestingDoesNotCrash) {
     EXPECT_EQ(unclosed.error.rfind("a.a.a.a", 0), 0u) << unclosed.error.substr(0, 100);
 }
 
-TEST(SceneParse, NestingUpToTheLimitIsAccepted) {
+TEST(DemoSceneParse, NestingUpToTheLimitIsAccepted) {
     // The root object is level 1, effects level 2, so 62 more levels fit: the JSON is read, and the
     // error is the unknown key (no scene key takes nested arrays).
     const Parsed p =
@@ -571,7 +571,7 @@ void expectWellBehaved(const std::string& text) {
     }
 }
 
-TEST(SceneFuzz, EveryTruncationOfTheDefaultScene) {
+TEST(DemoSceneFuzz, EveryTruncationOfTheDefaultScene) {
     const std::string text = demo::defaultSceneJson();
     for (std::size_t n = 0; n <= text.size(); ++n) {
         expectWellBehaved(text.substr(0, n));
@@ -579,7 +579,7 @@ TEST(SceneFuzz, EveryTruncationOfTheDefaultScene) {
     }
 }
 
-TEST(SceneFuzz, RandomByteMutationsOfTheDefaultScene) {
+TEST(DemoSceneFuzz, RandomByteMutationsOfTheDefaultScene) {
     const std::string original = demo::defaultSceneJson();
     const std::string interesting = "{}[],:\"\\-+.eE0123456789 \n\tnulltruefalse\x01\x7f\xc3\xa9\xff";
     std::mt19937 rng(20240611u);
@@ -618,7 +618,7 @@ TEST(SceneFuzz, RandomByteMutationsOfTheDefaultScene) {
 
 // ---- text helpers -------------------------------------------------------------------------------
 
-TEST(JsonText, PositionOf) {
+TEST(DemoJsonText, PositionOf) {
     using demo::json_text::positionOf;
     const std::string text = "ab\ncé\n\nx";
     EXPECT_EQ(positionOf(text, 0).line, 1u);
@@ -632,7 +632,7 @@ TEST(JsonText, PositionOf) {
     EXPECT_EQ(positionOf(text, 100).column, 2u);
 }
 
-TEST(JsonText, OneLine) {
+TEST(DemoJsonText, OneLine) {
     using demo::json_text::oneLine;
     EXPECT_EQ(oneLine("a\nb\r\tc"), "a b  c");
     EXPECT_EQ(oneLine("caf\xc3\xa9"), "caf\xc3\xa9");
@@ -641,7 +641,7 @@ TEST(JsonText, OneLine) {
     EXPECT_EQ(oneLine("a\xe2\x80\xa8z"), "a z");  // U+2028 LINE SEPARATOR
 }
 
-TEST(JsonText, FormatFloat) {
+TEST(DemoJsonText, FormatFloat) {
     using demo::json_text::formatFloat;
     using demo::json_text::roundTripDouble;
     EXPECT_EQ(formatFloat(0.1f), "0.1");
@@ -661,7 +661,7 @@ TEST(JsonText, FormatFloat) {
     }
 }
 
-TEST(JsonText, KeyPaths) {
+TEST(DemoJsonText, KeyPaths) {
     using demo::json_text::indexPath;
     using demo::json_text::keyPath;
     EXPECT_EQ(keyPath("", "camera"), "camera");

@@ -188,7 +188,7 @@ TEST_F(FogImageTest, DefaultFogSceneMatchesGolden) {
     demo::ImageF image;
     std::string error;
     ASSERT_TRUE(renderer(o)->render(load("fog_default.json"), image, error)) << error;
-    expectMatchesGolden(image, "fog_default");
+    expectMatchesGolden(image, "fog", "fog_default");
 }
 
 }  // namespace
