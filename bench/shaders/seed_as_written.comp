@@ -24,15 +24,17 @@
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 
 #include "fog/bindings.glsl"
+// clang-format off
 layout(push_constant) uniform Push {
     float stepLength;  // Δ [m], > 0
 } push;
+// clang-format on
 
 #include "common/ign.glsl"
 #include "fog/medium.glsl"
 #include "fog/ray.glsl"
 
-const uint kMaxIterations = 100000u;    // safety cap only; the seed has none
+const uint kMaxIterations = 100000u;  // safety cap only; the seed has none
 const float kPi = 3.14159265358979;
 
 // The seed's henyey_greenstein(angle, scattering), exactly as it computes it:

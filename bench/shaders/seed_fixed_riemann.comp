@@ -24,9 +24,11 @@
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 
 #include "fog/bindings.glsl"
+// clang-format off
 layout(push_constant) uniform Push {
     float stepLength;  // Δ [m], > 0
 } push;
+// clang-format on
 
 #include "common/ign.glsl"
 #include "common/phase.glsl"

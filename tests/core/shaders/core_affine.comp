@@ -2,6 +2,7 @@
 // Test shader for postfx's core helpers: out = in * scale + offset into a storage buffer and a 2D image.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(constant_id = 0) const float kScale = 1.0;
+// clang-format off
 layout(push_constant) uniform Push {
     float offset;
     uint width;
@@ -9,6 +10,7 @@ layout(push_constant) uniform Push {
 } pc;
 layout(std430, binding = 0) readonly buffer Input { float values[]; } inputs;
 layout(std430, binding = 1) writeonly buffer Output { float values[]; } outputs;
+// clang-format on
 layout(rgba16f, binding = 2) uniform writeonly image2D image;
 
 void main() {

@@ -22,14 +22,14 @@ layout(binding = 3) uniform sampler3D noiseTexture;
 #include "fog/medium.glsl"
 
 // Must match FunctionCase in test_shader_functions.cpp.
-const uint kPhase = 0u;          // a.xyz view dir, b.xyz to light, c.x g     -> x: p [1/sr]
-const uint kOneMinusExp = 1u;    // a.x x                                     -> x: 1 - e^-x, y: (1 - e^-x)/x
-const uint kHeightTerm = 2u;     // a.x height above base, c.y falloff        -> x: h
+const uint kPhase = 0u;        // a.xyz view dir, b.xyz to light, c.x g     -> x: p [1/sr]
+const uint kOneMinusExp = 1u;  // a.x x                                     -> x: 1 - e^-x, y: (1 - e^-x)/x
+const uint kHeightTerm = 2u;   // a.x height above base, c.y falloff        -> x: h
 const uint kSunTransmittance = 3u;  // a.x height, c.x density, c.y falloff, b.y toSun.y -> x: Tsun
-const uint kTailDepth = 4u;      // a.x height0, a.y dirY, a.z len, c.x density, c.y falloff -> x: τ
-const uint kIgn = 5u;            // op.y, op.z pixel, op.w frame              -> x: IGN
-const uint kComposite = 6u;      // a.xyz color, a.w T, b.xyz L               -> xyz: out
-const uint kIntegrateStep = 7u;  // a.x T, a.y light, a.z optical depth       -> x: in-scattered
+const uint kTailDepth = 4u;         // a.x height0, a.y dirY, a.z len, c.x density, c.y falloff -> x: τ
+const uint kIgn = 5u;               // op.y, op.z pixel, op.w frame              -> x: IGN
+const uint kComposite = 6u;         // a.xyz color, a.w T, b.xyz L               -> xyz: out
+const uint kIntegrateStep = 7u;     // a.x T, a.y light, a.z optical depth       -> x: in-scattered
 
 struct FunctionCase {
     vec4 a;
@@ -37,9 +37,15 @@ struct FunctionCase {
     vec4 c;
     uvec4 op;  // x: kind; y, z, w: integer inputs
 };
-layout(std430, binding = 0) readonly buffer Cases { FunctionCase cases[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec4 results[]; };
+layout(std430, binding = 0) readonly buffer Cases {
+    FunctionCase cases[];
+};
+layout(std430, binding = 1) writeonly buffer Results {
+    vec4 results[];
+};
+// clang-format off
 layout(push_constant) uniform Push { uint count; } pc;
+// clang-format on
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
@@ -50,14 +56,31 @@ void main() {
     fog.flags = uvec4(kFogFlagSelfShadow, 0u, 0u, 0u);
     vec4 r = vec4(0.0);
     switch (fc.op.x) {
-        case kPhase: r.x = henyeyGreensteinDirections(fc.a.xyz, fc.b.xyz, fc.c.x); break;
-        case kOneMinusExp: r.x = oneMinusExp(fc.a.x); r.y = oneMinusExpOverX(fc.a.x); break;
-        case kHeightTerm: r.x = heightTerm(fc.a.x); break;
-        case kSunTransmittance: r.x = sunTransmittance(fc.a.x); break;
-        case kTailDepth: r.x = heightFogOpticalDepth(fc.a.x, fc.a.y, fc.a.z); break;
-        case kIgn: r.x = interleavedGradientNoise(fc.op.yz, fc.op.w); break;
-        case kComposite: r.xyz = compositeFog(fc.a.xyz, fc.a.w, fc.b.xyz); break;
-        case kIntegrateStep: r.x = integrateStep(fc.a.x, vec3(fc.a.y), fc.a.z).x; break;
+        case kPhase:
+            r.x = henyeyGreensteinDirections(fc.a.xyz, fc.b.xyz, fc.c.x);
+            break;
+        case kOneMinusExp:
+            r.x = oneMinusExp(fc.a.x);
+            r.y = oneMinusExpOverX(fc.a.x);
+            break;
+        case kHeightTerm:
+            r.x = heightTerm(fc.a.x);
+            break;
+        case kSunTransmittance:
+            r.x = sunTransmittance(fc.a.x);
+            break;
+        case kTailDepth:
+            r.x = heightFogOpticalDepth(fc.a.x, fc.a.y, fc.a.z);
+            break;
+        case kIgn:
+            r.x = interleavedGradientNoise(fc.op.yz, fc.op.w);
+            break;
+        case kComposite:
+            r.xyz = compositeFog(fc.a.xyz, fc.a.w, fc.b.xyz);
+            break;
+        case kIntegrateStep:
+            r.x = integrateStep(fc.a.x, vec3(fc.a.y), fc.a.z).x;
+            break;
     }
     results[i] = r;
 }
