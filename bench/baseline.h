@@ -1,8 +1,9 @@
 // The two baselines the accuracy–cost benchmark puts beside postfx's fog, run on the same inputs:
-//   SeedAsWritten:    ../shared/seeds/urp-raymarch-fog.md's shader as written: fixed step length (cost grows
-//                     with distance), its phase formula (numerator 1 - cos²θ), in-scattering neither
-//                     attenuated by the transmittance in front nor integrated, added to a constant fog
-//                     colour and blended by 1 - T.
+//   SeedAsWritten:    the shader postfx started from (a Unity URP post-process fog shader from a Korean
+//                     tutorial article; bench/shaders/seed_as_written.comp) as written: fixed step length
+//                     (cost grows with distance), its phase formula (numerator 1 - cos²θ), in-scattering
+//                     neither attenuated by the transmittance in front nor integrated, added to a
+//                     constant fog colour and blended by 1 - T.
 //   SeedFixedRiemann: the same with its formula errors fixed (real Henyey–Greenstein, T·σs·light·Δ,
 //                     color·T + L) but still a plain Riemann sum with fixed step length.
 // Both read the medium exactly as postfx does (shaders/fog/medium.glsl with postfx's FogUniforms).

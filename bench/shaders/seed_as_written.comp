@@ -1,9 +1,17 @@
 #version 450
-// Baseline "seed-as-written" of the accuracy–cost benchmark (bench/baseline.h): the ray march of
-// ../shared/seeds/urp-raymarch-fog.md as its author wrote it, over postfx's medium. One invocation per
-// pixel; the bindings and FogUniforms are those of shaders/fog/raymarch.comp, and σt, the shadow-map
-// visibility and the fog's sun transmittance come from shaders/fog/medium.glsl, so only the
-// integration, the phase function and the composite differ from postfx:
+// Baseline "seed-as-written" of the accuracy–cost benchmark (bench/baseline.h): the ray march postfx
+// started from, as its author wrote it, over postfx's medium.
+//
+// Where it came from: a Unity URP post-process fog shader, described in a Korean tutorial article. A
+// full-screen pass marches each pixel's ray from the camera to the depth buffer's surface (clipped to a
+// maximum distance) in steps of a fixed length, the start offset by interleaved gradient noise of the
+// pixel and the frame; each step with density adds main light × shadow × Henyey–Greenstein phase ×
+// density × step, and multiplies the transmittance by exp(-density · step); the pixel becomes
+// lerp(scene colour, fog colour, 1 - T). This file is our own code for that algorithm.
+//
+// One invocation per pixel; the bindings and FogUniforms are those of shaders/fog/raymarch.comp, and σt,
+// the shadow-map visibility and the fog's sun transmittance come from shaders/fog/medium.glsl, so only
+// the integration, the phase function and the composite differ from postfx:
 //   D = min(surface distance, max distance); t = IGN(pixel, frame) · Δ   (Δ = push.stepLength [m])
 //   while (t < D) {                          // cost grows with D: no step cap (a safety cap of
 //       σ = σt(t·d)                          // kMaxIterations only, so a far or tiny-step ray ends)
@@ -11,12 +19,13 @@
 //       t += Δ;
 //   }
 //   out = mix(color, L + albedo · ambient, 1 - T)
-// The seed's errors are kept on purpose (../shared/seeds/README.md): its phase function's numerator is
-// 1 - cos²θ instead of 1 - g²; the in-scattered light is neither attenuated by the transmittance in
+// The seed's errors are kept on purpose (docs/effects/fog.md lists them): its phase function's numerator
+// is 1 - cos²θ instead of 1 - g²; the in-scattered light is neither attenuated by the transmittance in
 // front of it nor multiplied by the albedo; it is added to a constant fog colour (the seed's _Color:
 // here albedo · ambient, the radiance a fully opaque fog lit by the ambient alone would have) and the
-// sum is blended in by 1 - T. The seed has no ambient in-scattering and no fog self-shadowing (V is the
-// shadow map only). With jitter off (fog.jitter) the offset is 0.5 instead of IGN, as in postfx.
+// sum is blended in by 1 - T, which scales the light a second time; the step count grows with the
+// distance. The seed has no ambient in-scattering and no fog self-shadowing (V is the shadow map only).
+// With jitter off (fog.jitter) the offset is 0.5 instead of IGN, as in postfx.
 #extension GL_GOOGLE_include_directive : require
 
 #include "fog/fog_shared.h"
@@ -24,15 +33,17 @@
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 
 #include "fog/bindings.glsl"
+// clang-format off
 layout(push_constant) uniform Push {
     float stepLength;  // Δ [m], > 0
 } push;
+// clang-format on
 
 #include "common/ign.glsl"
 #include "fog/medium.glsl"
 #include "fog/ray.glsl"
 
-const uint kMaxIterations = 100000u;    // safety cap only; the seed has none
+const uint kMaxIterations = 100000u;  // safety cap only; the seed has none
 const float kPi = 3.14159265358979;
 
 // The seed's henyey_greenstein(angle, scattering), exactly as it computes it:

@@ -1,9 +1,10 @@
 #version 450
 // Baseline "seed-fixed-riemann" of the accuracy–cost benchmark (bench/baseline.h): the seed's ray march
-// (../shared/seeds/urp-raymarch-fog.md) with its formula errors fixed but still a plain Riemann sum with a
-// fixed step length. One invocation per pixel; the bindings and FogUniforms are those of
-// shaders/fog/raymarch.comp, and σt, the shadow-map visibility V and the fog's sun transmittance Tsun
-// come from shaders/fog/medium.glsl, so the medium and its light are postfx's:
+// (the Unity URP fog shader postfx started from; seed_as_written.comp says where it came from) with its
+// formula errors fixed but still a plain Riemann sum with a fixed step length. One invocation per pixel;
+// the bindings and FogUniforms are those of shaders/fog/raymarch.comp, and σt, the shadow-map visibility
+// V and the fog's sun transmittance Tsun come from shaders/fog/medium.glsl, so the medium and its light
+// are postfx's:
 //   D = min(surface distance, max distance); t = IGN(pixel, frame) · Δ   (Δ = push.stepLength [m])
 //   while (t < D) {                          // cost grows with D (safety cap kMaxIterations only)
 //       δ = min(Δ, D - t)                    // the last step clipped to D
@@ -24,9 +25,11 @@
 layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 
 #include "fog/bindings.glsl"
+// clang-format off
 layout(push_constant) uniform Push {
     float stepLength;  // Δ [m], > 0
 } push;
+// clang-format on
 
 #include "common/ign.glsl"
 #include "common/phase.glsl"

@@ -350,7 +350,7 @@ nlohmann::json sceneToJson(const Scene& scene) {
 }
 
 Scene defaultScene() {
-    // Parsed once; tests/unit/test_scene.cpp checks that the embedded file is valid.
+    // Parsed once; tests/demo/test_scene.cpp checks that the embedded file is valid.
     static const Scene scene = [] {
         Scene s;
         std::string error;

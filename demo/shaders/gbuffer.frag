@@ -3,7 +3,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "demo_shared.h"
 
-layout(push_constant) uniform PushBlock { DrawPush draw; };
+layout(push_constant) uniform PushBlock {
+    DrawPush draw;
+};
 
 layout(location = 0) in vec3 inNormal;
 

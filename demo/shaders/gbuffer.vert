@@ -3,7 +3,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "demo_shared.h"
 
-layout(set = 0, binding = kBindingFrame, std140) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = kBindingFrame, std140) uniform FrameBlock {
+    FrameUniforms frame;
+};
 
 layout(location = kAttribPosition) in vec3 inPosition;  // world [m]
 layout(location = kAttribNormal) in vec3 inNormal;      // world, unit

@@ -6,7 +6,9 @@
 
 layout(local_size_x = kLightingGroupSize, local_size_y = kLightingGroupSize) in;
 
-layout(set = 0, binding = kBindingFrame, std140) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = kBindingFrame, std140) uniform FrameBlock {
+    FrameUniforms frame;
+};
 layout(set = 0, binding = kBindingAlbedo) uniform sampler2D gAlbedo;
 layout(set = 0, binding = kBindingNormal) uniform sampler2D gNormal;
 layout(set = 0, binding = kBindingDepth) uniform sampler2D gDepth;
@@ -34,7 +36,8 @@ void main() {
         float nDotL = max(dot(n, frame.toSun.xyz), 0.0);
         float visibility = 1.0;
         if (frame.toSun.w > 0.5 && nDotL > 0.0) visibility = sunVisibility(world, n, nDotL);
-        radiance = albedo / kPi * frame.sunIlluminance.rgb * (nDotL * visibility) + albedo * frame.ambient.rgb;
+        radiance =
+            albedo / kPi * frame.sunIlluminance.rgb * (nDotL * visibility) + albedo * frame.ambient.rgb;
     }
     imageStore(hdr, pixel, vec4(min(radiance, vec3(kHalfMax)), 1.0));
 }

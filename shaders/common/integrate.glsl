@@ -9,8 +9,10 @@
 // 0.61, so 1 - e^{-x} loses at most 2 bits. x = +Inf gives 0.
 float oneMinusExpOverX(float x) {
     if (x < 0.5) {
+        // clang-format off
         return 1.0 - x * (1.0 / 2.0 - x * (1.0 / 6.0 - x * (1.0 / 24.0 - x * (1.0 / 120.0 -
                x * (1.0 / 720.0 - x * (1.0 / 5040.0 - x * (1.0 / 40320.0)))))));
+        // clang-format on
     }
     return (1.0 - exp(-x)) / x;
 }

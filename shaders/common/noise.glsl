@@ -37,13 +37,19 @@ uvec3 noisePcg3d(uvec3 v) {
 }
 
 // Key of one noise layer (an octave of Perlin: layer o, of Worley: 16 + o) for a seed.
-uvec3 noiseLayerKey(uint seed, uint layer) { return noisePcg3d(uvec3(seed, layer, 0x6E6F6973u)); }
+uvec3 noiseLayerKey(uint seed, uint layer) {
+    return noisePcg3d(uvec3(seed, layer, 0x6E6F6973u));
+}
 
 // Hash of a lattice cell (indices already wrapped to the period) within a layer.
-uvec3 noiseCellHash(uvec3 cell, uvec3 key) { return noisePcg3d(cell ^ key); }
+uvec3 noiseCellHash(uvec3 cell, uvec3 key) {
+    return noisePcg3d(cell ^ key);
+}
 
 // The top 24 bits of a hash as a float in [0, 1) (exact).
-float noiseUnitFloat(uint h) { return float(h >> 8u) * (1.0 / 16777216.0); }
+float noiseUnitFloat(uint h) {
+    return float(h >> 8u) * (1.0 / 16777216.0);
+}
 
 // Dot product of d with one of Perlin's 16 gradients (12 cube edges, 4 repeated), chosen by the hash's
 // top 4 bits. Each term is ±d.? exactly, so the sum is rounded once.
@@ -54,9 +60,13 @@ float noiseGradDot(uint h, float dx, float dy, float dz) {
     return ((k & 1u) == 0u ? u : -u) + ((k & 2u) == 0u ? v : -v);
 }
 
-float noiseFade(float t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+float noiseFade(float t) {
+    return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+}
 
-float noiseLerp(float a, float b, float t) { return a + (b - a) * t; }
+float noiseLerp(float a, float b, float t) {
+    return a + (b - a) * t;
+}
 
 float noiseRemap(float v, float lo, float hi, float newLo, float newHi) {
     return newLo + (v - lo) / (hi - lo) * (newHi - newLo);
@@ -124,7 +134,8 @@ float perlinFbm(uvec3 texel, uint size, uint seed) {
     float total = 0.0;
     for (uint o = 0u; o < kNoisePerlinOctaves; ++o) {
         uint period = min(kNoisePerlinBasePeriod << o, size);
-        sum += amplitude * perlinNoise(noiseLatticeCoord(texel, period, size), period, noiseLayerKey(seed, o));
+        sum +=
+            amplitude * perlinNoise(noiseLatticeCoord(texel, period, size), period, noiseLayerKey(seed, o));
         total += amplitude;
         amplitude *= 0.5;
     }

@@ -15,7 +15,9 @@ layout(binding = kCopyBindingOut, rgba32f) uniform writeonly image2D colorOut;
 layout(binding = kCopyBindingIn, rgba16f) uniform readonly image2D colorIn;
 layout(binding = kCopyBindingOut, rgba16f) uniform writeonly image2D colorOut;
 #endif
+// clang-format off
 layout(push_constant) uniform Push { uvec2 extent; } pc;
+// clang-format on
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;

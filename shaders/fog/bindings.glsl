@@ -15,6 +15,8 @@ const float kColorMax = 65504.0;  // largest finite half: never write Inf
 layout(binding = kFogBindingDepth) uniform sampler2D depthTexture;
 layout(binding = kFogBindingShadowMap) uniform sampler2D shadowMap;
 layout(binding = kFogBindingNoise) uniform sampler3D noiseTexture;
-layout(binding = kFogBindingUniforms, std140) uniform Uniforms { FogUniforms fog; };
+layout(binding = kFogBindingUniforms, std140) uniform Uniforms {
+    FogUniforms fog;
+};
 
 #endif

@@ -19,7 +19,8 @@ vec2 mediumInterval(float dirY, float marchDistance) {
     float below = fog.heights.y - fog.heights.x;  // how far the top is above the camera (< 0: camera above)
     if (dirY == 0.0) return vec2(0.0, below > 0.0 ? marchDistance : 0.0);
     float tCross = below / dirY;
-    return dirY > 0.0 ? vec2(0.0, clamp(tCross, 0.0, marchDistance)) : vec2(clamp(tCross, 0.0, marchDistance), marchDistance);
+    return dirY > 0.0 ? vec2(0.0, clamp(tCross, 0.0, marchDistance))
+                      : vec2(clamp(tCross, 0.0, marchDistance), marchDistance);
 }
 
 // `jitterPixel` seeds the interleaved-gradient-noise start offset: the pixel of the image the march

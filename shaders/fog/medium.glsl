@@ -5,7 +5,9 @@
 
 #include "common/integrate.glsl"
 
-bool fogFlag(uint flag) { return (fog.flags.x & flag) != 0u; }
+bool fogFlag(uint flag) {
+    return (fog.flags.x & flag) != 0u;
+}
 
 // h(y) = exp(-height_falloff · (y - base_height)), exponent clamped so far below the base it stays finite.
 float heightTerm(float heightAboveBase) {

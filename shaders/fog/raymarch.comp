@@ -23,5 +23,6 @@ void main() {
     if (any(greaterThanEqual(pixel, fog.extent.xy))) return;
     vec4 color = imageLoad(colorIn, ivec2(pixel));
     FogScatter s = marchFog(fogRay(pixel), pixel);
-    imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, s.transmittance, s.inScattered), color.a));
+    imageStore(colorOut, ivec2(pixel),
+               vec4(compositeFog(color.rgb, s.transmittance, s.inScattered), color.a));
 }

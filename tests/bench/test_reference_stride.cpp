@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
+#include <string>
 
 namespace {
 
@@ -18,9 +20,13 @@ struct StrideCase {
     uint32_t width, height, stride;
 };
 
-class ReferenceStride : public ::testing::TestWithParam<StrideCase> {};
+void PrintTo(const StrideCase& c, std::ostream* os) {
+    *os << c.scene << " " << c.width << "x" << c.height << " stride " << c.stride;
+}
 
-TEST_P(ReferenceStride, MatchesTheFullReferenceAtItsPixels) {
+class BenchReferenceStride : public ::testing::TestWithParam<StrideCase> {};
+
+TEST_P(BenchReferenceStride, MatchesTheFullReferenceAtItsPixels) {
     const StrideCase c = GetParam();
     std::string error;
     demo::HostOptions hostOptions;
@@ -62,9 +68,13 @@ TEST_P(ReferenceStride, MatchesTheFullReferenceAtItsPixels) {
     EXPECT_EQ(host->validationMessageCount(), 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ReferenceStride,
+INSTANTIATE_TEST_SUITE_P(Scenes, BenchReferenceStride,
                          ::testing::Values(StrideCase{"fog_default", 40, 24, 4},
                                            StrideCase{"fog_shadowed", 37, 22, 3},
-                                           StrideCase{"fog_height", 33, 20, 5}));
+                                           StrideCase{"fog_height", 33, 20, 5}),
+                         [](const ::testing::TestParamInfo<StrideCase>& info) {
+                             return std::string(info.param.scene) + "_stride" +
+                                    std::to_string(info.param.stride);
+                         });
 
 }  // namespace

@@ -29,7 +29,7 @@ struct QualityPreset {
     uint32_t shadowKernel;
     float resolutionScale;
 };
-// FogSettings' defaults are Medium's values (tests/unit/test_scene_fog.cpp checks it).
+// FogSettings' defaults are Medium's values (tests/fog/test_fog_scene.cpp checks it).
 // Chosen by postfx-bench's rule from the H100 run in docs/accuracy-cost/h100/ (README.md there: timed on
 // fog_default at 1920×1080, lowest 16-frame error averaged over the scenes within 0.25 / 0.5 / 1 / 2 ms).
 constexpr QualityPreset kQualityPresets[] = {
