@@ -4,7 +4,9 @@
 #   std::span<const uint32_t> <namespace>::<name>   (name: relative path with '/' and '.' as '_')
 # A variant is written `path@DEFINE`: compiled with -DDEFINE, named <name>_<DEFINE>.
 # declared in the generated header <target>_spirv.h. No shader file is read at run time.
-find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
+# glslangValidator is the one build-time tool postfx needs beyond the compiler (Debian: glslang-tools).
+find_program(POSTFX_GLSLANG_VALIDATOR glslangValidator REQUIRED)
+set(POSTFX_COMPILE_GLSL_SCRIPT "${CMAKE_CURRENT_LIST_DIR}/compile_glsl.cmake")
 
 function(postfx_embed_shaders target)
     cmake_parse_arguments(ARG "" "NAMESPACE;SOURCE_DIR" "SHADERS;INCLUDE_DIRS" ${ARGN})
@@ -28,11 +30,11 @@ function(postfx_embed_shaders target)
         set(out "${gen_dir}/${name}.h")
         add_custom_command(
             OUTPUT "${out}"
-            COMMAND "${CMAKE_COMMAND}" -DGLSLANG=${GLSLANG_VALIDATOR} -DSRC=${src} -DOUT=${out}
+            COMMAND "${CMAKE_COMMAND}" -DGLSLANG=${POSTFX_GLSLANG_VALIDATOR} -DSRC=${src} -DOUT=${out}
                     -DVAR=${name}_words "-DINCLUDES=${ARG_INCLUDE_DIRS}" -DDEPFILE=${out}.d
                     -DDEFINE=${define}
-                    -P "${PROJECT_SOURCE_DIR}/cmake/compile_glsl.cmake"
-            DEPENDS "${src}" "${PROJECT_SOURCE_DIR}/cmake/compile_glsl.cmake"
+                    -P "${POSTFX_COMPILE_GLSL_SCRIPT}"
+            DEPENDS "${src}" "${POSTFX_COMPILE_GLSL_SCRIPT}"
             DEPFILE "${out}.d"
             COMMENT "glslang ${entry}"
             VERBATIM)

@@ -287,5 +287,64 @@ TEST_F(FogQualityTest, AutoWithoutTimingsUsesMedium) {
     EXPECT_EQ(messages.warnings, 1);
 }
 
+// Timings carry their origin (postfx version, device, driver); a new context skips, with a warning,
+// those of another origin, so a host's stored cache is remeasured after an upgrade; zero device
+// fields match any device.
+TEST_F(FogQualityTest, AutoTimingsOfAnotherOriginAreSkipped) {
+    postfx::ContextCreateInfo info;
+    info.depth.reversedZ = true;
+    struct Messages {
+        std::vector<std::string> warnings;
+    } messages;
+    info.messageCallback = [](postfx::MessageSeverity severity, const char* text, void* user) {
+        if (severity == postfx::MessageSeverity::Warning)
+            static_cast<Messages*>(user)->warnings.push_back(text);
+    };
+    info.messageUserData = &messages;
+    std::unique_ptr<postfx::Context> context;
+    ASSERT_TRUE(createContext(context, info).ok());
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(host->physicalDevice, &properties);
+
+    postfx::FogAutoTimings here;  // default origin: this postfx, any device
+    here.width = kWidth;
+    here.height = kHeight;
+    here.presetMs[0] = 1.0f, here.presetMs[1] = 2.0f, here.presetMs[2] = 3.0f, here.presetMs[3] = 4.0f;
+    EXPECT_EQ(here.origin.postfxVersion, postfx::version());
+    postfx::FogAutoTimings olderPostfx = here, otherDevice = here, otherDriver = here, sameDevice = here;
+    olderPostfx.width = kWidth + 1;
+    olderPostfx.origin.postfxVersion = POSTFX_MAKE_VERSION(0, 0, 1);
+    otherDevice.width = kWidth + 2;
+    otherDevice.origin.vendorId = properties.vendorID;
+    otherDevice.origin.deviceId = properties.deviceID + 1;
+    otherDriver.width = kWidth + 3;
+    otherDriver.origin = {postfx::version(), properties.vendorID, properties.deviceID,
+                          properties.driverVersion + 1};
+    sameDevice.width = kWidth + 4;
+    sameDevice.origin = {postfx::version(), properties.vendorID, properties.deviceID,
+                         properties.driverVersion};
+    ASSERT_TRUE(
+        postfx::setFogAutoTimings(*context, {here, olderPostfx, otherDevice, otherDriver, sameDevice}).ok());
+
+    const std::vector<postfx::FogAutoTimings> kept = postfx::fogAutoTimings(*context);
+    ASSERT_EQ(kept.size(), 2u);
+    for (const postfx::FogAutoTimings& t : kept) {
+        EXPECT_TRUE(t.width == here.width || t.width == sameDevice.width) << t.width;
+        // Returned with this context's origin, whatever they were given with.
+        EXPECT_EQ(t.origin.postfxVersion, postfx::version());
+        EXPECT_EQ(t.origin.vendorId, properties.vendorID);
+        EXPECT_EQ(t.origin.deviceId, properties.deviceID);
+        EXPECT_EQ(t.origin.driverVersion, properties.driverVersion);
+    }
+    ASSERT_EQ(messages.warnings.size(), 3u);
+    EXPECT_NE(messages.warnings[0].find("timings[1]: measured with postfx 0.0.1"), std::string::npos)
+        << messages.warnings[0];
+    EXPECT_NE(messages.warnings[1].find("timings[2]: measured with another device"), std::string::npos)
+        << messages.warnings[1];
+    EXPECT_NE(messages.warnings[2].find("timings[3]: measured with another driver version"),
+              std::string::npos)
+        << messages.warnings[2];
+}
+
 }  // namespace
 }  // namespace test

@@ -6,6 +6,7 @@
 // instance-level function through the host's vkGetInstanceProcAddr; it links no Vulkan loader.
 #pragma once
 
+#include <postfx/export.h>
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>
 #include <postfx/inputs.h>
@@ -56,7 +57,8 @@ struct FrameInfo {
     // Formats: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, usage STORAGE. Effects composite into it.
     // Its alpha is carried through unchanged.
     ImageInput color;
-    // Scene depth, D32_SFLOAT / D16_UNORM / D24_UNORM_S8_UINT / X8_D24_UNORM_PACK32, usage SAMPLED,
+    // Scene depth, D32_SFLOAT / D16_UNORM / D24_UNORM_S8_UINT / X8_D24_UNORM_PACK32 / D32_SFLOAT_S8_UINT
+    // (its view must select the depth aspect only), usage SAMPLED,
     // same extent as color, in the context's DepthConvention.
     ImageInput depth;
     // Optional: when present, the result goes here (not the color image; same extent and format, usage
@@ -91,9 +93,10 @@ struct AutoQualityTimings {
     uint32_t width = 0, height = 0;  // color image extent [px]; each >= 1
     uint32_t features = 0;           // bits the effect defines (fog: kFogAutoFeature*)
     std::vector<float> presetMs;     // one per preset, lowest preset first [ms]; each finite, >= 0
+    TimingsOrigin origin;            // postfx version, device and driver they were measured with
 };
 
-class Context {
+class POSTFX_API Context {
 public:
     // Creates a context; on failure `out` stays empty and the status names the problem.
     static Status create(const ContextCreateInfo& info, std::unique_ptr<Context>& out);
@@ -102,7 +105,11 @@ public:
     Context& operator=(const Context&) = delete;
 
     // Records this frame's passes into frame.commandBuffer. The host must have waited until the
-    // frame recorded framesInFlight frames ago has completed on the GPU.
+    // frame recorded framesInFlight frames ago has completed on the GPU. Once per frameIndex, which only
+    // grows (a resize does not reset it); every command buffer record() wrote into must be submitted
+    // (postfx tracks its own images' layouts from what it recorded). record() binds its own compute
+    // pipelines, descriptor sets and push constants and leaves them bound: the host rebinds its compute
+    // state after it. docs/integration.md has the whole contract (layouts, synchronization, threads).
     Status record(const FrameInfo& frame);
 
     // What record(frame) would record now (docs/frame-plan.md): its passes in order, with what each reads
@@ -127,13 +134,14 @@ public:
     // key's presets are being measured or no Auto frame was recorded; InvalidArgument for an unknown
     // effect or one without presets.
     Status autoQuality(std::string_view effect, uint32_t& preset) const;
-    // Every key measured so far (all presets) or given, for a host that keeps them between runs. Key
-    // them by device, driver and postfx version where they are stored: the presets' cost depends on all
-    // three.
+    // Every key measured so far (all presets) or given, for a host that keeps them between runs; each
+    // carries its origin (postfx version, device, driver), since the presets' cost depends on all three.
     std::vector<AutoQualityTimings> autoQualityTimings() const;
     // Adds `timings` to Auto's cache (replacing keys it has), so frames with those keys choose from the
     // first frame. InvalidArgument naming the entry for an unknown effect, a preset count that is not
-    // the effect's, a zero extent or a time that is negative or not finite; then nothing is added.
+    // the effect's, a zero extent or a time that is negative or not finite; then nothing is added. An
+    // entry of another origin (TimingsOrigin: postfx version, device or driver) is skipped with a warning:
+    // those keys are measured again.
     Status setAutoQualityTimings(const std::vector<AutoQualityTimings>& timings);
 
     // An image postfx holds between frames (an effect's noise texture or LUT, named in its header, e.g.
@@ -149,7 +157,7 @@ public:
 
     const ContextCreateInfo& createInfo() const;
 
-    struct Impl;  // internal; defined in postfx/src/core
+    struct POSTFX_INTERNAL Impl;  // internal; defined in postfx/src/core
 
 private:
     friend struct ContextAccess;  // postfx's internals (tests add test-only effects through it)

@@ -4,6 +4,7 @@
 // an error naming the field, except where "clamped" is written.
 #pragma once
 
+#include <postfx/export.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
 
@@ -99,19 +100,20 @@ struct FogAutoTimings {
     bool noise = false;              // fog.noise.enabled
     bool shadowMap = false;          // FrameInfo::shadowMap.image present
     float presetMs[4] = {};          // Low, Medium, High, Ultra [ms]; each finite, >= 0
+    TimingsOrigin origin;            // postfx version, device and driver they were measured with
 };
 
 // Checks every setting against its documented range; InvalidArgument naming the first bad field with
 // its scene-file name ("fog.noise.tiling: 0 must be > 0"). Context::record runs the same check.
-Status validateFogSettings(const FogSettings& settings);
+POSTFX_API Status validateFogSettings(const FogSettings& settings);
 
 // Size of the fog's march for a color image of `width`×`height` at `resolutionScale` [px]:
 // max(1, ceil(size · scale)) per axis; the image's own size at scale 1 (then the fog runs one pass).
-UVec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale);
+POSTFX_API UVec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale);
 
 // `settings` with steps, jitter, shadowKernel and resolutionScale set by preset `quality`; Custom and
 // Auto: unchanged.
-FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality);
+POSTFX_API FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality);
 
 // Auto's feature bits for the fog (AutoQualityTimings::features): what changes its presets' cost.
 inline constexpr uint32_t kFogAutoFeatureNoise = 1;      // fog.noise.enabled
@@ -127,22 +129,23 @@ inline constexpr ResourceName kFogNoiseTexture{"fog.noise"};
 // The preset FogQuality::Auto chose for the last recorded frame's (color extent, noise on, shadow map
 // present): NotReady while that key's presets are still being measured (or no Auto frame has been
 // recorded). Medium when GPU timings are off.
-Status fogAutoQuality(const Context& context, FogQuality& chosen);
+POSTFX_API Status fogAutoQuality(const Context& context, FogQuality& chosen);
 // Auto's measurements, for a host that keeps them between runs, as engines keep the result of their
-// quality auto-detection: every key measured so far (all four presets) or given. Key them by device,
-// driver and postfx version where they are stored: the presets' cost depends on all three.
-std::vector<FogAutoTimings> fogAutoTimings(const Context& context);
+// quality auto-detection: every key measured so far (all four presets) or given, each with its origin
+// (postfx version, device, driver: the presets' cost depends on all three).
+POSTFX_API std::vector<FogAutoTimings> fogAutoTimings(const Context& context);
 // Adds `timings` to Auto's cache (replacing keys it has), so frames with those keys choose from the
 // first frame instead of measuring. InvalidArgument naming the entry for a zero extent or a time that
-// is negative or not finite; then nothing is added.
-Status setFogAutoTimings(Context& context, const std::vector<FogAutoTimings>& timings);
+// is negative or not finite; then nothing is added. An entry of another origin is skipped with a
+// warning (Context::setAutoQualityTimings).
+POSTFX_API Status setFogAutoTimings(Context& context, const std::vector<FogAutoTimings>& timings);
 // Records a copy of the generated noise texture (R8, size³ bytes, x fastest, then y, then z) into
 // `buffer` at `offset` (usage TRANSFER_DST); `size` receives the texture's edge. InvalidArgument when no
 // texture has been generated (fog with generated noise has not been recorded yet).
-Status recordFogNoiseReadback(const Context& context, VkCommandBuffer commandBuffer, VkBuffer buffer,
-                              VkDeviceSize offset, uint32_t& size);
+POSTFX_API Status recordFogNoiseReadback(const Context& context, VkCommandBuffer commandBuffer,
+                                         VkBuffer buffer, VkDeviceSize offset, uint32_t& size);
 // The generated noise texture's view (in SHADER_READ_ONLY_OPTIMAL once the frame that generated it has
 // executed), VK_NULL_HANDLE when none is held (fog or generated noise off).
-VkImageView fogNoiseView(const Context& context);
+POSTFX_API VkImageView fogNoiseView(const Context& context);
 
 }  // namespace postfx

@@ -7,6 +7,7 @@
 // "<effect>.<name>" ("fog.noise", "fog.scatter", "fog.uniforms", ...).
 #pragma once
 
+#include <postfx/export.h>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -30,7 +31,7 @@ struct PlannedResource {
     uint64_t bytes = 0;
 };
 
-struct FramePlan {
+struct POSTFX_API FramePlan {
     std::vector<PlannedPass> passes;         // in recording order
     std::vector<PlannedResource> resources;  // every resource postfx holds after recording the frame
 

@@ -7,3 +7,4 @@
 #include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
+#include <postfx/version.h>

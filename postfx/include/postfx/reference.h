@@ -3,6 +3,7 @@
 // data, so that the difference between the two is integration and precision error only.
 #pragma once
 
+#include <postfx/export.h>
 #include <postfx/fog.h>
 #include <postfx/inputs.h>
 #include <postfx/result.h>
@@ -44,9 +45,9 @@ struct FogInputs {
 };
 
 // Renders the fog over `inputs.color` into `out` (RGBA, same layout). Validates like Context::record.
-Status renderFog(const FogInputs& inputs, std::vector<float>& out);
+POSTFX_API Status renderFog(const FogInputs& inputs, std::vector<float>& out);
 
 // The model's pieces, exposed for tests.
-double henyeyGreenstein(double cosTheta, double g);  // [1/sr]; g clamped to [-0.999, 0.999]
+POSTFX_API double henyeyGreenstein(double cosTheta, double g);  // [1/sr]; g clamped to [-0.999, 0.999]
 
 }  // namespace postfx::reference

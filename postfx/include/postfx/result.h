@@ -2,6 +2,7 @@
 // a call that cannot do what was asked returns a Status whose message names the problem.
 #pragma once
 
+#include <postfx/export.h>
 #include <string>
 
 namespace postfx {
@@ -16,7 +17,7 @@ enum class Result {
 };
 
 // A short, stable name for a result code ("InvalidArgument").
-const char* resultName(Result result);
+POSTFX_API const char* resultName(Result result);
 
 struct [[nodiscard]] Status {
     Result code = Result::Success;

@@ -1,6 +1,8 @@
 // Plain types shared by the public headers.
 #pragma once
 
+#include <postfx/export.h>
+#include <postfx/version.h>
 #include <vulkan/vulkan.h>
 
 #include <glm/glm.hpp>
@@ -52,7 +54,18 @@ struct ResourceName {
     const char* value = "";
 };
 
+// Where quality Auto's timings were measured. They hold only for the same postfx version, device and
+// driver: Context::setAutoQualityTimings skips (with a warning through the message callback) an entry
+// whose fields differ from the running context's, so a host's stored cache is remeasured after an
+// upgrade of postfx, a new GPU or a new driver. Context::autoQualityTimings fills every field.
+struct TimingsOrigin {
+    uint32_t postfxVersion = POSTFX_VERSION;  // POSTFX_VERSION of the library that measured them
+    uint32_t vendorId = 0;       // VkPhysicalDeviceProperties::vendorID; 0: not recorded (any vendor)
+    uint32_t deviceId = 0;       // VkPhysicalDeviceProperties::deviceID; 0: not recorded (any device)
+    uint32_t driverVersion = 0;  // VkPhysicalDeviceProperties::driverVersion; 0: not recorded (any)
+};
+
 // "VK_FORMAT_R8G8B8A8_UNORM" for the formats postfx names in its messages; "VkFormat 1234" otherwise.
-std::string formatName(VkFormat format);
+POSTFX_API std::string formatName(VkFormat format);
 
 }  // namespace postfx

@@ -46,6 +46,29 @@ void Context::Impl::warn(const std::string& message) const {
         info.messageCallback(MessageSeverity::Warning, message.c_str(), info.messageUserData);
 }
 
+TimingsOrigin Context::Impl::timingsOrigin() const {
+    const VkPhysicalDeviceProperties& p = gpu.properties;
+    return {POSTFX_VERSION, p.vendorID, p.deviceID, p.driverVersion};
+}
+
+std::string Context::Impl::otherOrigin(const TimingsOrigin& origin) const {
+    const TimingsOrigin here = timingsOrigin();
+    auto version = [](uint32_t v) {
+        return std::to_string(v >> 22u) + "." + std::to_string((v >> 12u) & 0x3ffu) + "." +
+               std::to_string(v & 0xfffu);
+    };
+    if (origin.postfxVersion != here.postfxVersion)
+        return "postfx " + version(origin.postfxVersion) + " (this is " + version(here.postfxVersion) + ")";
+    auto differs = [](uint32_t given, uint32_t actual) { return given != 0 && given != actual; };
+    if (differs(origin.vendorId, here.vendorId) || differs(origin.deviceId, here.deviceId))
+        return "another device (vendor " + std::to_string(origin.vendorId) + ", device " +
+               std::to_string(origin.deviceId) + ")";
+    if (differs(origin.driverVersion, here.driverVersion))
+        return "another driver version (" + std::to_string(origin.driverVersion) + ", this is " +
+               std::to_string(here.driverVersion) + ")";
+    return {};
+}
+
 int Context::Impl::effectIndex(std::string_view name) const {
     for (size_t i = 0; i < effects.size(); ++i)
         if (name == effects[i]->name()) return int(i);
@@ -204,7 +227,8 @@ Status Context::autoQuality(std::string_view effect, uint32_t& preset) const {
 std::vector<AutoQualityTimings> Context::autoQualityTimings() const {
     std::vector<AutoQualityTimings> out;
     for (const auto& [key, ms] : impl_->autoQuality.timings())
-        out.push_back({impl_->effects[size_t(key.effect)]->name(), key.width, key.height, key.features, ms});
+        out.push_back({impl_->effects[size_t(key.effect)]->name(), key.width, key.height, key.features, ms,
+                       impl_->timingsOrigin()});
     return out;
 }
 
@@ -229,6 +253,10 @@ Status Context::setAutoQualityTimings(const std::vector<AutoQualityTimings>& tim
                 return impl_->report(core::invalid(name + ".presetMs[" + std::to_string(i) +
                                                    "]: " + core::numberText(t.presetMs[i]) +
                                                    " must be finite and >= 0"));
+        if (const std::string other = impl_->otherOrigin(t.origin); !other.empty()) {
+            impl_->warn(name + ": measured with " + other + "; skipped, measured again");
+            continue;
+        }
         given.emplace_back(core::AutoQualityKey{e, t.width, t.height, t.features}, t.presetMs);
     }
     impl_->autoQuality.give(given);

@@ -18,7 +18,7 @@
 
 namespace postfx {
 
-struct Context::Impl {
+struct POSTFX_INTERNAL Context::Impl {
     ContextCreateInfo info;
     core::Gpu gpu;
     core::PassTimer timer;
@@ -50,10 +50,15 @@ struct Context::Impl {
 
     core::DescriptorArena& arena(uint64_t frameIndex) { return *arenas[frameIndex % arenas.size()]; }
     int effectIndex(std::string_view name) const;
+
+    // Quality Auto's timings measured here: this library's version, this device and driver.
+    TimingsOrigin timingsOrigin() const;
+    // Empty when timings of `origin` hold here (0 device fields: any); otherwise what differs, in words.
+    std::string otherOrigin(const TimingsOrigin& origin) const;
 };
 
 // The context's internals, for postfx's own code and tests (e.g. adding a test-only effect).
-struct ContextAccess {
+struct POSTFX_INTERNAL ContextAccess {
     static Context::Impl& of(Context& context) { return *context.impl_; }
 };
 

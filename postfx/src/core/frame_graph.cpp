@@ -3,7 +3,7 @@
 #include "common/shared.h"
 #include "core/barriers.h"
 #include "core/checks.h"
-#include "postfx_spirv.h"
+#include "postfx_objects_spirv.h"
 
 #include <algorithm>
 #include <cstring>

@@ -26,6 +26,7 @@ std::vector<FogAutoTimings> fogAutoTimings(const Context& context) {
         f.shadowMap = (t.features & kFogAutoFeatureShadowMap) != 0;
         for (uint32_t i = 0; i < kPresets; ++i)
             f.presetMs[i] = t.presetMs[i];
+        f.origin = t.origin;
         out.push_back(f);
     }
     return out;
@@ -40,6 +41,7 @@ Status setFogAutoTimings(Context& context, const std::vector<FogAutoTimings>& ti
         t.height = f.height;
         t.features = (f.noise ? kFogAutoFeatureNoise : 0u) | (f.shadowMap ? kFogAutoFeatureShadowMap : 0u);
         t.presetMs.assign(std::begin(f.presetMs), std::end(f.presetMs));
+        t.origin = f.origin;
         generic.push_back(std::move(t));
     }
     return context.setAutoQualityTimings(generic);

@@ -3,7 +3,7 @@
 #include "core/checks.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
-#include "postfx_spirv.h"
+#include "postfx_objects_spirv.h"
 
 namespace postfx::fog {
 namespace {

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Builds tests/package/consumer/ as a project of its own against postfx, one way, and runs what it built
+# (the integration guide's program records fog on the Vulkan device, under the validation layer, and
+# checks a pixel against the closed form).
+#   run_consumer.sh package      SOURCE BUILD WORK  install BUILD into WORK/prefix, find_package it, and
+#                                                   compile version_check.cpp through pkg-config too
+#   run_consumer.sh shared       SOURCE BUILD WORK  build postfx alone as a shared library, install it,
+#                                                   check it exports postfx's API only, find_package it
+#   run_consumer.sh subdirectory SOURCE BUILD WORK  add_subdirectory(SOURCE)
+#   run_consumer.sh fetchcontent SOURCE BUILD WORK  FetchContent (configure only: options, cache, targets)
+set -euo pipefail
+mode=$1 source=$2 build=$3 work=$4
+jobs=$(nproc)
+consumer=$source/tests/package/consumer
+rm -rf "$work"
+mkdir -p "$work"
+configure_consumer() {  # extra -D arguments
+    cmake -S "$consumer" -B "$work/consumer" -DPOSTFX_EXAMPLES_DIR="$source/examples" "$@" >"$work/configure.log" 2>&1 ||
+        { cat "$work/configure.log"; exit 1; }
+}
+build_and_run() {
+    cmake --build "$work/consumer" -j"$jobs" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+    "$work/consumer/version_check"
+    "$work/consumer/minimal_host/postfx_minimal_host" --validate
+}
+case $mode in
+package)
+    cmake --install "$build" --prefix "$work/prefix" >/dev/null
+    configure_consumer -DPOSTFX_CONSUME=package -DCMAKE_PREFIX_PATH="$work/prefix"
+    build_and_run
+    # pkg-config: the flags it gives build a program that links.
+    flags=$(PKG_CONFIG_PATH="$work/prefix/lib/pkgconfig" pkg-config --cflags --libs --static postfx)
+    # shellcheck disable=SC2086
+    c++ -std=c++20 "$consumer/version_check.cpp" -o "$work/version_check_pkgconfig" $flags
+    "$work/version_check_pkgconfig"
+    ;;
+shared)
+    cmake -S "$source" -B "$work/postfx" -DBUILD_SHARED_LIBS=ON -DCMAKE_BUILD_TYPE=Release \
+        -DPOSTFX_BUILD_DEMO=OFF -DPOSTFX_BUILD_TESTS=OFF -DPOSTFX_BUILD_BENCH=OFF -DPOSTFX_WERROR=ON \
+        >"$work/postfx-configure.log" 2>&1 || { cat "$work/postfx-configure.log"; exit 1; }
+    cmake --build "$work/postfx" -j"$jobs" >"$work/postfx-build.log" 2>&1 || { cat "$work/postfx-build.log"; exit 1; }
+    cmake --install "$work/postfx" --prefix "$work/prefix" >/dev/null
+    so=$(ls "$work"/prefix/lib/libpostfx.so.* | head -n1)
+    # Exported: postfx's API (namespace postfx, not its internal namespaces) and the C++ runtime's
+    # template instantiations the API uses; no internal symbol.
+    exported=$(nm -D -C --defined-only "$so" | awk '{ $1 = ""; $2 = ""; print substr($0, 3) }')
+    internal=$(printf '%s\n' "$exported" | grep -E 'postfx::(core|fog|spirv|detail|reference::detail)::|ContextAccess' || true)
+    if [ -n "$internal" ]; then
+        echo "libpostfx.so exports internal symbols:"
+        printf '%s\n' "$internal" | head -n 20
+        exit 1
+    fi
+    for api in 'postfx::Context::create' 'postfx::Context::record' 'postfx::validateFogSettings' \
+        'postfx::version()' 'postfx::reference::renderFog'; do
+        printf '%s\n' "$exported" | grep -qF "$api" || { echo "libpostfx.so does not export $api"; exit 1; }
+    done
+    echo "libpostfx.so exports $(printf '%s\n' "$exported" | grep -c 'postfx::') postfx symbols, no internal one"
+    configure_consumer -DPOSTFX_CONSUME=package -DCMAKE_PREFIX_PATH="$work/prefix"
+    build_and_run
+    ;;
+subdirectory)
+    configure_consumer -DPOSTFX_CONSUME=subdirectory -DPOSTFX_SOURCE_DIR="$source"
+    build_and_run
+    ;;
+fetchcontent)
+    configure_consumer -DPOSTFX_CONSUME=fetchcontent -DFETCHCONTENT_SOURCE_DIR_POSTFX="$source"
+    echo "configured: postfx through FetchContent builds the library alone"
+    ;;
+*)
+    echo "unknown mode $mode"
+    exit 2
+    ;;
+esac
