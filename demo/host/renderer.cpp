@@ -200,6 +200,7 @@ bool Renderer::Impl::createPostfx(std::string& error) {
     ci.depth.reversedZ = options.reversedZ;
     ci.depth.infiniteFar = options.infiniteFar;
     ci.framesInFlight = kFramesInFlight;
+    ci.debugLabels = host.debugUtilsEnabled;  // postfx's passes named in RenderDoc / Nsight
     ci.messageCallback = printPostfxMessage;
     if (postfx::Status s = postfx::Context::create(ci, postfx); !s.ok()) {
         error = "postfx context: " + s.message;

@@ -1,5 +1,6 @@
 #include "host/vulkan_host.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -168,7 +169,12 @@ std::unique_ptr<VulkanHost> VulkanHost::create(const HostOptions& options, std::
         if (hasInstanceExtension(kValidationLayer, VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME))
             extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
         next = &debugInfo;  // also reports messages of vkCreateInstance / vkDestroyInstance
+    } else if (hasInstanceExtension(nullptr, VK_EXT_DEBUG_UTILS_EXTENSION_NAME)) {
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);  // labels for RenderDoc / Nsight
     }
+    host->debugUtilsEnabled = std::find_if(extensions.begin(), extensions.end(), [](const char* e) {
+                                  return std::strcmp(e, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0;
+                              }) != extensions.end();
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     app.pApplicationName = "postfx demo";
     app.pEngineName = "postfx";

@@ -41,6 +41,7 @@ public:
     VkPhysicalDeviceProperties properties{};
     uint32_t apiVersion = 0;  // the instance's VkApplicationInfo::apiVersion (1.2 where available, else 1.1)
     bool validationEnabled = false;
+    bool debugUtilsEnabled = false;  // VK_EXT_debug_utils is enabled on the instance (labels work)
 
     // Validation messages (warnings and errors) reported since creation.
     std::vector<std::string> validationMessages() const;

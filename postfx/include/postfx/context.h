@@ -41,6 +41,10 @@ struct ContextCreateInfo {
     DepthConvention depth;
     uint32_t framesInFlight = 2;  // frames the host may record before waiting on the oldest, 1..8
     bool gpuTimings = true;       // write timestamp queries around each pass (see readPassTimings)
+    // The host enabled VK_EXT_debug_utils on `instance`: postfx then wraps its work in each record() in a
+    // "postfx" label and each pass in a label named after it ("fog.raymarch"), which RenderDoc, Nsight and
+    // the validation layer show. Off: no label call is made (calling them without the extension is invalid).
+    bool debugLabels = false;
 
     MessageCallback messageCallback = nullptr;  // optional
     void* messageUserData = nullptr;

@@ -19,6 +19,32 @@ Status DeviceFunctions::load(VkInstance instance, PFN_vkGetInstanceProcAddr getI
     return Status::success();
 }
 
+Status DeviceFunctions::loadDebugLabels(VkInstance instance, PFN_vkGetInstanceProcAddr getInstanceProcAddr) {
+    vkCmdBeginDebugUtilsLabelEXT = reinterpret_cast<PFN_vkCmdBeginDebugUtilsLabelEXT>(
+        getInstanceProcAddr(instance, "vkCmdBeginDebugUtilsLabelEXT"));
+    vkCmdEndDebugUtilsLabelEXT = reinterpret_cast<PFN_vkCmdEndDebugUtilsLabelEXT>(
+        getInstanceProcAddr(instance, "vkCmdEndDebugUtilsLabelEXT"));
+    if (vkCmdBeginDebugUtilsLabelEXT && vkCmdEndDebugUtilsLabelEXT) return Status::success();
+    vkCmdBeginDebugUtilsLabelEXT = nullptr;
+    vkCmdEndDebugUtilsLabelEXT = nullptr;
+    return {
+        Result::Unsupported,
+        "ContextCreateInfo.debugLabels is set but vkGetInstanceProcAddr returned null for "
+        "vkCmdBeginDebugUtilsLabelEXT or vkCmdEndDebugUtilsLabelEXT (is VK_EXT_debug_utils enabled on the "
+        "instance?)"};
+}
+
+void beginLabel(const DeviceFunctions& fn, VkCommandBuffer cmd, const char* name) {
+    if (!fn.vkCmdBeginDebugUtilsLabelEXT) return;
+    VkDebugUtilsLabelEXT label{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
+    label.pLabelName = name;
+    fn.vkCmdBeginDebugUtilsLabelEXT(cmd, &label);
+}
+
+void endLabel(const DeviceFunctions& fn, VkCommandBuffer cmd) {
+    if (fn.vkCmdEndDebugUtilsLabelEXT) fn.vkCmdEndDebugUtilsLabelEXT(cmd);
+}
+
 const char* vkResultName(VkResult result) {
     switch (result) {
 #define POSTFX_CASE(r) \

@@ -63,10 +63,21 @@ struct DeviceFunctions {
     POSTFX_DEVICE_FUNCTIONS(POSTFX_DECLARE)
 #undef POSTFX_DECLARE
 
+    // VK_EXT_debug_utils' labels: loaded only when the host enabled the extension
+    // (ContextCreateInfo::debugLabels), else null and never called.
+    PFN_vkCmdBeginDebugUtilsLabelEXT vkCmdBeginDebugUtilsLabelEXT = nullptr;
+    PFN_vkCmdEndDebugUtilsLabelEXT vkCmdEndDebugUtilsLabelEXT = nullptr;
+
     // Loads every entry point; names the first one missing.
     Status load(VkInstance instance, PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkDevice device,
                 PFN_vkGetDeviceProcAddr getDeviceProcAddr);
+    // Loads the debug-utils label commands (instance extension commands, through vkGetInstanceProcAddr).
+    Status loadDebugLabels(VkInstance instance, PFN_vkGetInstanceProcAddr getInstanceProcAddr);
 };
+
+// A debug-utils label around commands; does nothing when the label commands are not loaded.
+void beginLabel(const DeviceFunctions& fn, VkCommandBuffer cmd, const char* name);
+void endLabel(const DeviceFunctions& fn, VkCommandBuffer cmd);
 
 // "vkCreateImage failed: VK_ERROR_OUT_OF_DEVICE_MEMORY" as a Status (Success for VK_SUCCESS).
 Status vulkanStatus(VkResult result, const char* what);

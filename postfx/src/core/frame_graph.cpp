@@ -561,7 +561,8 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     f.uniformData.data() + r.uniformOffset, r.uniformBytes);
     }
 
-    // Host images in, once.
+    // Host images in, once. From here on nothing fails: the "postfx" label always gets its end.
+    beginLabel(gpu_->fn, cmd, "postfx");
     BarrierBatch batch;
     for (const HostUse& h : hostUses)
         if (h.used) batch.add(h.use.acquire);
@@ -609,10 +610,12 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
         batch.record(*gpu_, cmd);
 
         const ComputePipeline& pipeline = *passPipelines_[i];
+        beginLabel(gpu_->fn, cmd, pipeline.name().c_str());
         timer.beginPass(cmd, pipeline.name(), p.effect, !p.builds);
         pipeline.bind(cmd, passSets_[i], p.pushBytes ? p.push.data() : nullptr);
         gpu_->fn.vkCmdDispatch(cmd, p.groups[0], p.groups[1], p.groups[2]);
         timer.endPass(cmd);
+        endLabel(gpu_->fn, cmd);
 
         for (uint32_t a = p.firstAccess; a < p.firstAccess + p.accessCount; ++a) {
             const Access& x = f.accesses[a];
@@ -647,6 +650,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
     for (const HostUse& h : hostUses)
         if (h.used) batch.add(h.use.release);
     batch.record(*gpu_, cmd);
+    endLabel(gpu_->fn, cmd);
     return Status::success();
 }
 

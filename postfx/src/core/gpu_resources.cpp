@@ -14,6 +14,8 @@ Status Gpu::init(const ContextCreateInfo& info) {
     allocator = info.allocator;
     if (Status s = fn.load(info.instance, info.getInstanceProcAddr, info.device, info.getDeviceProcAddr); !s)
         return s;
+    if (info.debugLabels)
+        if (Status s = fn.loadDebugLabels(info.instance, info.getInstanceProcAddr); !s) return s;
     fn.vkGetPhysicalDeviceProperties(info.physicalDevice, &properties);
     fn.vkGetPhysicalDeviceMemoryProperties(info.physicalDevice, &memory);
     if (properties.apiVersion < VK_API_VERSION_1_1)
