@@ -362,10 +362,12 @@ Status FrameGraph::sampler(SamplerKind kind, VkSampler& out) {
         info.addressModeU = info.addressModeV = info.addressModeW =
             kind == SamplerKind::LinearRepeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT
                                               : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        if (Status st = vulkanStatus(gpu_->fn.vkCreateSampler(gpu_->device, &info, gpu_->allocator, &s),
+        VkSampler created = VK_NULL_HANDLE;  // kept only on success (a failed call's output is undefined)
+        if (Status st = vulkanStatus(gpu_->fn.vkCreateSampler(gpu_->device, &info, gpu_->allocator, &created),
                                      "vkCreateSampler");
             !st)
             return st;
+        s = created;
     }
     out = s;
     return Status::success();
