@@ -205,7 +205,6 @@ Status Context::record(const FrameInfo& frame) {
 
     core::DescriptorArena& arena = impl.arena(frame.frameIndex);
     if (Status s = arena.beginFrame(); !s) return impl.report(s);
-    impl.timer.beginFrame(frame.commandBuffer, frame.frameIndex);
     impl.retirement.collect(frame.frameIndex, impl.info.framesInFlight);
     if (Status s = impl.graph.record(impl.frame, frame.commandBuffer, frame.frameIndex, arena, impl.timer,
                                      impl.retirement);

@@ -563,6 +563,10 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     f.uniformData.data() + r.uniformOffset, r.uniformBytes);
     }
 
+    // Nothing can fail from here on: the first command (the timer's query reset) is recorded only now, so
+    // a failed record() leaves the command buffer as the host gave it.
+    timer.beginFrame(cmd, frameIndex);
+
     // Host images in, once.
     BarrierBatch batch;
     for (const HostUse& h : hostUses)
