@@ -157,7 +157,8 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         if (q.kind == core::QualityRequest::Kind::Auto) {
             const core::AutoQualityKey key{int(e), frame.color.extent.width, frame.color.extent.height,
                                            effect.autoFeatures(frame)};
-            preset = autoQuality.select(key, q.budgetMs, timer);
+            if (Status s = autoQuality.select(key, q.budgetMs, timer, preset); !s)
+                return {s.code, std::string(effect.name()) + " quality Auto: " + s.message};
             if (measuring) (*measuring)[e] = {key, preset};
         }
         effect.applyPreset(resolved, preset);
