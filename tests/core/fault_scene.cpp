@@ -22,6 +22,7 @@ postfx::FrameInfo faultSceneFrame(const FaultSceneOptions& o, uint64_t frameInde
     fog.resolutionScale = o.resolutionScale;
     fog.noise.enabled = o.noise;
     fog.noise.textureSize = o.noiseSize;
+    if (o.autoQuality) fog.quality = postfx::FogQuality::Auto;
     if (o.shadowMap) {
         // Orthographic from above: clip x = x/20, clip y = z/20, depth (30 - y)/60.
         glm::dmat4 m(0.0);

@@ -15,6 +15,7 @@ struct FaultSceneOptions {
     bool shadowMap = false;
     float resolutionScale = 1.0f;
     bool separateOutput = false;
+    bool autoQuality = false;  // fog quality Auto (presets measured in turn, timings read in record())
 };
 
 // The frame (fog on; the harness fills in the command buffer and images) and the host's images.
