@@ -1,8 +1,10 @@
 // Fault injection: every fallible Vulkan call postfx makes fails in turn (tests/core/vulkan_interposer.h),
-// for scenarios that allocate. Each time, the call that returns (create, record, readPassTimings) returns
-// an error naming the failed Vulkan call, record() has recorded nothing (the host may end, reset or even
-// submit its command buffer), the same context records the next frame with the same image as a run
-// without faults, and once the context is destroyed every object it created is destroyed.
+// for scenarios that allocate (noise, shadow map, half resolution, separate RGBA32F output, timings off
+// with 3 frames in flight, quality Auto, images recreated every frame, all together). Each time, the call
+// that returns (create, record, readPassTimings) returns an error naming the failed Vulkan call, record() has
+// recorded nothing (the host may end, reset or even submit its command buffer), the same context records the
+// next frame with the same image as a run without faults, and once the context is destroyed every object it
+// created is destroyed.
 #include "fault_scene.h"
 #include "vulkan_interposer.h"
 
@@ -19,7 +21,19 @@ struct FaultScenario {
     FaultSceneOptions scene;
     uint32_t framesInFlight = 2;
     bool gpuTimings = true;
+    bool resize = false;  // odd frames 6x4 with a 32³ noise texture: images recreated every frame
 };
+
+// The scene of frame `f`.
+FaultSceneOptions sceneAt(const FaultScenario& scenario, uint64_t f) {
+    FaultSceneOptions scene = scenario.scene;
+    if (scenario.resize && f % 2) {
+        scene.width = 6;
+        scene.height = 4;
+        scene.noiseSize = 32;
+    }
+    return scene;
+}
 
 void PrintTo(const FaultScenario& scenario, std::ostream* os) {
     *os << scenario.name;
@@ -87,14 +101,13 @@ protected:
         FogHarness harness(*host, gpu);
         uint64_t commandsBefore = 0;
         harness.onBeforeRecord = [&](const postfx::FrameInfo&) { commandsBefore = interposer->commands(); };
-        const FogHarnessImages images = faultSceneImages(sc.scene);
         std::vector<uint64_t> recorded;  // frames record() succeeded for
         // Records frame f; true when it and its timings succeeded (a fault there has been checked).
         auto frame = [&](uint64_t f, bool expectClean) {
             const bool firedBefore = interposer->fault().fired;
             Images out;
-            const postfx::Status s =
-                harness.run(*context, images, faultSceneFrame(sc.scene, f), out.color, &out.output);
+            const postfx::Status s = harness.run(*context, faultSceneImages(sceneAt(sc, f)),
+                                                 faultSceneFrame(sceneAt(sc, f), f), out.color, &out.output);
             const bool firedHere = interposer->fault().fired && !firedBefore;
             if (!s.ok()) {
                 EXPECT_TRUE(firedHere && !expectClean) << at << "frame " << f << ": " << s.message;
@@ -154,17 +167,20 @@ protected:
     // The image of frame `last` from a context created with `info` (without the interposer) that records
     // `frames` and then `last`.
     Images replay(postfx::ContextCreateInfo info, const std::vector<uint64_t>& frames, uint64_t last) {
-        const FaultSceneOptions& scene = GetParam().scene;
         std::unique_ptr<postfx::Context> context;
         EXPECT_TRUE(createContext(context, info).ok());
         if (!context) return {};
         FogHarness harness(*host, gpu);
-        const FogHarnessImages images = faultSceneImages(scene);
         Images out;
-        for (uint64_t f : frames)
+        std::vector<uint64_t> all = frames;
+        all.push_back(last);
+        for (uint64_t f : all) {
+            const FaultSceneOptions scene = sceneAt(GetParam(), f);
             EXPECT_TRUE(
-                harness.run(*context, images, faultSceneFrame(scene, f), out.color, &out.output).ok());
-        EXPECT_TRUE(harness.run(*context, images, faultSceneFrame(scene, last), out.color, &out.output).ok());
+                harness
+                    .run(*context, faultSceneImages(scene), faultSceneFrame(scene, f), out.color, &out.output)
+                    .ok());
+        }
         return out;
     }
 
@@ -203,6 +219,7 @@ const FaultScenario kScenarios[] = {
     {"separate_output_rgba32f", {.format = VK_FORMAT_R32G32B32A32_SFLOAT, .separateOutput = true}},
     {"no_timings_three_in_flight", {.noise = true}, 3, false},
     {"auto_quality", {.noise = true, .autoQuality = true}, 2},
+    {"resize_every_frame", {.noise = true, .resolutionScale = 0.5f}, 2, true, true},
     {"everything", {.noise = true, .shadowMap = true, .resolutionScale = 0.5f, .separateOutput = true}, 3},
 };
 
