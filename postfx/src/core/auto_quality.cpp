@@ -31,7 +31,7 @@ AutoQuality::Entry& AutoQuality::entry(const AutoQualityKey& key) {
     return cache_.back();
 }
 
-void AutoQuality::collect(const PassTimer& timer) {
+Status AutoQuality::collect(const PassTimer& timer) {
     std::vector<PassTimer::TaggedTiming> timings;
     for (auto it = pending_.begin(); it != pending_.end();) {
         const Status s = timer.readTagged(it->frameIndex, timings);
@@ -39,6 +39,9 @@ void AutoQuality::collect(const PassTimer& timer) {
             ++it;
             continue;
         }
+        // The query read itself failed (device lost, out of memory): the host hears of it; the frame
+        // stays pending.
+        if (s.code == Result::VulkanError || s.code == Result::OutOfMemory) return s;
         if (s.ok()) {
             // The effect's passes, without work on slow inputs (a noise texture or LUT being rebuilt).
             double ms = 0.0;
@@ -49,15 +52,18 @@ void AutoQuality::collect(const PassTimer& timer) {
         }  // any other status: the frame's queries are gone; its preset is measured again later
         it = pending_.erase(it);
     }
+    return Status::success();
 }
 
-uint32_t AutoQuality::select(const AutoQualityKey& key, float budgetMs, const PassTimer& timer) {
+Status AutoQuality::select(const AutoQualityKey& key, float budgetMs, const PassTimer& timer,
+                           uint32_t& preset) {
     std::optional<uint32_t>& last = last_[size_t(key.effect)];
     if (!timer.enabled()) {
         last = fallback_[size_t(key.effect)];
-        return *last;
+        preset = *last;
+        return Status::success();
     }
-    collect(timer);
+    if (Status s = collect(timer); !s) return s;
     const Entry& e = entry(key);
     if (!e.measured()) {
         last.reset();
@@ -75,13 +81,15 @@ uint32_t AutoQuality::select(const AutoQualityKey& key, float budgetMs, const Pa
         if (fewest == SIZE_MAX)
             for (size_t i = 0; i < e.presets; ++i)
                 if (e.count[i] < kSamples && e.count[i] < fewest) next = i, fewest = e.count[i];
-        return uint32_t(next);
+        preset = uint32_t(next);
+        return Status::success();
     }
     uint32_t choice = 0;
     for (size_t i = 0; i < e.presets; ++i)
         if (e.medianMs(i) <= double(budgetMs)) choice = uint32_t(i);
     last = choice;
-    return choice;
+    preset = choice;
+    return Status::success();
 }
 
 void AutoQuality::recorded(uint64_t frameIndex, const AutoQualityKey& key, uint32_t preset) {

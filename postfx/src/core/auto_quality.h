@@ -38,8 +38,9 @@ public:
     // has presets with fewer than kSamples times, returns the next one to measure; then the highest
     // preset whose median time <= budgetMs, or the lowest if none fits. Without timings (`timer`
     // disabled): the effect's fallback. Context::plan asks a copy, so the plan is what record() would
-    // choose now.
-    uint32_t select(const AutoQualityKey& key, float budgetMs, const PassTimer& timer);
+    // choose now. Fails only when reading the timings failed (VK_ERROR_DEVICE_LOST, out of memory);
+    // the frames read are then read again next time.
+    Status select(const AutoQualityKey& key, float budgetMs, const PassTimer& timer, uint32_t& preset);
     // After `frameIndex` was recorded with `preset` (as select returned): measure it if still needed.
     void recorded(uint64_t frameIndex, const AutoQualityKey& key, uint32_t preset);
     // The choice for effect `effect`'s key of its last select(); NotReady while its presets are measured.
@@ -65,7 +66,7 @@ private:
         uint32_t preset;
     };
     Entry& entry(const AutoQualityKey& key);
-    void collect(const PassTimer& timer);
+    Status collect(const PassTimer& timer);
 
     std::vector<uint32_t> presetCount_, fallback_;
     std::vector<Entry> cache_;

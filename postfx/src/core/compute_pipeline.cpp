@@ -33,10 +33,13 @@ Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc) 
     VkDescriptorSetLayoutCreateInfo setInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     setInfo.bindingCount = static_cast<uint32_t>(bindings.size());
     setInfo.pBindings = bindings.data();
+    // Handles are kept only from calls that succeeded: Vulkan leaves a failed call's outputs undefined.
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
     Status s =
-        vulkanStatus(gpu.fn.vkCreateDescriptorSetLayout(gpu.device, &setInfo, gpu.allocator, &setLayout_),
+        vulkanStatus(gpu.fn.vkCreateDescriptorSetLayout(gpu.device, &setInfo, gpu.allocator, &setLayout),
                      (name_ + ": vkCreateDescriptorSetLayout").c_str());
     if (!s) return reset(), s;
+    setLayout_ = setLayout;
 
     VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, desc.pushConstantBytes};
     VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -44,9 +47,11 @@ Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc) 
     layoutInfo.pSetLayouts = &setLayout_;
     layoutInfo.pushConstantRangeCount = desc.pushConstantBytes ? 1 : 0;
     layoutInfo.pPushConstantRanges = &range;
-    if (!(s = vulkanStatus(gpu.fn.vkCreatePipelineLayout(gpu.device, &layoutInfo, gpu.allocator, &layout_),
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    if (!(s = vulkanStatus(gpu.fn.vkCreatePipelineLayout(gpu.device, &layoutInfo, gpu.allocator, &layout),
                            (name_ + ": vkCreatePipelineLayout").c_str())))
         return reset(), s;
+    layout_ = layout;
 
     VkShaderModuleCreateInfo moduleInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     moduleInfo.codeSize = desc.spirv.size_bytes();
@@ -68,11 +73,13 @@ Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc) 
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = spec.mapEntryCount ? &spec : nullptr;
     info.layout = layout_;
+    VkPipeline pipeline = VK_NULL_HANDLE;
     s = vulkanStatus(
-        gpu.fn.vkCreateComputePipelines(gpu.device, VK_NULL_HANDLE, 1, &info, gpu.allocator, &pipeline_),
+        gpu.fn.vkCreateComputePipelines(gpu.device, VK_NULL_HANDLE, 1, &info, gpu.allocator, &pipeline),
         (name_ + ": vkCreateComputePipelines").c_str());
     gpu.fn.vkDestroyShaderModule(gpu.device, module, gpu.allocator);
     if (!s) return reset(), s;
+    pipeline_ = pipeline;
     return Status::success();
 }
 
@@ -110,9 +117,11 @@ Status DescriptorArena::create(const Gpu& gpu, uint32_t maxSetsPerFrame) {
     info.maxSets = maxSetsPerFrame;
     info.poolSizeCount = static_cast<uint32_t>(std::size(sizes));
     info.pPoolSizes = sizes;
-    Status s = vulkanStatus(gpu.fn.vkCreateDescriptorPool(gpu.device, &info, gpu.allocator, &pool_),
+    VkDescriptorPool pool = VK_NULL_HANDLE;  // kept only on success (a failed call's output is undefined)
+    Status s = vulkanStatus(gpu.fn.vkCreateDescriptorPool(gpu.device, &info, gpu.allocator, &pool),
                             "vkCreateDescriptorPool");
-    if (!s) reset();
+    if (!s) return reset(), s;
+    pool_ = pool;
     return s;
 }
 

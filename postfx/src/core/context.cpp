@@ -157,7 +157,8 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         if (q.kind == core::QualityRequest::Kind::Auto) {
             const core::AutoQualityKey key{int(e), frame.color.extent.width, frame.color.extent.height,
                                            effect.autoFeatures(frame)};
-            preset = autoQuality.select(key, q.budgetMs, timer);
+            if (Status s = autoQuality.select(key, q.budgetMs, timer, preset); !s)
+                return {s.code, std::string(effect.name()) + " quality Auto: " + s.message};
             if (measuring) (*measuring)[e] = {key, preset};
         }
         effect.applyPreset(resolved, preset);
@@ -205,7 +206,6 @@ Status Context::record(const FrameInfo& frame) {
 
     core::DescriptorArena& arena = impl.arena(frame.frameIndex);
     if (Status s = arena.beginFrame(); !s) return impl.report(s);
-    impl.timer.beginFrame(frame.commandBuffer, frame.frameIndex);
     impl.retirement.collect(frame.frameIndex, impl.info.framesInFlight);
     if (Status s = impl.graph.record(impl.frame, frame.commandBuffer, frame.frameIndex, arena, impl.timer,
                                      impl.retirement);

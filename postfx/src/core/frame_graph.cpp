@@ -362,10 +362,12 @@ Status FrameGraph::sampler(SamplerKind kind, VkSampler& out) {
         info.addressModeU = info.addressModeV = info.addressModeW =
             kind == SamplerKind::LinearRepeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT
                                               : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        if (Status st = vulkanStatus(gpu_->fn.vkCreateSampler(gpu_->device, &info, gpu_->allocator, &s),
+        VkSampler created = VK_NULL_HANDLE;  // kept only on success (a failed call's output is undefined)
+        if (Status st = vulkanStatus(gpu_->fn.vkCreateSampler(gpu_->device, &info, gpu_->allocator, &created),
                                      "vkCreateSampler");
             !st)
             return st;
+        s = created;
     }
     out = s;
     return Status::success();
@@ -561,8 +563,12 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     f.uniformData.data() + r.uniformOffset, r.uniformBytes);
     }
 
-    // Host images in, once. From here on nothing fails: the "postfx" label always gets its end.
+    // Nothing can fail from here on: the first command is recorded only now, so a failed record() leaves
+    // the command buffer as the host gave it, and the "postfx" label always gets its end.
     beginLabel(gpu_->fn, cmd, "postfx");
+    timer.beginFrame(cmd, frameIndex);
+
+    // Host images in, once.
     BarrierBatch batch;
     for (const HostUse& h : hostUses)
         if (h.used) batch.add(h.use.acquire);

@@ -176,7 +176,8 @@ public:
     // The compiled frame as the public plan.
     void plan(const Frame& frame, FramePlan& out) const;
     // Creates and releases what the compiled frame needs, then records it: host images in, every live
-    // pass with its barriers, timestamps and dispatch, host images out. Nothing is recorded on error.
+    // pass with its barriers, timestamps and dispatch, host images out (starting `timer`'s frame first).
+    // Every call that can fail comes before the first command: on error nothing is recorded.
     Status record(Frame& frame, VkCommandBuffer cmd, uint64_t frameIndex, DescriptorArena& arena,
                   PassTimer& timer, Retirement& retirement);
 

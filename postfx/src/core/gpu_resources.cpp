@@ -46,8 +46,11 @@ Status allocate(const Gpu& gpu, const VkMemoryRequirements& req, VkMemoryPropert
     VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     info.allocationSize = req.size;
     info.memoryTypeIndex = type;
-    return vulkanStatus(gpu.fn.vkAllocateMemory(gpu.device, &info, gpu.allocator, &memory),
-                        (std::string("vkAllocateMemory for ") + name).c_str());
+    VkDeviceMemory allocated = VK_NULL_HANDLE;
+    s = vulkanStatus(gpu.fn.vkAllocateMemory(gpu.device, &info, gpu.allocator, &allocated),
+                     (std::string("vkAllocateMemory for ") + name).c_str());
+    if (s) memory = allocated;  // a failed call's output is undefined
+    return s;
 }
 
 }  // namespace
@@ -73,21 +76,27 @@ Status GpuBuffer::create(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags u
     info.size = size;
     info.usage = usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-    Status s = vulkanStatus(gpu.fn.vkCreateBuffer(gpu.device, &info, gpu.allocator, &buffer_),
+    // Handles are kept only from calls that succeeded: Vulkan leaves a failed call's outputs undefined.
+    VkBuffer buffer = VK_NULL_HANDLE;
+    Status s = vulkanStatus(gpu.fn.vkCreateBuffer(gpu.device, &info, gpu.allocator, &buffer),
                             (std::string("vkCreateBuffer for ") + name).c_str());
     if (!s) return reset(), s;
+    buffer_ = buffer;
     VkMemoryRequirements req;
     gpu.fn.vkGetBufferMemoryRequirements(gpu.device, buffer_, &req);
     VkMemoryPropertyFlags flags =
         hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
                     : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
     if (!(s = allocate(gpu, req, flags, name, memory_))) return reset(), s;
-    if (!(s = vulkanStatus(gpu.fn.vkBindBufferMemory(gpu.device, buffer_, memory_, 0), "vkBindBufferMemory")))
+    if (!(s = vulkanStatus(gpu.fn.vkBindBufferMemory(gpu.device, buffer_, memory_, 0),
+                           (std::string("vkBindBufferMemory for ") + name).c_str())))
         return reset(), s;
+    void* mapped = nullptr;
     if (hostVisible &&
-        !(s = vulkanStatus(gpu.fn.vkMapMemory(gpu.device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_),
-                           "vkMapMemory")))
+        !(s = vulkanStatus(gpu.fn.vkMapMemory(gpu.device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped),
+                           (std::string("vkMapMemory for ") + name).c_str())))
         return reset(), s;
+    mapped_ = mapped;
     return Status::success();
 }
 
@@ -131,23 +140,29 @@ Status GpuImage::create(const Gpu& gpu, const ImageDesc& desc, const char* name)
     info.usage = desc.usage;
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    Status s = vulkanStatus(gpu.fn.vkCreateImage(gpu.device, &info, gpu.allocator, &image_),
+    // Handles are kept only from calls that succeeded: Vulkan leaves a failed call's outputs undefined.
+    VkImage image = VK_NULL_HANDLE;
+    Status s = vulkanStatus(gpu.fn.vkCreateImage(gpu.device, &info, gpu.allocator, &image),
                             (std::string("vkCreateImage for ") + name).c_str());
     if (!s) return reset(), s;
+    image_ = image;
     VkMemoryRequirements req;
     gpu.fn.vkGetImageMemoryRequirements(gpu.device, image_, &req);
     bytes_ = req.size;
     if (!(s = allocate(gpu, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name, memory_))) return reset(), s;
-    if (!(s = vulkanStatus(gpu.fn.vkBindImageMemory(gpu.device, image_, memory_, 0), "vkBindImageMemory")))
+    if (!(s = vulkanStatus(gpu.fn.vkBindImageMemory(gpu.device, image_, memory_, 0),
+                           (std::string("vkBindImageMemory for ") + name).c_str())))
         return reset(), s;
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     viewInfo.image = image_;
     viewInfo.viewType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = desc.format;
     viewInfo.subresourceRange = {aspectOfFormat(desc.format), 0, 1, 0, 1};
-    if (!(s = vulkanStatus(gpu.fn.vkCreateImageView(gpu.device, &viewInfo, gpu.allocator, &view_),
+    VkImageView view = VK_NULL_HANDLE;
+    if (!(s = vulkanStatus(gpu.fn.vkCreateImageView(gpu.device, &viewInfo, gpu.allocator, &view),
                            (std::string("vkCreateImageView for ") + name).c_str())))
         return reset(), s;
+    view_ = view;
     return Status::success();
 }
 

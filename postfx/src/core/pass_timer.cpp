@@ -11,8 +11,11 @@ Status PassTimer::create(const Gpu& gpu, uint32_t framesInFlight, uint32_t times
     VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     info.queryType = VK_QUERY_TYPE_TIMESTAMP;
     info.queryCount = framesInFlight * kMaxPassesPerFrame * 2;
-    return vulkanStatus(gpu.fn.vkCreateQueryPool(gpu.device, &info, gpu.allocator, &pool_),
-                        "vkCreateQueryPool");
+    VkQueryPool pool = VK_NULL_HANDLE;  // kept only on success (a failed call's output is undefined)
+    Status s =
+        vulkanStatus(gpu.fn.vkCreateQueryPool(gpu.device, &info, gpu.allocator, &pool), "vkCreateQueryPool");
+    if (s) pool_ = pool;
+    return s;
 }
 
 void PassTimer::reset() {
