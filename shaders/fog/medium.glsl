@@ -21,9 +21,11 @@ float noiseTerm(vec3 x) {
     return clamp(n - fog.noiseRemap.x, 0.0, 1.0) * fog.noiseRemap.y;
 }
 
-// σt(x) = density · h(y) · noise(x) [1/m]
+// σt(x) = density · h(y) · noise(x) [1/m]. density · noise first (at most 1e6 · 1e3): density · h alone may
+// overflow to +Inf (density > 6e3 where h reaches e^80), and +Inf · a noise of 0 would be NaN; +Inf · h is
+// +Inf, an opaque step (T = 0), never NaN.
 float extinction(vec3 x) {
-    return fog.medium.x * heightTerm(fog.heights.x + x.y) * noiseTerm(x);
+    return fog.medium.x * noiseTerm(x) * heightTerm(fog.heights.x + x.y);
 }
 
 // One PCF tap of the shadow test: whether texel depth `stored` leaves a sample at shadow depth `z` lit.
@@ -84,11 +86,22 @@ float heightFogOpticalDepth(float heightAboveBase0, float dirY, float len) {
     // descending (x < 0), not clamped along the segment, like the reference (for len = ∞: density · h0 / a).
     // The small factors first and e^E as (e^{E/2})², so that the product under- or overflows only when the
     // optical depth itself is beyond float (an infinite one gives T = 0, which is what it is).
-    if (isinf(len) && a <= 0.0) return kInfinity;
+    // A finite segment so long that x overflows (len > 3e37 / |a|) is an infinite one: (1 - e^{-x})/x = 0
+    // there would make density · len · 0 = ∞ · 0.
     float x = a * len;
-    float factors = isinf(len) ? density / a : density * len * oneMinusExpOverX(abs(x));
-    float halfExponent = 0.5 * (isinf(len) ? exponent0 : exponent0 + max(-x, 0.0));
-    return factors * exp(halfExponent) * exp(halfExponent);
+    bool infinite = isinf(len) || isinf(x);
+    if (infinite && a <= 0.0) return kInfinity;
+    // len · (1 - e^{-|x|})/|x| first: it is at most len and at most 1/|a|, where density · len alone
+    // overflows for a long segment whose optical depth is finite.
+    float factors = infinite ? density / a : density * (len * oneMinusExpOverX(abs(x)));
+    float halfExponent = 0.5 * (infinite ? exponent0 : exponent0 + max(-x, 0.0));
+    float opticalDepth = factors * exp(halfExponent) * exp(halfExponent);
+    // A factor beyond float whose product is not (density · len > 3e38 on a segment whose h is tiny):
+    // the same product as a sum of logarithms, +Inf only when the optical depth is.
+    if (isinf(opticalDepth) || isnan(opticalDepth))
+        opticalDepth = exp(log(infinite ? density / a : density) +
+                           (infinite ? 0.0 : log(len * oneMinusExpOverX(abs(x)))) + 2.0 * halfExponent);
+    return opticalDepth;
 }
 
 #endif

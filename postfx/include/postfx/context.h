@@ -35,9 +35,13 @@ struct ContextCreateInfo {
     PFN_vkGetDeviceProcAddr getDeviceProcAddr = nullptr;      // every device call goes through this
     uint32_t queueFamilyIndex = 0;  // family of the queue that will execute recorded command buffers;
                                     // must support compute
-    const VkAllocationCallbacks* allocator = nullptr;  // optional, used for every Vulkan object
+    // Optional, used for every Vulkan object; when given, pfnAllocation, pfnReallocation and pfnFree are set
+    // and pfnInternalAllocation / pfnInternalFree both or neither (as Vulkan requires).
+    const VkAllocationCallbacks* allocator = nullptr;
 
-    VkExtent2D maxExtent = {3840, 2160};  // largest color/depth extent that record() accepts [pixels]
+    // Largest color/depth extent that record() accepts [pixels]; each side in [1, the device's
+    // maxImageDimension2D] (postfx creates images up to this size).
+    VkExtent2D maxExtent = {3840, 2160};
     DepthConvention depth;
     uint32_t framesInFlight = 2;  // frames the host may record before waiting on the oldest, 1..8
     bool gpuTimings = true;       // write timestamp queries around each pass (see readPassTimings)
@@ -68,8 +72,10 @@ struct FrameInfo {
     // Optional: when present, the result goes here (not the color image; same extent and format, usage
     // STORAGE) and `color` is only read. When absent, effects composite into `color` in place.
     ImageInput output;
+    // Every image: view not VK_NULL_HANDLE, extent >= 1x1, usage with the bit above, layout a VkImageLayout
+    // of postfx's Vulkan headers other than UNDEFINED and PREINITIALIZED (docs/integration.md, "Images").
 
-    double timeSeconds = 0.0;  // host time [s], moves the noise with the wind; finite
+    double timeSeconds = 0.0;  // host time [s], moves the noise with the wind; in [-1e12, 1e12]
 
     // Inputs every effect shares (postfx/inputs.h), checked whichever effects run.
     CameraInput camera;

@@ -1,7 +1,8 @@
 // Ray-marched post-process fog: settings and per-frame inputs. The model is in docs/effects/fog.md.
 //
 // Every setting: unit, default, valid range. Out-of-range values are rejected by Context::record with
-// an error naming the field, except where "clamped" is written.
+// an error naming the field, except where "clamped" is written; the settings are checked when the fog is
+// enabled, the noise's when the noise is.
 #pragma once
 
 #include <postfx/export.h>
@@ -29,6 +30,7 @@ struct FogNoiseSettings {
     // Optional host texture instead of the generated one: a 3D view (first channel read, values in
     // [0, 1]), sampled with trilinear filtering and repeat addressing, in `hostTextureLayout`.
     VkImageView hostTexture = VK_NULL_HANDLE;
+    // With hostTexture: SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL.
     VkImageLayout hostTextureLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 };
 
@@ -50,7 +52,8 @@ enum class FogQuality {
 
 struct FogSettings {
     bool enabled = false;
-    // Custom uses steps/jitter/shadowKernel/resolutionScale below; a preset replaces those four.
+    // Custom uses steps/jitter/shadowKernel/resolutionScale below; a preset replaces those four. A value
+    // that is not a FogQuality (cast from an int) is rejected.
     FogQuality quality = FogQuality::Custom;
     // Auto only: GPU time budget for the fog's passes (excluding noise generation) [ms]; > 0 and finite
     // (checked whatever the quality).

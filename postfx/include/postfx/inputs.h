@@ -10,14 +10,18 @@ namespace postfx {
 
 // The camera that rendered color and depth.
 struct CameraInput {
-    DVec3 position{0.0};  // world position [m] (double: postfx works camera-relative); finite
-    Mat4 view{1.0f};      // world -> view; only its rotation is used (position gives the translation); finite
-    Mat4 projection{1.0f};  // view -> Vulkan clip, in the context's DepthConvention; finite, invertible
+    // World position [m] (double: postfx works camera-relative); each component in [-1e9, 1e9].
+    DVec3 position{0.0};
+    // World -> view; only its rotation is used (position gives the translation); finite, rotation invertible.
+    Mat4 view{1.0f};
+    // View -> Vulkan clip, in the context's DepthConvention; finite, and projection · view rotation
+    // invertible with an inverse finite in float (postfx reconstructs view rays through it on the GPU).
+    Mat4 projection{1.0f};
 };
 
 // The sun (or moon): a directional light.
 struct SunInput {
-    Vec3 toSun{0.0f, 1.0f, 0.0f};  // direction toward the sun, not zero (normalised by postfx); finite
+    Vec3 toSun{0.0f, 1.0f, 0.0f};  // direction toward the sun, finite, length >= 1e-6 (normalised by postfx)
     Vec3 illuminance{0.0f};        // [lux] on a surface facing the sun; each in [0, 1e7]
 };
 
@@ -38,19 +42,22 @@ struct ShadowMapInput {
     // SAMPLED, any square or rectangular size.
     ImageInput image;
     // World -> shadow clip space: x, y in [-1, 1] map to u, v = (x, y)/2 + 1/2, z/w is the stored depth.
-    DMat4 worldToClip{1.0};  // finite
+    // Finite, and worldToClip · translate(camera.position), the camera-relative transform postfx hands the
+    // GPU, finite in float (each element within ±3.4e38).
+    DMat4 worldToClip{1.0};
     bool reversedZ = false;  // true: larger stored depth is nearer the sun
     float depthBias = 0.0f;  // added toward "lit" before comparing [shadow depth units]; finite, >= 0
+    // (every field is checked only when `image` is present)
 };
 
 // A local light (point or spot) for the effects that light their medium with local lights (froxel fog,
 // next). Effects that do not read lights ignore them; every light given is checked.
-enum class LightType : uint32_t { Point, Spot };
+enum class LightType : uint32_t { Point, Spot };  // another value (cast from an int) is rejected
 
 struct LocalLight {
     LightType type = LightType::Point;
-    DVec3 position{0.0};                // world position [m]; finite
-    Vec3 direction{0.0f, -1.0f, 0.0f};  // spot: the cone's axis, not zero (normalised by postfx); finite
+    DVec3 position{0.0};                // world position [m]; each component in [-1e9, 1e9]
+    Vec3 direction{0.0f, -1.0f, 0.0f};  // the cone's axis [1]; finite; spot: length >= 1e-6 (normalised)
     Vec3 intensity{0.0f};               // luminous intensity per RGB channel [cd]; each in [0, 1e9]
     float range = 100.0f;               // distance beyond which the light is ignored [m]; > 0, finite
     float sourceRadius = 0.05f;         // guards the inverse square near the light [m]; in (0, range]

@@ -85,6 +85,8 @@ Status checkImage(const ImageInput& image, const ImageRule& rule) {
         (image.extent.width > rule.maxExtent->width || image.extent.height > rule.maxExtent->height))
         return invalid(n + ".extent " + extentText(image.extent) + " exceeds ContextCreateInfo.maxExtent " +
                        extentText(*rule.maxExtent));
+    if (!knownImageLayout(image.layout))
+        return invalid(n + ".layout " + std::to_string(int64_t(image.layout)) + " is not a VkImageLayout");
     if (image.layout == VK_IMAGE_LAYOUT_UNDEFINED || image.layout == VK_IMAGE_LAYOUT_PREINITIALIZED)
         return invalid(n + ".layout is UNDEFINED/PREINITIALIZED: postfx needs the image's contents");
     if (!(image.usage & rule.usage))
@@ -95,6 +97,12 @@ Status checkImage(const ImageInput& image, const ImageRule& rule) {
     return Status::success();
 }
 
+// Length >= 1e-6, in double: a float dot product of a vector like (1e30, 0, 0) would overflow.
+bool longEnough(const Vec3& v) {
+    const glm::dvec3 d(v);
+    return glm::dot(d, d) >= 1e-12;
+}
+
 bool sameExtent(VkExtent2D a, VkExtent2D b) {
     return a.width == b.width && a.height == b.height;
 }
@@ -103,10 +111,14 @@ Status checkLight(const LocalLight& light, uint32_t index) {
     const std::string n = "FrameInfo.lights[" + std::to_string(index) + "]";
     if (light.type != LightType::Point && light.type != LightType::Spot)
         return invalid(n + ".type " + std::to_string(uint32_t(light.type)) + " is not Point or Spot");
-    if (!allFinite(light.position)) return invalid(n + ".position: is not finite");
+    for (int c = 0; c < 3; ++c)
+        if (Status s = checkRange((n + ".position").c_str(), light.position[c], -kMaxWorldCoordinate,
+                                  kMaxWorldCoordinate);
+            !s)
+            return s;
     if (!allFinite(light.direction)) return invalid(n + ".direction: is not finite");
-    if (light.type == LightType::Spot && glm::dot(light.direction, light.direction) < 1e-12f)
-        return invalid(n + ".direction: is the zero vector");
+    if (light.type == LightType::Spot && !longEnough(light.direction))
+        return invalid(n + ".direction: is the zero vector (length below 1e-6)");
     for (int c = 0; c < 3; ++c)
         if (Status s = checkRange((n + ".intensity").c_str(), light.intensity[c], 0.0, 1e9); !s) return s;
     if (!std::isfinite(light.range) || light.range <= 0.0f)
@@ -143,25 +155,80 @@ Status checkRange(const char* field, double v, double lo, double hi) {
 }
 
 Status checkCamera(const CameraInput& camera, const std::string& prefix) {
-    if (!allFinite(camera.position)) return invalid(prefix + ".position: is not finite");
+    for (int c = 0; c < 3; ++c)
+        if (Status s = checkRange((prefix + ".position").c_str(), camera.position[c], -kMaxWorldCoordinate,
+                                  kMaxWorldCoordinate);
+            !s)
+            return s;
     if (!allFinite(camera.view)) return invalid(prefix + ".view: is not finite");
     if (!allFinite(camera.projection)) return invalid(prefix + ".projection: is not finite");
     glm::dmat4 rotation(camera.view);
     rotation[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    const glm::dmat4 clip = glm::dmat4(camera.projection) * rotation;
+    if (std::abs(glm::determinant(rotation)) < 1e-30)
+        return invalid(prefix + ".view: its rotation is singular");
     if (std::abs(glm::determinant(glm::dmat4(camera.projection))) < 1e-30 ||
-        std::abs(glm::determinant(glm::dmat4(camera.projection) * rotation)) < 1e-30)
+        std::abs(glm::determinant(clip)) < 1e-30)
         return invalid(prefix + ".projection: projection · view rotation is not invertible");
+    // The effects reconstruct view rays through the inverse, which the GPU gets in float.
+    if (!finiteAsFloat(glm::inverse(clip)))
+        return invalid(prefix + ".projection: projection · view rotation is nearly singular (its inverse " +
+                       "is not finite in float)");
     return Status::success();
 }
 
-Status checkLighting(const SunInput& sun, const Vec3& ambient) {
+Status checkLighting(const SunInput& sun, const Vec3& ambient, const std::string& prefix) {
+    const std::string toSun = prefix + "sun.toSun", illuminance = prefix + "sun.illuminance",
+                      ambientName = prefix + "ambient";
     for (int c = 0; c < 3; ++c) {
-        if (!std::isfinite(sun.toSun[c])) return invalid("sun.toSun: is not finite");
-        if (Status s = checkRange("sun.illuminance", sun.illuminance[c], 0.0, 1e7); !s) return s;
-        if (Status s = checkRange("ambient", ambient[c], 0.0, 1e7); !s) return s;
+        if (!std::isfinite(sun.toSun[c])) return invalid(toSun + ": is not finite");
+        if (Status s = checkRange(illuminance.c_str(), sun.illuminance[c], 0.0, 1e7); !s) return s;
+        if (Status s = checkRange(ambientName.c_str(), ambient[c], 0.0, 1e7); !s) return s;
     }
-    if (glm::dot(sun.toSun, sun.toSun) < 1e-12f) return invalid("sun.toSun: is the zero vector");
+    if (!longEnough(sun.toSun)) return invalid(toSun + ": is the zero vector (length below 1e-6)");
     return Status::success();
+}
+
+Status checkTime(double timeSeconds, const std::string& field) {
+    if (!std::isfinite(timeSeconds)) return invalid(field + ": is not finite");
+    return checkRange(field.c_str(), timeSeconds, -kMaxTimeSeconds, kMaxTimeSeconds);
+}
+
+Status checkShadowTransform(const DMat4& worldToClip, const DVec3& camera, const std::string& field) {
+    if (!allFinite(worldToClip)) return invalid(field + ": is not finite");
+    if (!finiteAsFloat(glm::dmat4(worldToClip) * glm::translate(glm::dmat4(1.0), glm::dvec3(camera))))
+        return invalid(field + ": worldToClip · translate(camera.position) is not finite in float");
+    return Status::success();
+}
+
+bool knownImageLayout(VkImageLayout layout) {
+    switch (layout) {
+        case VK_IMAGE_LAYOUT_UNDEFINED:
+        case VK_IMAGE_LAYOUT_GENERAL:
+        case VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL:
+        case VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL:
+        case VK_IMAGE_LAYOUT_PREINITIALIZED:
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_STENCIL_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_STENCIL_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_STENCIL_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL:
+        case VK_IMAGE_LAYOUT_ATTACHMENT_OPTIMAL:
+        case VK_IMAGE_LAYOUT_PRESENT_SRC_KHR:
+        case VK_IMAGE_LAYOUT_SHARED_PRESENT_KHR:
+        case VK_IMAGE_LAYOUT_FRAGMENT_DENSITY_MAP_OPTIMAL_EXT:
+        case VK_IMAGE_LAYOUT_FRAGMENT_SHADING_RATE_ATTACHMENT_OPTIMAL_KHR:
+        case VK_IMAGE_LAYOUT_ATTACHMENT_FEEDBACK_LOOP_OPTIMAL_EXT:
+            return true;
+        default:
+            return false;
+    }
 }
 
 Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) {
@@ -197,9 +264,9 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
             return invalid("FrameInfo.output.extent " + extentText(frame.output.extent) +
                            " differs from FrameInfo.color.extent " + extentText(frame.color.extent));
     }
-    if (!std::isfinite(frame.timeSeconds)) return invalid("FrameInfo.timeSeconds: is not finite");
+    if (Status s = checkTime(frame.timeSeconds, "FrameInfo.timeSeconds"); !s) return s;
     if (Status s = checkCamera(frame.camera, "FrameInfo.camera"); !s) return s;
-    if (Status s = checkLighting(frame.sun, frame.ambient); !s) return s;
+    if (Status s = checkLighting(frame.sun, frame.ambient, "FrameInfo."); !s) return s;
     const ShadowMapInput& shadow = frame.shadowMap;
     if (shadow.image.present()) {
         const ImageRule rule{"FrameInfo.shadowMap.image", isShadowFormat,
@@ -207,7 +274,10 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
                              "VK_FORMAT_D24_UNORM_S8_UINT or VK_FORMAT_R32_SFLOAT",
                              VK_IMAGE_USAGE_SAMPLED_BIT, nullptr};
         if (Status s = checkImage(shadow.image, rule); !s) return s;
-        if (!allFinite(shadow.worldToClip)) return invalid("FrameInfo.shadowMap.worldToClip: is not finite");
+        if (Status s = checkShadowTransform(shadow.worldToClip, frame.camera.position,
+                                            "FrameInfo.shadowMap.worldToClip");
+            !s)
+            return s;
         if (!(shadow.depthBias >= 0.0f) || !std::isfinite(shadow.depthBias))
             return invalid("FrameInfo.shadowMap.depthBias: " + numberText(shadow.depthBias) +
                            " must be finite and >= 0");

@@ -6,6 +6,7 @@
 #include <postfx/context.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace postfx::core {
@@ -28,6 +29,23 @@ bool allFinite(const glm::mat<C, R, T, Q>& m) {
     return true;
 }
 
+// Every component finite and within float's range, so that converting it to float (as postfx does for the
+// uniforms it builds in double) gives no Inf.
+template <glm::length_t C, glm::length_t R, glm::qualifier Q>
+bool finiteAsFloat(const glm::mat<C, R, double, Q>& m) {
+    for (glm::length_t c = 0; c < C; ++c)
+        for (glm::length_t r = 0; r < R; ++r)
+            if (!(std::abs(m[c][r]) <= double(std::numeric_limits<float>::max()))) return false;
+    return true;
+}
+
+// Bound of every world-space position postfx takes (camera, lights) [m]: camera-relative quantities built
+// from them (the height above the fog's base, the shadow map's camera-relative transform, the noise
+// coordinate) then stay finite and precise in float.
+inline constexpr double kMaxWorldCoordinate = 1e9;
+// Bound of FrameInfo::timeSeconds [s]: wind · time stays finite and the noise coordinate keeps its precision.
+inline constexpr double kMaxTimeSeconds = 1e12;
+
 // "1920x1080"
 std::string extentText(VkExtent2D extent);
 
@@ -42,10 +60,19 @@ Status checkRange(const char* field, double value, double lo, double hi);
 // camera, sun, ambient, time, shadow map and local lights.
 Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info);
 
-// The camera alone (also used by the CPU references): position, view, projection finite, projection
-// times the view's rotation invertible. `prefix` names the struct ("FrameInfo.camera").
+// The camera alone (also used by the CPU references): position within ±kMaxWorldCoordinate, view and
+// projection finite, projection times the view's rotation invertible with an inverse finite in float.
+// `prefix` names the struct ("FrameInfo.camera").
 Status checkCamera(const CameraInput& camera, const std::string& prefix);
-// The sun and ambient: finite, illuminance and ambient in [0, 1e7], a direction that is not zero.
-Status checkLighting(const SunInput& sun, const Vec3& ambient);
+// The sun and ambient: finite, illuminance and ambient in [0, 1e7], a direction of length >= 1e-6 (as
+// computed in double). `prefix` is put before "sun." and "ambient" ("FrameInfo.").
+Status checkLighting(const SunInput& sun, const Vec3& ambient, const std::string& prefix);
+// The frame's time: finite, within ±kMaxTimeSeconds. `field` names it.
+Status checkTime(double timeSeconds, const std::string& field);
+// The shadow map's transform (also used by the CPU references): finite, and worldToClip · translate(camera)
+// (the camera-relative transform the GPU gets in float) finite in float. `field` names the matrix.
+Status checkShadowTransform(const DMat4& worldToClip, const DVec3& camera, const std::string& field);
+// A VkImageLayout of the Vulkan headers postfx was built with (not a value cast from another int).
+bool knownImageLayout(VkImageLayout layout);
 
 }  // namespace postfx::core

@@ -24,6 +24,16 @@ Status validateCreateInfo(const ContextCreateInfo& info) {
     if (!info.device) return invalid("ContextCreateInfo.device is VK_NULL_HANDLE");
     if (!info.getInstanceProcAddr) return invalid("ContextCreateInfo.getInstanceProcAddr is null");
     if (!info.getDeviceProcAddr) return invalid("ContextCreateInfo.getDeviceProcAddr is null");
+    if (const VkAllocationCallbacks* a = info.allocator) {
+        // What Vulkan requires of VkAllocationCallbacks (postfx passes them to every create and destroy).
+        if (!a->pfnAllocation) return invalid("ContextCreateInfo.allocator->pfnAllocation is null");
+        if (!a->pfnReallocation) return invalid("ContextCreateInfo.allocator->pfnReallocation is null");
+        if (!a->pfnFree) return invalid("ContextCreateInfo.allocator->pfnFree is null");
+        if (!a->pfnInternalAllocation != !a->pfnInternalFree)
+            return invalid(
+                "ContextCreateInfo.allocator->pfnInternalAllocation and pfnInternalFree: give both or "
+                "neither");
+    }
     if (info.maxExtent.width == 0 || info.maxExtent.height == 0)
         return invalid("ContextCreateInfo.maxExtent is " + core::extentText(info.maxExtent) +
                        ": both sides must be > 0");
@@ -101,6 +111,13 @@ Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& 
     impl->info = info;
     core::Gpu& gpu = impl->gpu;
     if (Status s = gpu.init(info); !s) return fail(s);
+
+    // postfx creates images as large as maxExtent (an effect's reduced-resolution targets, the copy).
+    const uint32_t maxDimension = gpu.properties.limits.maxImageDimension2D;
+    if (info.maxExtent.width > maxDimension || info.maxExtent.height > maxDimension)
+        return fail(core::invalid("ContextCreateInfo.maxExtent " + core::extentText(info.maxExtent) +
+                                  " exceeds the device's maxImageDimension2D " +
+                                  std::to_string(maxDimension)));
 
     uint32_t familyCount = 0;
     gpu.fn.vkGetPhysicalDeviceQueueFamilyProperties(info.physicalDevice, &familyCount, nullptr);

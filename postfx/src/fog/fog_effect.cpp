@@ -78,6 +78,8 @@ core::QualityRequest FogEffect::quality(const FrameInfo& frame) const {
     const FogQuality q = frame.fog.quality;
     if (q == FogQuality::Custom) return {};
     if (q == FogQuality::Auto) return {core::QualityRequest::Kind::Auto, 0, frame.fog.autoBudgetMs};
+    // A value cast from another int: left as it is, for validateSettings to reject naming fog.quality.
+    if (uint32_t(q) > uint32_t(FogQuality::Auto)) return {};
     return {core::QualityRequest::Kind::Preset, uint32_t(q) - uint32_t(FogQuality::Low), 0.0f};
 }
 

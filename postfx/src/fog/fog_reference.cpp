@@ -49,11 +49,11 @@ Status validate(const FogInputs& in) {
         if (!std::isfinite(in.depth[i]))
             return invalid("FogInputs.depth: value " + std::to_string(i) + " is not finite");
     if (Status s = fog::validateSettings(in.settings); !s) return s;
-    if (Status s = core::checkLighting(in.sun, in.ambient); !s) return s;
+    if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
     if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
     if (!allFinite(clipToView(in.camera)))
         return invalid("camera.projection: projection · view rotation is not invertible");
-    if (!std::isfinite(in.timeSeconds)) return invalid("FogInputs.timeSeconds: is not finite");
+    if (Status s = core::checkTime(in.timeSeconds, "FogInputs.timeSeconds"); !s) return s;
     if (in.stepsPerPixel == 0) return invalid("FogInputs.stepsPerPixel: 0 must be >= 1");
     if (in.settings.noise.enabled) {
         if (in.noiseSize == 0) return invalid("FogInputs.noiseSize: 0 with fog.noise enabled");
@@ -66,7 +66,10 @@ Status validate(const FogInputs& in) {
                                   "shadowWidth·shadowHeight");
             !s)
             return s;
-        if (!allFinite(in.shadowWorldToClip)) return invalid("FogInputs.shadowWorldToClip: is not finite");
+        if (Status s = core::checkShadowTransform(in.shadowWorldToClip, in.camera.position,
+                                                  "FogInputs.shadowWorldToClip");
+            !s)
+            return s;
         if (!(in.shadowDepthBias >= 0.0f) || !std::isfinite(in.shadowDepthBias))
             return invalid("FogInputs.shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
                            " must be finite and >= 0");

@@ -50,6 +50,9 @@ float clampedAnisotropy(float g) {
 }
 
 Status validateSettings(const FogSettings& s) {
+    if (uint32_t(s.quality) > uint32_t(FogQuality::Auto))
+        return bad("fog.quality", std::to_string(uint32_t(s.quality)) +
+                                      " is not a FogQuality (Custom, Low, Medium, High, Ultra or Auto)");
     if (Status r = checkRange("fog.density", s.density, 0.0, 1e6); !r) return r;
     for (int c = 0; c < 3; ++c)
         if (Status r = checkRange("fog.albedo", s.albedo[c], 0.0, 1.0); !r) return r;
@@ -72,6 +75,13 @@ Status validateSettings(const FogSettings& s) {
     if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
         return bad("fog.noise.texture_size",
                    std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
+    if (n.hostTexture && n.hostTextureLayout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL &&
+        n.hostTextureLayout != VK_IMAGE_LAYOUT_GENERAL &&
+        n.hostTextureLayout != VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL)
+        return bad("fog.noise.host_texture_layout",
+                   std::to_string(int64_t(n.hostTextureLayout)) +
+                       " is not SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL (a layout it can be "
+                       "sampled in)");
     if (Status r = checkRange("fog.noise.tiling", n.tiling, 0.0, 1000.0); !r) return r;
     if (n.tiling <= 0.0f) return bad("fog.noise.tiling", "must be > 0");
     if (Status r = checkRange("fog.noise.threshold", n.threshold, 0.0, 1.0); !r) return r;

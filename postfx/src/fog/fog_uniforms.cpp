@@ -23,7 +23,8 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
         glm::mat4(glm::inverse(glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view)));
     // camera-relative x -> world (x + camera) -> shadow clip
     u.viewToShadow = glm::mat4(frame.shadowMap.worldToClip * glm::translate(glm::dmat4(1.0), camera));
-    u.toSun = glm::vec4(glm::normalize(frame.sun.toSun), 0.0f);
+    // In double: a long float vector's dot product would overflow (toSun = (1e30, 0, 0) gives 0 in float).
+    u.toSun = glm::vec4(glm::vec3(glm::normalize(glm::dvec3(frame.sun.toSun))), 0.0f);
     u.sunIlluminance = glm::vec4(frame.sun.illuminance, 0.0f);
     u.ambient = glm::vec4(frame.ambient, 0.0f);
     u.albedo = glm::vec4(s.albedo, 0.0f);

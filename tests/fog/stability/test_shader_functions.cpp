@@ -239,7 +239,8 @@ TEST_F(FogShaderFunctions, HeightFogTermsMatchDoublePrecision) {
     const float densities[] = {1e-12f, 0.02f, 1e6f};
     const float sunYs[] = {1.0f, 0.3f, 1e-6f, 0.0f, -0.5f};
     const float dirYs[] = {-1.0f, -0.5f, -1e-3f, -1e-7f, 0.0f, 1e-7f, 1e-3f, 0.5f, 1.0f};
-    const float lengths[] = {1e-3f, 1.0f, 100.0f, 1e4f, 1e7f, std::numeric_limits<float>::infinity()};
+    // 1e38: a finite length where density · len and a · len overflow float (fog.md, "Analytic tail").
+    const float lengths[] = {1e-3f, 1.0f, 100.0f, 1e4f, 1e7f, 1e38f, std::numeric_limits<float>::infinity()};
     std::vector<FunctionCase> cases;
     for (float y : heights) {
         for (float k : falloffs) {

@@ -1,0 +1,536 @@
+// Host-side API misuse (docs/integration.md, "Input ranges"): every ContextCreateInfo / FrameInfo field with
+// a documented range, one table row each. A valid frame with that one field set to a value outside its range
+// (below, above, NaN, ±Inf, an enum cast from another int, a null handle) is refused by Context::plan (the
+// checks record() runs) with InvalidArgument naming the field in one line; the boundary values themselves
+// are accepted. Then the derived quantities: inputs valid one by one that overflowed float together are
+// refused naming the fields, or give a finite, bounded result on the device.
+#include "core/checks.h"
+#include "fog/fog_uniforms.h"
+#include "fog_harness.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace test {
+namespace {
+
+using postfx::FrameInfo;
+using postfx::Result;
+
+constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+constexpr double kMaxCoordinate = postfx::core::kMaxWorldCoordinate;
+
+template <class T>
+T fake(uintptr_t value) {
+    return reinterpret_cast<T>(value);
+}
+
+// A valid frame of fake handles (plan() makes no Vulkan call): every optional input present, so each of its
+// fields is checked: a separate output, a shadow map, a spot light, fog with a host noise texture.
+FrameInfo validFrame() {
+    FrameInfo f;
+    const VkExtent2D extent{16, 8};
+    f.color = {fake<VkImage>(1), fake<VkImageView>(2),    VK_FORMAT_R16G16B16A16_SFLOAT,
+               extent,           VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_USAGE_STORAGE_BIT};
+    f.depth = {fake<VkImage>(3),
+               fake<VkImageView>(4),
+               VK_FORMAT_D32_SFLOAT,
+               extent,
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+               VK_IMAGE_USAGE_SAMPLED_BIT};
+    f.output = f.color;
+    f.output.image = fake<VkImage>(5);
+    f.output.view = fake<VkImageView>(6);
+    f.camera = testCamera({1.0, 2.0, 3.0}, 60.0f, 2.0f, 0.1f, 1000.0f, true);
+    f.sun.illuminance = {1e3f, 1e3f, 1e3f};
+    f.ambient = {1.0f, 1.0f, 1.0f};
+    f.shadowMap.image = {fake<VkImage>(7),
+                         fake<VkImageView>(8),
+                         VK_FORMAT_D32_SFLOAT,
+                         {32, 32},
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                         VK_IMAGE_USAGE_SAMPLED_BIT};
+    f.shadowMap.worldToClip = glm::orthoRH_ZO(-50.0, 50.0, -50.0, 50.0, 0.0, 200.0);
+    f.fog.enabled = true;
+    f.fog.noise.enabled = true;
+    f.fog.noise.hostTexture = fake<VkImageView>(9);
+    return f;
+}
+
+// The frame's one light (FrameInfo::lights points here while a row runs).
+postfx::LocalLight gLight;
+
+postfx::LocalLight validLight() {
+    postfx::LocalLight l;
+    l.type = postfx::LightType::Spot;
+    l.position = {5.0, 1.0, -3.0};
+    l.intensity = {100.0f, 100.0f, 100.0f};
+    l.innerConeAngle = 0.0f;
+    l.outerConeAngle = 0.5f;
+    return l;
+}
+
+struct Row {
+    std::string field;  // the message must contain this
+    std::string value;  // for the failure message
+    std::function<void(FrameInfo&)> set;
+};
+
+// Rows for a number in [lo, hi]: the next representable values outside, NaN and both infinities rejected;
+// lo and hi accepted. `openLo` / `openHi`: that bound is excluded (then it is rejected, and the next value
+// inside is accepted).
+template <class T>
+void addRange(std::vector<Row>& bad, std::vector<Row>& good, const std::string& field,
+              std::function<T&(FrameInfo&)> at, T lo, T hi, bool openLo = false, bool openHi = false) {
+    constexpr T inf = std::numeric_limits<T>::infinity();
+    auto row = [&](std::vector<Row>& rows, T v) {
+        rows.push_back({field, std::to_string(v), [at, v](FrameInfo& f) { at(f) = v; }});
+    };
+    row(bad, std::numeric_limits<T>::quiet_NaN());
+    row(bad, inf);
+    row(bad, -inf);
+    row(bad, openLo ? lo : std::nextafter(lo, -inf));
+    row(bad, openHi ? hi : std::nextafter(hi, inf));
+    row(good, openLo ? std::nextafter(lo, inf) : lo);
+    row(good, openHi ? std::nextafter(hi, -inf) : hi);
+}
+
+void addBad(std::vector<Row>& bad, const std::string& field, const std::string& value,
+            std::function<void(FrameInfo&)> set) {
+    bad.push_back({field, value, std::move(set)});
+}
+
+// The image fields every ImageInput has (`name`: "FrameInfo.color").
+void addImageRows(std::vector<Row>& bad, const std::string& name,
+                  std::function<postfx::ImageInput&(FrameInfo&)> at) {
+    addBad(bad, name + ".image", "null", [at](FrameInfo& f) { at(f).image = VK_NULL_HANDLE; });
+    addBad(bad, name + ".view", "null", [at](FrameInfo& f) { at(f).view = VK_NULL_HANDLE; });
+    addBad(bad, name + ".format", "R8G8B8A8_UNORM",
+           [at](FrameInfo& f) { at(f).format = VK_FORMAT_R8G8B8A8_UNORM; });
+    addBad(bad, name + ".format", "cast 0x7ffffffe",
+           [at](FrameInfo& f) { at(f).format = VkFormat(0x7ffffffe); });
+    addBad(bad, name + ".extent", "0 wide", [at](FrameInfo& f) { at(f).extent.width = 0; });
+    addBad(bad, name + ".extent", "0 high", [at](FrameInfo& f) { at(f).extent.height = 0; });
+    addBad(bad, name + ".layout", "UNDEFINED",
+           [at](FrameInfo& f) { at(f).layout = VK_IMAGE_LAYOUT_UNDEFINED; });
+    addBad(bad, name + ".layout", "PREINITIALIZED",
+           [at](FrameInfo& f) { at(f).layout = VK_IMAGE_LAYOUT_PREINITIALIZED; });
+    addBad(bad, name + ".layout", "cast 12345", [at](FrameInfo& f) { at(f).layout = VkImageLayout(12345); });
+    addBad(bad, name + ".usage", "0", [at](FrameInfo& f) { at(f).usage = 0; });
+}
+
+void addVec3Range(std::vector<Row>& bad, std::vector<Row>& good, const std::string& field,
+                  std::function<postfx::Vec3&(FrameInfo&)> at, float lo, float hi) {
+    for (int c = 0; c < 3; ++c)
+        addRange<float>(
+            bad, good, field, [at, c](FrameInfo& f) -> float& { return at(f)[c]; }, lo, hi);
+}
+
+using FogField = std::function<float&(FrameInfo&)>;
+
+void frameRows(std::vector<Row>& bad, std::vector<Row>& good) {
+    addBad(bad, "FrameInfo.structSize", "+4", [](FrameInfo& f) { f.structSize += 4; });
+    addImageRows(bad, "FrameInfo.color", [](FrameInfo& f) -> postfx::ImageInput& { return f.color; });
+    addBad(bad, "maxExtent", "65x8", [](FrameInfo& f) { f.color.extent.width = 65; });
+    addImageRows(bad, "FrameInfo.depth", [](FrameInfo& f) -> postfx::ImageInput& { return f.depth; });
+    addBad(bad, "FrameInfo.depth.extent", "other than color's", [](FrameInfo& f) {
+        f.depth.extent = {8, 8};
+    });
+    addImageRows(bad, "FrameInfo.output", [](FrameInfo& f) -> postfx::ImageInput& { return f.output; });
+    // The output's null image means "composite in place": accepted.
+    std::erase_if(bad, [](const Row& r) { return r.field == "FrameInfo.output.image"; });
+    good.push_back({"no output", "", [](FrameInfo& f) { f.output = {}; }});
+    addBad(bad, "FrameInfo.output.format", "other than color's",
+           [](FrameInfo& f) { f.output.format = VK_FORMAT_R32G32B32A32_SFLOAT; });
+    addBad(bad, "FrameInfo.output is FrameInfo.color", "color",
+           [](FrameInfo& f) { f.output.image = f.color.image; });
+    addImageRows(bad, "FrameInfo.shadowMap.image",
+                 [](FrameInfo& f) -> postfx::ImageInput& { return f.shadowMap.image; });
+    // The image's own null handle means "no shadow map": that row is accepted.
+    std::erase_if(bad, [](const Row& r) { return r.field == "FrameInfo.shadowMap.image.image"; });
+    good.push_back({"no shadow map", "", [](FrameInfo& f) { f.shadowMap.image.image = VK_NULL_HANDLE; }});
+
+    addRange<double>(
+        bad, good, "FrameInfo.timeSeconds", [](FrameInfo& f) -> double& { return f.timeSeconds; },
+        -postfx::core::kMaxTimeSeconds, postfx::core::kMaxTimeSeconds);
+    for (int c = 0; c < 3; ++c)
+        addRange<double>(
+            bad, good, "FrameInfo.camera.position",
+            [c](FrameInfo& f) -> double& { return f.camera.position[c]; }, -kMaxCoordinate, kMaxCoordinate);
+    addBad(bad, "FrameInfo.camera.view", "NaN", [](FrameInfo& f) { f.camera.view[1][2] = kNan; });
+    addBad(bad, "FrameInfo.camera.view", "Inf", [](FrameInfo& f) { f.camera.view[0][0] = kInf; });
+    addBad(bad, "FrameInfo.camera.view", "singular rotation",
+           [](FrameInfo& f) { f.camera.view = glm::mat4(0.0f); });
+    addBad(bad, "FrameInfo.camera.projection", "NaN", [](FrameInfo& f) { f.camera.projection[2][3] = kNan; });
+    addBad(bad, "FrameInfo.camera.projection", "singular",
+           [](FrameInfo& f) { f.camera.projection = glm::mat4(0.0f); });
+    // Determinant 1e-9, but an inverse element of 1e39: beyond float.
+    addBad(bad, "FrameInfo.camera.projection", "inverse not finite in float", [](FrameInfo& f) {
+        f.camera.projection = glm::mat4(1.0f);
+        f.camera.projection[0][0] = 1e-39f;
+        f.camera.projection[1][1] = 1e30f;
+    });
+
+    addBad(bad, "FrameInfo.sun.toSun", "NaN", [](FrameInfo& f) { f.sun.toSun.y = kNan; });
+    addBad(bad, "FrameInfo.sun.toSun", "Inf", [](FrameInfo& f) { f.sun.toSun.x = kInf; });
+    addBad(bad, "FrameInfo.sun.toSun", "zero", [](FrameInfo& f) { f.sun.toSun = glm::vec3(0.0f); });
+    addBad(bad, "FrameInfo.sun.toSun", "length 1e-45", [](FrameInfo& f) {
+        f.sun.toSun = {0.0f, 1e-45f, 0.0f};
+    });
+    good.push_back({"FrameInfo.sun.toSun", "length 2e-6", [](FrameInfo& f) {
+                        f.sun.toSun = {0.0f, 2e-6f, 0.0f};
+                    }});
+    good.push_back({"FrameInfo.sun.toSun", "length 1e30 (a float dot product overflows)", [](FrameInfo& f) {
+                        f.sun.toSun = {1e30f, 1e30f, 0.0f};
+                    }});
+    addVec3Range(
+        bad, good, "FrameInfo.sun.illuminance",
+        [](FrameInfo& f) -> postfx::Vec3& { return f.sun.illuminance; }, 0.0f, 1e7f);
+    addVec3Range(
+        bad, good, "FrameInfo.ambient", [](FrameInfo& f) -> postfx::Vec3& { return f.ambient; }, 0.0f, 1e7f);
+
+    addBad(bad, "FrameInfo.shadowMap.worldToClip", "NaN",
+           [](FrameInfo& f) { f.shadowMap.worldToClip[3][1] = NAN; });
+    addBad(bad, "FrameInfo.shadowMap.worldToClip", "1e39 (not finite in float)",
+           [](FrameInfo& f) { f.shadowMap.worldToClip[0][0] = 1e39; });
+    addRange<float>(
+        bad, good, "FrameInfo.shadowMap.depthBias",
+        [](FrameInfo& f) -> float& { return f.shadowMap.depthBias; }, 0.0f,
+        std::numeric_limits<float>::max());
+
+    addBad(bad, "FrameInfo.lightCount", "257",
+           [](FrameInfo& f) { f.lightCount = postfx::kMaxLocalLights + 1; });
+    addBad(bad, "FrameInfo.lights is null", "null with count 1", [](FrameInfo& f) { f.lights = nullptr; });
+    const std::string light = "FrameInfo.lights[0]";
+    addBad(bad, light + ".type", "cast 7", [](FrameInfo&) { gLight.type = postfx::LightType(7); });
+    for (int c = 0; c < 3; ++c)
+        addRange<double>(
+            bad, good, light + ".position", [c](FrameInfo&) -> double& { return gLight.position[c]; },
+            -kMaxCoordinate, kMaxCoordinate);
+    addBad(bad, light + ".direction", "NaN", [](FrameInfo&) { gLight.direction.x = kNan; });
+    addBad(bad, light + ".direction", "zero", [](FrameInfo&) { gLight.direction = glm::vec3(0.0f); });
+    for (int c = 0; c < 3; ++c)
+        addRange<float>(
+            bad, good, light + ".intensity", [c](FrameInfo&) -> float& { return gLight.intensity[c]; }, 0.0f,
+            1e9f);
+    addRange<float>(
+        bad, good, light + ".range", [](FrameInfo&) -> float& { return gLight.range; }, 0.0f,
+        std::numeric_limits<float>::max(), true);
+    // The smallest range is the light's sourceRadius (0.05), a bound of its own (below).
+    std::erase_if(good, [&](const Row& r) { return r.field == light + ".range" && r.value == "0.000000"; });
+    good.push_back(
+        {light + ".range", "sourceRadius", [](FrameInfo&) { gLight.range = gLight.sourceRadius; }});
+    // sourceRadius in (0, range] with range 100.
+    addRange<float>(
+        bad, good, light + ".sourceRadius", [](FrameInfo&) -> float& { return gLight.sourceRadius; }, 0.0f,
+        100.0f, true);
+    addRange<float>(
+        bad, good, light + ".outerConeAngle", [](FrameInfo&) -> float& { return gLight.outerConeAngle; },
+        0.0f, 1.5707962f);
+    // In [0, outer] with outer 0.5:
+    addRange<float>(
+        bad, good, light + ".innerConeAngle", [](FrameInfo&) -> float& { return gLight.innerConeAngle; },
+        0.0f, 0.5f);
+}
+
+void fogRows(std::vector<Row>& bad, std::vector<Row>& good) {
+    auto fogRange = [&](const std::string& key, FogField at, float lo, float hi, bool openLo = false,
+                        bool openHi = false) { addRange<float>(bad, good, key, at, lo, hi, openLo, openHi); };
+    addBad(bad, "fog.quality", "cast 6", [](FrameInfo& f) { f.fog.quality = postfx::FogQuality(6); });
+    addBad(bad, "fog.quality", "cast 1000", [](FrameInfo& f) { f.fog.quality = postfx::FogQuality(1000); });
+    fogRange(
+        "fog.auto_budget_ms", [](FrameInfo& f) -> float& { return f.fog.autoBudgetMs; }, 0.0f,
+        std::numeric_limits<float>::max(), true);
+    fogRange(
+        "fog.density", [](FrameInfo& f) -> float& { return f.fog.density; }, 0.0f, 1e6f);
+    for (int c = 0; c < 3; ++c)
+        fogRange(
+            "fog.albedo", [c](FrameInfo& f) -> float& { return f.fog.albedo[c]; }, 0.0f, 1.0f);
+    fogRange(
+        "fog.anisotropy", [](FrameInfo& f) -> float& { return f.fog.anisotropy; }, -1.0f, 1.0f);
+    fogRange(
+        "fog.height_falloff", [](FrameInfo& f) -> float& { return f.fog.heightFalloff; }, 0.0f, 10.0f);
+    addBad(bad, "fog.base_height", "NaN", [](FrameInfo& f) { f.fog.baseHeight = kNan; });
+    addBad(bad, "fog.base_height", "Inf", [](FrameInfo& f) { f.fog.baseHeight = -kInf; });
+    fogRange(
+        "fog.max_distance", [](FrameInfo& f) -> float& { return f.fog.maxDistance; }, 0.0f, 1e7f, true);
+    addBad(bad, "fog.steps", "0", [](FrameInfo& f) { f.fog.steps = 0; });
+    addBad(bad, "fog.steps", "4097", [](FrameInfo& f) { f.fog.steps = 4097; });
+    good.push_back({"fog.steps", "1", [](FrameInfo& f) { f.fog.steps = 1; }});
+    good.push_back({"fog.steps", "4096", [](FrameInfo& f) { f.fog.steps = 4096; }});
+    fogRange(
+        "fog.resolution_scale", [](FrameInfo& f) -> float& { return f.fog.resolutionScale; }, 0.25f, 1.0f);
+    fogRange(
+        "fog.transmittance_cutoff", [](FrameInfo& f) -> float& { return f.fog.transmittanceCutoff; }, 0.0f,
+        1.0f, false, true);
+    for (uint32_t k : {0u, 2u, 8u, 9u})
+        addBad(bad, "fog.shadow_kernel", std::to_string(k), [k](FrameInfo& f) { f.fog.shadowKernel = k; });
+    good.push_back({"fog.shadow_kernel", "7", [](FrameInfo& f) { f.fog.shadowKernel = 7; }});
+    for (uint32_t size : {8u, 100u, 512u})
+        addBad(bad, "fog.noise.texture_size", std::to_string(size), [size](FrameInfo& f) {
+            f.fog.noise.hostTexture = VK_NULL_HANDLE;
+            f.fog.noise.textureSize = size;
+        });
+    for (uint32_t size : {16u, 256u})
+        good.push_back({"fog.noise.texture_size", std::to_string(size), [size](FrameInfo& f) {
+                            f.fog.noise.hostTexture = VK_NULL_HANDLE;
+                            f.fog.noise.textureSize = size;
+                        }});
+    addBad(bad, "fog.noise.host_texture_layout", "UNDEFINED",
+           [](FrameInfo& f) { f.fog.noise.hostTextureLayout = VK_IMAGE_LAYOUT_UNDEFINED; });
+    addBad(bad, "fog.noise.host_texture_layout", "cast 12345",
+           [](FrameInfo& f) { f.fog.noise.hostTextureLayout = VkImageLayout(12345); });
+    good.push_back({"fog.noise.host_texture_layout", "GENERAL",
+                    [](FrameInfo& f) { f.fog.noise.hostTextureLayout = VK_IMAGE_LAYOUT_GENERAL; }});
+    fogRange(
+        "fog.noise.tiling", [](FrameInfo& f) -> float& { return f.fog.noise.tiling; }, 0.0f, 1000.0f, true);
+    fogRange(
+        "fog.noise.threshold", [](FrameInfo& f) -> float& { return f.fog.noise.threshold; }, 0.0f, 1.0f);
+    fogRange(
+        "fog.noise.multiplier", [](FrameInfo& f) -> float& { return f.fog.noise.multiplier; }, 0.0f, 1e3f);
+    for (int c = 0; c < 3; ++c)
+        fogRange(
+            "fog.noise.wind", [c](FrameInfo& f) -> float& { return f.fog.noise.wind[c]; }, -1e3f, 1e3f);
+}
+
+class CoreApiRanges : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        ASSERT_TRUE(host);
+        postfx::ContextCreateInfo info;
+        info.maxExtent = {64, 64};
+        ASSERT_TRUE(createContext(context, info).ok());
+    }
+    postfx::Status plan(const Row& row) {
+        FrameInfo f = validFrame();
+        gLight = validLight();
+        f.lights = &gLight;
+        f.lightCount = 1;
+        row.set(f);
+        postfx::FramePlan plan;
+        return context->plan(f, plan);
+    }
+    std::unique_ptr<postfx::Context> context;
+};
+
+TEST_F(CoreApiRanges, EveryFrameFieldOutsideItsRangeIsRefusedNamingIt) {
+    std::vector<Row> bad, good;
+    frameRows(bad, good);
+    fogRows(bad, good);
+    ASSERT_GT(bad.size(), 200u);
+    {
+        const postfx::Status s = plan({"valid", "", [](FrameInfo&) {}});
+        ASSERT_TRUE(s.ok()) << s.message;
+    }
+    for (const Row& row : bad) {
+        const postfx::Status s = plan(row);
+        EXPECT_EQ(s.code, Result::InvalidArgument) << row.field << " = " << row.value << ": " << s.message;
+        EXPECT_NE(s.message.find(row.field), std::string::npos)
+            << row.field << " = " << row.value << ": " << s.message;
+        EXPECT_EQ(s.message.find('\n'), std::string::npos) << s.message;
+    }
+    for (const Row& row : good) {
+        const postfx::Status s = plan(row);
+        EXPECT_TRUE(s.ok()) << row.field << " = " << row.value << " (a boundary) refused: " << s.message;
+    }
+    // record() runs the same checks, and refuses a frame without a command buffer.
+    FrameInfo f = validFrame();
+    const postfx::Status s = context->record(f);
+    EXPECT_EQ(s.code, Result::InvalidArgument);
+    EXPECT_NE(s.message.find("FrameInfo.commandBuffer"), std::string::npos) << s.message;
+}
+
+TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {
+    static VkAllocationCallbacks callbacks{};  // only its pointers are looked at before any use
+    struct CreateRow {
+        const char* field;
+        std::function<void(postfx::ContextCreateInfo&)> set;
+    };
+    const uint32_t maxDimension = [&] {
+        VkPhysicalDeviceProperties p{};
+        vkGetPhysicalDeviceProperties(host->physicalDevice, &p);
+        return p.limits.maxImageDimension2D;
+    }();
+    auto allocator = [](void (*edit)(VkAllocationCallbacks&)) {
+        return [edit](postfx::ContextCreateInfo& i) {
+            callbacks = {};
+            callbacks.pfnAllocation = [](void*, size_t, size_t, VkSystemAllocationScope) -> void* {
+                return nullptr;
+            };
+            callbacks.pfnReallocation = [](void*, void*, size_t, size_t, VkSystemAllocationScope) -> void* {
+                return nullptr;
+            };
+            callbacks.pfnFree = [](void*, void*) {};
+            edit(callbacks);
+            i.allocator = &callbacks;
+        };
+    };
+    const CreateRow bad[] = {
+        {"ContextCreateInfo.structSize", [](postfx::ContextCreateInfo& i) { i.structSize -= 4; }},
+        {"ContextCreateInfo.instance", [](postfx::ContextCreateInfo& i) { i.instance = VK_NULL_HANDLE; }},
+        {"ContextCreateInfo.physicalDevice",
+         [](postfx::ContextCreateInfo& i) { i.physicalDevice = VK_NULL_HANDLE; }},
+        {"ContextCreateInfo.device", [](postfx::ContextCreateInfo& i) { i.device = VK_NULL_HANDLE; }},
+        {"ContextCreateInfo.getInstanceProcAddr",
+         [](postfx::ContextCreateInfo& i) { i.getInstanceProcAddr = nullptr; }},
+        {"ContextCreateInfo.getDeviceProcAddr",
+         [](postfx::ContextCreateInfo& i) { i.getDeviceProcAddr = nullptr; }},
+        {"ContextCreateInfo.queueFamilyIndex",
+         [](postfx::ContextCreateInfo& i) { i.queueFamilyIndex = 1000; }},
+        {"ContextCreateInfo.allocator->pfnAllocation",
+         allocator([](VkAllocationCallbacks& a) { a.pfnAllocation = nullptr; })},
+        {"ContextCreateInfo.allocator->pfnReallocation",
+         allocator([](VkAllocationCallbacks& a) { a.pfnReallocation = nullptr; })},
+        {"ContextCreateInfo.allocator->pfnFree",
+         allocator([](VkAllocationCallbacks& a) { a.pfnFree = nullptr; })},
+        {"ContextCreateInfo.allocator->pfnInternalAllocation", allocator([](VkAllocationCallbacks& a) {
+             a.pfnInternalAllocation = [](void*, size_t, VkInternalAllocationType, VkSystemAllocationScope) {
+             };
+         })},
+        {"ContextCreateInfo.maxExtent",
+         [](postfx::ContextCreateInfo& i) {
+             i.maxExtent = {0, 16};
+         }},
+        {"ContextCreateInfo.maxExtent",
+         [](postfx::ContextCreateInfo& i) {
+             i.maxExtent = {16, 0};
+         }},
+        {"ContextCreateInfo.maxExtent",
+         [maxDimension](postfx::ContextCreateInfo& i) {
+             i.maxExtent = {maxDimension + 1, 16};
+         }},
+        {"ContextCreateInfo.maxExtent",
+         [maxDimension](postfx::ContextCreateInfo& i) {
+             i.maxExtent = {16, maxDimension + 1};
+         }},
+        {"ContextCreateInfo.framesInFlight", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 0; }},
+        {"ContextCreateInfo.framesInFlight", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 9; }},
+    };
+    for (const CreateRow& row : bad) {
+        postfx::ContextCreateInfo info = hostHandles();
+        row.set(info);
+        std::unique_ptr<postfx::Context> created;
+        const postfx::Status s = postfx::Context::create(info, created);
+        EXPECT_EQ(s.code, Result::InvalidArgument) << row.field << ": " << s.message;
+        EXPECT_NE(s.message.find(row.field), std::string::npos) << row.field << ": " << s.message;
+        EXPECT_FALSE(created);
+    }
+    const CreateRow good[] = {
+        {"framesInFlight 1", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 1; }},
+        {"framesInFlight 8", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 8; }},
+        {"maxExtent 1x1",
+         [](postfx::ContextCreateInfo& i) {
+             i.maxExtent = {1, 1};
+         }},
+        {"maxExtent the device's limit",
+         [maxDimension](postfx::ContextCreateInfo& i) {
+             i.maxExtent = {maxDimension, maxDimension};
+         }},
+    };
+    for (const CreateRow& row : good) {
+        postfx::ContextCreateInfo info = hostHandles();
+        row.set(info);
+        std::unique_ptr<postfx::Context> created;
+        const postfx::Status s = postfx::Context::create(info, created);
+        EXPECT_TRUE(s.ok()) << row.field << ": " << s.message;
+    }
+}
+
+// Derived quantities: fields valid one by one whose products overflowed float.
+TEST_F(CoreApiRanges, JointlyOverflowingInputsAreRefusedNamingTheFields) {
+    // The shadow map's camera-relative transform worldToClip · translate(camera) goes to the GPU in float:
+    // an element of 1e30 with the camera 1e9 m away makes 1e39.
+    postfx::Status s = plan({"", "", [](FrameInfo& f) {
+                                 f.shadowMap.worldToClip = glm::dmat4(1e30);
+                                 f.camera.position = {kMaxCoordinate, 0.0, 0.0};
+                             }});
+    EXPECT_EQ(s.code, Result::InvalidArgument);
+    EXPECT_NE(s.message.find("FrameInfo.shadowMap.worldToClip"), std::string::npos) << s.message;
+    EXPECT_NE(s.message.find("camera.position"), std::string::npos) << s.message;
+    s = plan({"", "", [](FrameInfo& f) { f.shadowMap.worldToClip = glm::dmat4(1e30); }});
+    EXPECT_TRUE(s.ok()) << "near the origin the same matrix is fine: " << s.message;
+}
+
+TEST_F(CoreApiRanges, JointlyLargeInputsGiveFiniteUniforms) {
+    // A long sun vector, time, wind and tiling at their bounds, the camera far away: every uniform finite.
+    FrameInfo f = validFrame();
+    f.sun.toSun = {1e30f, 1e30f, 0.0f};  // a float dot product of it overflows: normalised in double
+    f.timeSeconds = postfx::core::kMaxTimeSeconds;
+    f.fog.noise.wind = glm::vec3(1e3f);
+    f.fog.noise.tiling = 1e3f;
+    f.fog.density = 1e6f;
+    f.fog.noise.multiplier = 1e3f;
+    f.fog.maxDistance = 1e7f;
+    f.fog.heightFalloff = 1e-30f;  // the medium's top ln(bound) / 1e-30 is 5e31 m: may be +Inf, never NaN
+    f.fog.baseHeight = -3e38f;
+    f.camera.position = {kMaxCoordinate, kMaxCoordinate, -kMaxCoordinate};
+    postfx::FramePlan p;
+    ASSERT_TRUE(context->plan(f, p).ok());
+    const postfx::gpu::FogUniforms u = postfx::fog::buildUniforms(f, {}, true, true);
+    EXPECT_NEAR(u.toSun.x, 0.70710678f, 1e-6f);
+    EXPECT_NEAR(u.toSun.y, 0.70710678f, 1e-6f);
+    auto finite = [](const float* v, size_t n) {
+        for (size_t i = 0; i < n; ++i)
+            if (std::isnan(v[i]) || (std::isinf(v[i]))) return false;
+        return true;
+    };
+    EXPECT_TRUE(finite(&u.clipToView[0][0], 16));
+    EXPECT_TRUE(finite(&u.viewToShadow[0][0], 16));
+    EXPECT_TRUE(finite(&u.toSun[0], 4));
+    EXPECT_TRUE(finite(&u.noise[0], 4));
+    EXPECT_TRUE(finite(&u.medium[0], 4));
+    EXPECT_TRUE(std::isfinite(u.heights.x));
+    EXPECT_FALSE(std::isnan(u.heights.y));
+}
+
+// density · h(y) overflows float far below the base height (h is clamped at e^80 ≈ 5.5e34): with density 1e4
+// it is +Inf, and +Inf times a noise of 0 was NaN, which the composite's clamp turned into the format's
+// largest value on lavapipe. The extinction is now density · noise · h: +Inf only where the noise is not 0
+// (an opaque step). The fog over color 0.5 with ambient 1, albedo 1 and no sun lies in [0.5, 1] wherever it
+// is.
+TEST_F(CoreApiRanges, DenseFogFarBelowItsBaseStaysBounded) {
+    postfx::core::Gpu gpu;
+    ASSERT_TRUE(gpu.init(hostHandles()).ok());
+    constexpr uint32_t kSize = 8;
+    FrameInfo frame;
+    frame.camera = testCamera({0.0, -20.0, 0.0}, 60.0f, 1.0f, 0.1f, 1000.0f, true);
+    frame.ambient = glm::vec3(1.0f);
+    postfx::FogSettings& fog = frame.fog;
+    fog.enabled = true;
+    fog.density = 1e4f;
+    fog.albedo = glm::vec3(1.0f);
+    fog.heightFalloff = 10.0f;  // 20 m below the base: exponent 200, clamped to 80
+    fog.maxDistance = 50.0f;
+    fog.steps = 4;
+    fog.analyticTail = false;
+    fog.noise.enabled = true;
+    fog.noise.textureSize = 16;
+    fog.noise.threshold = 0.5f;  // about half the texels give noise 0
+    FogHarnessImages images;
+    images.width = images.height = kSize;
+    images.color.assign(kSize * kSize * 4, 0.5f);
+    images.depth.assign(kSize * kSize, 0.0f);  // no geometry (reversed Z)
+    for (float scale : {1.0f, 0.5f}) {
+        fog.resolutionScale = scale;
+        FogHarness harness(*host, gpu);
+        std::vector<float> color;
+        const postfx::Status s = harness.run(*context, images, frame, color);
+        ASSERT_TRUE(s.ok()) << s.message;
+        for (size_t i = 0; i < color.size(); ++i) {
+            if (i % 4 == 3) continue;  // alpha
+            ASSERT_TRUE(color[i] >= 0.5f - 1e-3f && color[i] <= 1.0f + 1e-3f)
+                << "scale " << scale << ", value " << i << ": " << color[i];
+        }
+        frame.frameIndex++;
+    }
+}
+
+}  // namespace
+}  // namespace test
