@@ -11,14 +11,36 @@
 
 namespace demo {
 
+// Limits of scene files (docs/scene-format.md, "Limits"). Within them every derived quantity the renderer
+// computes is finite (camera matrices and their inverse, the shadow map fit, the PNG exposure) and postfx
+// accepts the frame, so a file that loads renders; tests/demo/fuzz checks it.
+namespace limits {
+constexpr double kMaxCoordinate = 1e7;  // [m] each coordinate of positions (camera, look_at, objects)
+constexpr double kMaxObjectSize = 1e7;  // [m] box half sizes and sphere radii
+constexpr double kMinUpLength = 1e-6;   // camera.up's length (its components within kMaxCoordinate)
+constexpr double kMinFovYDeg = 0.01;    // camera.fov_y_deg [deg]
+constexpr double kMaxFovYDeg = 179.0;
+constexpr double kMinNear = 1e-6;  // camera.near [m]
+constexpr double kMaxNear = 1e6;
+constexpr double kMaxFar = 1e9;      // camera.far [m]
+constexpr double kMinEv100 = -30.0;  // camera.ev100
+constexpr double kMaxEv100 = 30.0;
+constexpr double kMaxLight = 1e7;          // sun illuminance [lux], ambient and sky [cd/m²]: postfx's bound
+constexpr std::size_t kMaxObjects = 4096;  // entries of `objects`
+}  // namespace limits
+
+// The exposure of tonemapped output (PNG, the window) for camera.ev100: radiance is multiplied by
+// 1 / (1.2 · 2^ev100) (saturation-based, Lagarde & de Rousiers 2014).
+float exposureFromEv100(float ev100);
+
 struct Camera {
     glm::vec3 position{0.0f, 2.0f, 10.0f};  // [m]
     glm::vec3 lookAt{0.0f, 1.0f, 0.0f};     // [m], must differ from position
     glm::vec3 up{0.0f, 1.0f, 0.0f};         // not parallel to lookAt - position
-    float fovYDeg = 60.0f;                  // vertical field of view [deg], (0, 180)
-    float nearPlane = 0.1f;                 // [m], > 0
-    float farPlane = 1000.0f;               // [m], > near
-    float ev100 = 15.0f;                    // exposure for tonemapped output only [EV at ISO 100]
+    float fovYDeg = 60.0f;                  // vertical field of view [deg], [0.01, 179]
+    float nearPlane = 0.1f;                 // [m], [1e-6, 1e6]
+    float farPlane = 1000.0f;               // [m], (near, 1e9]
+    float ev100 = 15.0f;                    // exposure for tonemapped output only [EV at ISO 100], [-30, 30]
 };
 
 struct Sun {
