@@ -27,6 +27,10 @@ std::string got(const json& j) {
 
 namespace {
 
+// readDirection keeps a vector whose length is within this of 1 (a float normalised in double and
+// rounded is within about 1e-7).
+constexpr double kUnitLengthTolerance = 1e-6;
+
 // "a, b, c or d"
 std::string listOf(std::span<const char* const> names) {
     std::string out;
@@ -116,9 +120,13 @@ glm::vec3 readVec3(const json& j, const std::string& path, const Interval& inter
 
 glm::vec3 readDirection(const json& j, const std::string& path) {
     // Computed in double, so tiny vectors are fine too.
-    const glm::dvec3 v(readVec3(j, path));
+    const glm::vec3 f = readVec3(j, path);
+    const glm::dvec3 v(f);
     const double length = glm::length(v);
     if (!(length > 0.0)) fail(path, "expected a non-zero vector" + got(j));
+    // A vector already of unit length (as normalised and written by sceneToJson) is kept: normalising it
+    // again can move a component by one float step, and the file would not read back as the same scene.
+    if (std::fabs(length - 1.0) <= kUnitLengthTolerance) return f;
     return glm::vec3(v / length);
 }
 

@@ -51,7 +51,8 @@ glm::vec3 readVec3(const json& j, const std::string& path, Range range = Range::
 // The same in `interval`: "<path>: expected a number in <interval.text>, got <value>".
 float readNumber(const json& j, const std::string& path, const Interval& interval);
 glm::vec3 readVec3(const json& j, const std::string& path, const Interval& interval);
-// A non-zero vector, returned normalised.
+// A non-zero vector, returned normalised (as it is when its length is already within 1e-6 of 1, so
+// that a scene written by sceneToJson reads back exactly).
 glm::vec3 readDirection(const json& j, const std::string& path);
 bool readBool(const json& j, const std::string& path);
 // A whole number in [0, 4294967295], written as an integer or a decimal with no fraction (32, 32.0).

@@ -140,7 +140,7 @@ TEST(DemoSceneLimits, OracleCatchesWhatTheLimitsKeepOut) {
 }
 
 // Inputs the fuzzer found (tests/demo/fuzz/regressions/README.md): NAME.json with NAME.expected holding the
-// error line it must give, or "loads" when it must load and render.
+// error line it must give, or "loads" when it must load, render and round-trip through sceneToJson.
 TEST(DemoSceneLimits, FuzzRegressions) {
     const fs::path dir = kSourceDir + "/tests/demo/fuzz/regressions";
     int count = 0;
@@ -160,6 +160,10 @@ TEST(DemoSceneLimits, FuzzRegressions) {
             EXPECT_TRUE(ok) << error;
             if (ok) {
                 EXPECT_EQ(demo::fuzz::renderProblem(scene), "");
+                // And it reads back from what sceneToJson writes as the same scene.
+                demo::Scene again;
+                EXPECT_TRUE(demo::parseScene(demo::sceneToJson(scene).dump(), again, error)) << error;
+                EXPECT_EQ(demo::sceneToJson(again), demo::sceneToJson(scene));
             }
         } else {
             EXPECT_FALSE(ok);
