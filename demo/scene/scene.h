@@ -45,7 +45,7 @@ struct Camera {
 
 struct Sun {
     glm::vec3 direction{0.0f, 1.0f, 0.0f};  // unit vector toward the sun (normalised on load)
-    glm::vec3 illuminance{100000.0f};       // illuminance on a surface facing the sun [lux], >= 0
+    glm::vec3 illuminance{100000.0f};       // illuminance on a surface facing the sun [lux], [0, 1e7]
     bool shadows = true;                    // cast shadows through the shadow map
 };
 
@@ -55,23 +55,23 @@ struct Object {
     ObjectType type = ObjectType::Plane;
     glm::vec3 position{0.0f};            // plane: a point on it; box, sphere: centre [m]
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  // plane only, unit (normalised on load)
-    glm::vec3 halfSize{0.5f};            // box only [m], > 0
-    float radius = 0.5f;                 // sphere only [m], > 0
+    glm::vec3 halfSize{0.5f};            // box only [m], (0, 1e7]
+    float radius = 0.5f;                 // sphere only [m], (0, 1e7]
     glm::vec3 albedo{0.5f};              // diffuse reflectance, each in [0, 1]
 };
 
 struct Scene {
     Camera camera;
     Sun sun;
-    glm::vec3 ambient{0.0f};  // uniform incident radiance for the ambient term [cd/m²], >= 0
-    glm::vec3 sky{0.0f};      // radiance of pixels with no geometry [cd/m²], >= 0
+    glm::vec3 ambient{0.0f};  // uniform incident radiance for the ambient term [cd/m²], [0, 1e7]
+    glm::vec3 sky{0.0f};      // radiance of pixels with no geometry [cd/m²], [0, 1e7]
     std::vector<Object> objects;
     // effects.fog: postfx's ray-marched fog (docs/effects/fog.md); disabled unless the file has it.
     postfx::FogSettings fog;
 };
 
 // Parses a scene from JSON text. On failure returns false and sets `error` to one line naming the
-// key path, e.g. "objects[2].radius: expected a number > 0, got -1".
+// key path, e.g. "objects[2].radius: expected a number in (0, 1e7], got -1".
 bool parseScene(const std::string& jsonText, Scene& scene, std::string& error);
 bool loadSceneFile(const std::string& path, Scene& scene, std::string& error);
 
