@@ -84,6 +84,27 @@ inline void sizeOption(const std::string& text, uint32_t maxSide, uint32_t& widt
         throw UsageError{"--size '" + text + "': expected WIDTHxHEIGHT, each 1.." + std::to_string(maxSide)};
 }
 
+// The memory postfx-render needs per image pixel, host and device together (lavapipe's device memory is
+// host memory): measured peak RSS growth with the image size is about 55 bytes per pixel writing a PNG, 80
+// an EXR and 120 with --reference (G-buffer, HDR image, readback, postfx's fog images, the float copy and
+// the file's buffers); rounded up. docs/scene-format.md, "Limits".
+constexpr uint64_t kRendererBytesPerPixel = 128;
+// The most an image may need: 8192x8192 fits, 16384x16384 (32 GiB) does not.
+constexpr uint64_t kImageMemoryBudget = uint64_t(8) << 30;
+
+// `--size WxH` within kImageMemoryBudget; throws UsageError naming the size and the estimate otherwise,
+// before anything is allocated.
+inline void checkImageMemory(uint32_t width, uint32_t height) {
+    const uint64_t bytes = uint64_t(width) * height * kRendererBytesPerPixel;
+    if (bytes <= kImageMemoryBudget) return;
+    const auto gib = [](uint64_t b) { return std::to_string((b + (uint64_t(1) << 30) - 1) >> 30); };
+    throw UsageError{"--size " + std::to_string(width) + "x" + std::to_string(height) + ": needs about " +
+                     gib(bytes) + " GiB (" + std::to_string(kRendererBytesPerPixel) +
+                     " bytes per pixel), more than the budget of " + gib(kImageMemoryBudget) +
+                     " GiB (at most " + std::to_string(kImageMemoryBudget / kRendererBytesPerPixel) +
+                     " pixels, e.g. 8192x8192)"};
+}
+
 // `option LIST`: comma-separated integers in [lo, hi], at least one; throws UsageError
 // "OPTION 'LIST': expected integers in LO..HI, comma-separated" or "OPTION is empty".
 inline std::vector<uint32_t> uintListOption(const std::string& option, const std::string& text, uint32_t lo,

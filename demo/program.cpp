@@ -16,6 +16,7 @@ void parseArgs(int argc, char** argv, uint32_t maxFrames, CommonArgs& common, co
         if (own(a, next)) continue;
         if (a == "--size") {
             sizeOption(next(), kMaxSize, common.width, common.height);
+            checkImageMemory(common.width, common.height);
         } else if (a == "--frames") {
             uintOption(a, next(), 1, maxFrames, common.frames);
         } else if (a == "--validation") {

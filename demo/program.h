@@ -28,8 +28,9 @@ struct CommonArgs {
 using OwnOption = std::function<bool(const std::string& arg, const std::function<std::string()>& next)>;
 
 // Reads argv[1..]: each argument goes to `own` first, then is one of the common options (--size WxH with
-// sides up to 16384, --frames N up to maxFrames, --validation) or the scene file. Throws UsageError for an
-// unknown option ("unknown option '-x' (see --help)") or a second scene file.
+// sides up to 16384 and the image's memory within kImageMemoryBudget, --frames N up to maxFrames,
+// --validation) or the scene file. Throws UsageError for an unknown option ("unknown option '-x' (see
+// --help)"), a second scene file or a --size over the budget.
 void parseArgs(int argc, char** argv, uint32_t maxFrames, CommonArgs& common, const OwnOption& own);
 
 class Program {

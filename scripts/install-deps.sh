@@ -9,7 +9,8 @@ packages=(
     libglm-dev libglfw3-dev libopenimageio-dev openimageio-tools nlohmann-json3-dev libimgui-dev
 )
 if [[ "${1:-build}" == test ]]; then
-    packages+=(libgtest-dev clang-format xvfb xauth)
+    # clang, libclang-rt-14-dev: the scene loader's fuzz target (libFuzzer's runtime, tests/demo/fuzz).
+    packages+=(libgtest-dev clang-format xvfb xauth clang libclang-rt-14-dev)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -12,3 +12,4 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOSTFX_WERROR=ON -DPOSTF
 cmake --build build -j"$jobs"
 # Tests that need a Vulkan device run on Mesa's lavapipe unless POSTFX_DEVICE picks another.
 ctest --test-dir build --output-on-failure -j"$jobs" "$@"
+tests/demo/fuzz/run_fuzz.sh  # the scene loader under libFuzzer for 60 s (docs/scene-format.md, "Fuzzing")

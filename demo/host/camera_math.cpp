@@ -131,4 +131,11 @@ ShadowFit fitShadowMap(const Scene& scene, uint32_t mapSize) {
     return fit;
 }
 
+float shadowDepthBias(const ShadowFit& fit) {
+    // The shadow projection is orthographic, so depth per metre along the sun is |row 2 of viewProj|.
+    const glm::mat4& m = fit.viewProj;
+    const float depthPerMetre = glm::length(glm::vec3(m[0][2], m[1][2], m[2][2]));
+    return fit.texelWorldSize * depthPerMetre;
+}
+
 }  // namespace demo

@@ -33,4 +33,8 @@ struct ShadowFit {
 // the camera's side of the planes).
 ShadowFit fitShadowMap(const Scene& scene, uint32_t mapSize);
 
+// The depth bias the renderer gives postfx with the shadow map (ShadowMapInput::depthBias, shadow depth
+// units): one texel's depth change on a surface at 45 degrees to the sun.
+float shadowDepthBias(const ShadowFit& fit);
+
 }  // namespace demo

@@ -72,7 +72,7 @@ bool writeImage(const std::string& path, const ImageF& image, float ev100, std::
     }
     if (ext == ".png") {
         // Photometric exposure (Lagarde & de Rousiers 2014): saturation-based, max luminance 1.2·2^EV100.
-        const float exposure = 1.0f / (1.2f * std::exp2(ev100));
+        const float exposure = exposureFromEv100(ev100);
         std::vector<uint8_t> rgb(pixels * 3);
         for (size_t i = 0; i < pixels; ++i) {
             for (int c = 0; c < 3; ++c) {

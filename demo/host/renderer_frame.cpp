@@ -67,13 +67,10 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
         in.shadowMap.worldToClip = glm::dmat4(fit.viewProj);
         in.shadowMap.reversedZ = false;
         // The shadow pass already biases the stored depth by the rasteriser's slope-scaled bias;
-        // on top of that, one texel's depth change on a surface at 45 degrees to the sun (the
-        // shadow projection is orthographic, so depth per metre along the sun is |row 2 of
-        // viewProj|). It keeps the last samples of a ray ending on a lit surface lit without
+        // on top of that, one texel's depth change on a surface at 45 degrees to the sun
+        // (shadowDepthBias). It keeps the last samples of a ray ending on a lit surface lit without
         // visibly moving shadow edges in the volume (a texel is ~1-3 cm in the demo scenes).
-        const glm::mat4& m = fit.viewProj;
-        const float depthPerMetre = glm::length(glm::vec3(m[0][2], m[1][2], m[2][2]));
-        in.shadowMap.depthBias = fit.texelWorldSize * depthPerMetre;
+        in.shadowMap.depthBias = shadowDepthBias(fit);
     }
     in.fog = scene.fog;
     return in;

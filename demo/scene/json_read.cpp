@@ -27,6 +27,10 @@ std::string got(const json& j) {
 
 namespace {
 
+// readDirection keeps a vector whose length is within this of 1 (a float normalised in double and
+// rounded is within about 1e-7).
+constexpr double kUnitLengthTolerance = 1e-6;
+
 // "a, b, c or d"
 std::string listOf(std::span<const char* const> names) {
     std::string out;
@@ -96,11 +100,33 @@ glm::vec3 readVec3(const json& j, const std::string& path, Range range) {
     return v;
 }
 
+float readNumber(const json& j, const std::string& path, const Interval& interval) {
+    // Compared as floats, so that a bound written in the file (1e-6) is inside even where the float
+    // nearest to it is not (float(1e-6) < 1e-6).
+    const float f = readNumber(j, path);
+    const float lo = float(interval.lo), hi = float(interval.hi);
+    const bool aboveLo = interval.openLo ? f > lo : f >= lo;
+    if (!aboveLo || f > hi) fail(path, std::string("expected a number in ") + interval.text + got(j));
+    return f;
+}
+
+glm::vec3 readVec3(const json& j, const std::string& path, const Interval& interval) {
+    if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers" + got(j));
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i)
+        v[i] = readNumber(j[std::size_t(i)], element(path, std::size_t(i)), interval);
+    return v;
+}
+
 glm::vec3 readDirection(const json& j, const std::string& path) {
     // Computed in double, so tiny vectors are fine too.
-    const glm::dvec3 v(readVec3(j, path));
+    const glm::vec3 f = readVec3(j, path);
+    const glm::dvec3 v(f);
     const double length = glm::length(v);
     if (!(length > 0.0)) fail(path, "expected a non-zero vector" + got(j));
+    // A vector already of unit length (as normalised and written by sceneToJson) is kept: normalising it
+    // again can move a component by one float step, and the file would not read back as the same scene.
+    if (std::fabs(length - 1.0) <= kUnitLengthTolerance) return f;
     return glm::vec3(v / length);
 }
 

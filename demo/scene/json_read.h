@@ -36,10 +36,23 @@ const json& require(const json& obj, const std::string& path, const char* key);
 
 enum class Range { Any, Positive, NonNegative, Unit };
 
+// An interval of accepted values and its text for messages: {0, 1e7, "[0, 1e7]"}; openLo excludes lo
+// ({0, 1e6, "(0, 1e6]", true}).
+struct Interval {
+    double lo;
+    double hi;
+    const char* text;
+    bool openLo = false;
+};
+
 // A finite number that fits a float, checked against `range`.
 float readNumber(const json& j, const std::string& path, Range range = Range::Any);
 glm::vec3 readVec3(const json& j, const std::string& path, Range range = Range::Any);
-// A non-zero vector, returned normalised.
+// The same in `interval`: "<path>: expected a number in <interval.text>, got <value>".
+float readNumber(const json& j, const std::string& path, const Interval& interval);
+glm::vec3 readVec3(const json& j, const std::string& path, const Interval& interval);
+// A non-zero vector, returned normalised (as it is when its length is already within 1e-6 of 1, so
+// that a scene written by sceneToJson reads back exactly).
 glm::vec3 readDirection(const json& j, const std::string& path);
 bool readBool(const json& j, const std::string& path);
 // A whole number in [0, 4294967295], written as an integer or a decimal with no fraction (32, 32.0).

@@ -149,28 +149,32 @@ constexpr double kMinSinUpView = 1e-3;
 // look_at must be at least this far from position [m].
 constexpr double kMinLookDistance = 1e-3;
 
+// Intervals of the numeric keys (limits in scene.h; docs/scene-format.md lists them with each key).
+constexpr Interval kCoordinate{-limits::kMaxCoordinate, limits::kMaxCoordinate, "[-1e7, 1e7]"};
+constexpr Interval kObjectSize{0.0, limits::kMaxObjectSize, "(0, 1e7]", true};
+constexpr Interval kFovYDeg{limits::kMinFovYDeg, limits::kMaxFovYDeg, "[0.01, 179]"};
+constexpr Interval kNear{limits::kMinNear, limits::kMaxNear, "[1e-6, 1e6]"};
+constexpr Interval kEv100{limits::kMinEv100, limits::kMaxEv100, "[-30, 30]"};
+constexpr Interval kLight{0.0, limits::kMaxLight, "[0, 1e7]"};
+
 Camera readCamera(const json& j, const std::string& path) {
     expectObject(j, path);
     checkKeys(j, path, kCameraKeys);
     Camera c;
-    c.position = readVec3(require(j, path, "position"), child(path, "position"));
-    c.lookAt = readVec3(require(j, path, "look_at"), child(path, "look_at"));
+    c.position = readVec3(require(j, path, "position"), child(path, "position"), kCoordinate);
+    c.lookAt = readVec3(require(j, path, "look_at"), child(path, "look_at"), kCoordinate);
     const json* up = find(j, "up");
-    if (up) c.up = readVec3(*up, child(path, "up"));
+    if (up) c.up = readVec3(*up, child(path, "up"), kCoordinate);
 
-    const std::string fovPath = child(path, "fov_y_deg");
-    const json& fov = require(j, path, "fov_y_deg");
-    c.fovYDeg = readNumber(fov, fovPath);
-    if (!(c.fovYDeg > 0.0f && c.fovYDeg < 180.0f)) fail(fovPath, "expected a number in (0, 180)" + got(fov));
-
-    c.nearPlane = readNumber(require(j, path, "near"), child(path, "near"), Range::Positive);
+    c.fovYDeg = readNumber(require(j, path, "fov_y_deg"), child(path, "fov_y_deg"), kFovYDeg);
+    c.nearPlane = readNumber(require(j, path, "near"), child(path, "near"), kNear);
     const json& far = require(j, path, "far");
     c.farPlane = readNumber(far, child(path, "far"));
-    if (!(c.farPlane > c.nearPlane)) {
-        fail(child(path, "far"),
-             "expected a number > near (" + json_text::formatFloat(c.nearPlane) + ")" + got(far));
+    if (!(c.farPlane > c.nearPlane && c.farPlane <= limits::kMaxFar)) {
+        fail(child(path, "far"), "expected a number in (near, 1e9], near being " +
+                                     json_text::formatFloat(c.nearPlane) + got(far));
     }
-    if (const json* ev = find(j, "ev100")) c.ev100 = readNumber(*ev, child(path, "ev100"));
+    if (const json* ev = find(j, "ev100")) c.ev100 = readNumber(*ev, child(path, "ev100"), kEv100);
 
     const glm::dvec3 view = glm::dvec3(c.lookAt) - glm::dvec3(c.position);
     const double distance = glm::length(view);
@@ -178,9 +182,11 @@ Camera readCamera(const json& j, const std::string& path) {
         fail(child(path, "look_at"), "must be at least 1 mm away from " + child(path, "position") +
                                          " (distance " + json_text::formatFloat(float(distance)) + " m)");
     }
+    // The renderer builds the view basis in float (glm::lookAtRH): a shorter up would underflow there.
     const glm::dvec3 upd(c.up);
     const double upLength = glm::length(upd);
-    if (!(upLength > 0.0)) fail(child(path, "up"), "expected a non-zero vector" + (up ? got(*up) : ""));
+    if (!(upLength >= double(float(limits::kMinUpLength))))  // as written in a file: 1e-6
+        fail(child(path, "up"), "expected a vector of length >= 1e-6" + (up ? got(*up) : ""));
     if (!(glm::length(glm::cross(view / distance, upd / upLength)) >= kMinSinUpView)) {
         fail(child(path, "up"),
              std::string("must not be parallel to the view direction (look_at - position)") +
@@ -194,7 +200,7 @@ Sun readSun(const json& j, const std::string& path) {
     checkKeys(j, path, kSunKeys);
     Sun s;
     s.direction = readDirection(require(j, path, "direction"), child(path, "direction"));
-    s.illuminance = readVec3(require(j, path, "illuminance"), child(path, "illuminance"), Range::NonNegative);
+    s.illuminance = readVec3(require(j, path, "illuminance"), child(path, "illuminance"), kLight);
     s.shadows = readBool(require(j, path, "shadows"), child(path, "shadows"));
     return s;
 }
@@ -213,20 +219,20 @@ Object readObject(const json& j, const std::string& path) {
     if (name == "plane") {
         checkKeys(j, path, kPlaneKeys, " for a plane");
         o.type = ObjectType::Plane;
-        o.position = readVec3(require(j, path, "point"), child(path, "point"));
+        o.position = readVec3(require(j, path, "point"), child(path, "point"), kCoordinate);
         o.normal = readDirection(require(j, path, "normal"), child(path, "normal"));
         o.albedo = albedo();
     } else if (name == "box") {
         checkKeys(j, path, kBoxKeys, " for a box");
         o.type = ObjectType::Box;
-        o.position = readVec3(require(j, path, "center"), child(path, "center"));
-        o.halfSize = readVec3(require(j, path, "half_size"), child(path, "half_size"), Range::Positive);
+        o.position = readVec3(require(j, path, "center"), child(path, "center"), kCoordinate);
+        o.halfSize = readVec3(require(j, path, "half_size"), child(path, "half_size"), kObjectSize);
         o.albedo = albedo();
     } else if (name == "sphere") {
         checkKeys(j, path, kSphereKeys, " for a sphere");
         o.type = ObjectType::Sphere;
-        o.position = readVec3(require(j, path, "center"), child(path, "center"));
-        o.radius = readNumber(require(j, path, "radius"), child(path, "radius"), Range::Positive);
+        o.position = readVec3(require(j, path, "center"), child(path, "center"), kCoordinate);
+        o.radius = readNumber(require(j, path, "radius"), child(path, "radius"), kObjectSize);
         o.albedo = albedo();
     } else {
         fail(typePath, "unknown object type " + json_text::quote(name) + " (expected plane, box or sphere)");
@@ -240,11 +246,15 @@ Scene readScene(const json& root) {
     Scene scene;
     scene.camera = readCamera(require(root, "", "camera"), "camera");
     scene.sun = readSun(require(root, "", "sun"), "sun");
-    if (const json* a = find(root, "ambient")) scene.ambient = readVec3(*a, "ambient", Range::NonNegative);
-    if (const json* s = find(root, "sky")) scene.sky = readVec3(*s, "sky", Range::NonNegative);
+    if (const json* a = find(root, "ambient")) scene.ambient = readVec3(*a, "ambient", kLight);
+    if (const json* s = find(root, "sky")) scene.sky = readVec3(*s, "sky", kLight);
 
     const json& objects = require(root, "", "objects");
     if (!objects.is_array()) fail("objects", "expected an array of objects" + got(objects));
+    if (objects.size() > limits::kMaxObjects) {
+        fail("objects", std::to_string(objects.size()) + " objects are more than the limit of " +
+                            std::to_string(limits::kMaxObjects));
+    }
     scene.objects.reserve(objects.size());
     for (std::size_t i = 0; i < objects.size(); ++i)
         scene.objects.push_back(readObject(objects[i], element("objects", i)));
@@ -254,6 +264,10 @@ Scene readScene(const json& root) {
 }
 
 }  // namespace
+
+float exposureFromEv100(float ev100) {
+    return 1.0f / (1.2f * std::exp2(ev100));
+}
 
 bool parseScene(const std::string& jsonText, Scene& scene, std::string& error) {
     std::string message;

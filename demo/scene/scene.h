@@ -11,19 +11,41 @@
 
 namespace demo {
 
+// Limits of scene files (docs/scene-format.md, "Limits"). Within them every derived quantity the renderer
+// computes is finite (camera matrices and their inverse, the shadow map fit, the PNG exposure) and postfx
+// accepts the frame, so a file that loads renders; tests/demo/fuzz checks it.
+namespace limits {
+constexpr double kMaxCoordinate = 1e7;  // [m] each coordinate of positions (camera, look_at, objects)
+constexpr double kMaxObjectSize = 1e7;  // [m] box half sizes and sphere radii
+constexpr double kMinUpLength = 1e-6;   // camera.up's length (its components within kMaxCoordinate)
+constexpr double kMinFovYDeg = 0.01;    // camera.fov_y_deg [deg]
+constexpr double kMaxFovYDeg = 179.0;
+constexpr double kMinNear = 1e-6;  // camera.near [m]
+constexpr double kMaxNear = 1e6;
+constexpr double kMaxFar = 1e9;      // camera.far [m]
+constexpr double kMinEv100 = -30.0;  // camera.ev100
+constexpr double kMaxEv100 = 30.0;
+constexpr double kMaxLight = 1e7;          // sun illuminance [lux], ambient and sky [cd/m²]: postfx's bound
+constexpr std::size_t kMaxObjects = 4096;  // entries of `objects`
+}  // namespace limits
+
+// The exposure of tonemapped output (PNG, the window) for camera.ev100: radiance is multiplied by
+// 1 / (1.2 · 2^ev100) (saturation-based, Lagarde & de Rousiers 2014).
+float exposureFromEv100(float ev100);
+
 struct Camera {
     glm::vec3 position{0.0f, 2.0f, 10.0f};  // [m]
     glm::vec3 lookAt{0.0f, 1.0f, 0.0f};     // [m], must differ from position
     glm::vec3 up{0.0f, 1.0f, 0.0f};         // not parallel to lookAt - position
-    float fovYDeg = 60.0f;                  // vertical field of view [deg], (0, 180)
-    float nearPlane = 0.1f;                 // [m], > 0
-    float farPlane = 1000.0f;               // [m], > near
-    float ev100 = 15.0f;                    // exposure for tonemapped output only [EV at ISO 100]
+    float fovYDeg = 60.0f;                  // vertical field of view [deg], [0.01, 179]
+    float nearPlane = 0.1f;                 // [m], [1e-6, 1e6]
+    float farPlane = 1000.0f;               // [m], (near, 1e9]
+    float ev100 = 15.0f;                    // exposure for tonemapped output only [EV at ISO 100], [-30, 30]
 };
 
 struct Sun {
     glm::vec3 direction{0.0f, 1.0f, 0.0f};  // unit vector toward the sun (normalised on load)
-    glm::vec3 illuminance{100000.0f};       // illuminance on a surface facing the sun [lux], >= 0
+    glm::vec3 illuminance{100000.0f};       // illuminance on a surface facing the sun [lux], [0, 1e7]
     bool shadows = true;                    // cast shadows through the shadow map
 };
 
@@ -33,23 +55,23 @@ struct Object {
     ObjectType type = ObjectType::Plane;
     glm::vec3 position{0.0f};            // plane: a point on it; box, sphere: centre [m]
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  // plane only, unit (normalised on load)
-    glm::vec3 halfSize{0.5f};            // box only [m], > 0
-    float radius = 0.5f;                 // sphere only [m], > 0
+    glm::vec3 halfSize{0.5f};            // box only [m], (0, 1e7]
+    float radius = 0.5f;                 // sphere only [m], (0, 1e7]
     glm::vec3 albedo{0.5f};              // diffuse reflectance, each in [0, 1]
 };
 
 struct Scene {
     Camera camera;
     Sun sun;
-    glm::vec3 ambient{0.0f};  // uniform incident radiance for the ambient term [cd/m²], >= 0
-    glm::vec3 sky{0.0f};      // radiance of pixels with no geometry [cd/m²], >= 0
+    glm::vec3 ambient{0.0f};  // uniform incident radiance for the ambient term [cd/m²], [0, 1e7]
+    glm::vec3 sky{0.0f};      // radiance of pixels with no geometry [cd/m²], [0, 1e7]
     std::vector<Object> objects;
     // effects.fog: postfx's ray-marched fog (docs/effects/fog.md); disabled unless the file has it.
     postfx::FogSettings fog;
 };
 
 // Parses a scene from JSON text. On failure returns false and sets `error` to one line naming the
-// key path, e.g. "objects[2].radius: expected a number > 0, got -1".
+// key path, e.g. "objects[2].radius: expected a number in (0, 1e7], got -1".
 bool parseScene(const std::string& jsonText, Scene& scene, std::string& error);
 bool loadSceneFile(const std::string& path, Scene& scene, std::string& error);
 

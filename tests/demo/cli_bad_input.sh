@@ -56,5 +56,19 @@ check missing-scene "nope.json" "$dir/nope.json" -o "$dir/x.png" --size 8x8
 printf '{ "camera": ' >"$dir/broken.json"
 check malformed-json "broken.json" "$dir/broken.json" -o "$dir/x.png" --size 8x8
 check zero-size "--size" "$scenes/fog_default.json" -o "$dir/x.png" --size 0x8
+# Scene values past the loader's limits (docs/scene-format.md, "Limits"): one line naming the key, not
+# a record-time failure of postfx.
+check illuminance-above-postfx-bound "sun.illuminance\[0\]: expected a number in \[0, 1e7\]" \
+    "$(bad_scene sun 's/"illuminance": *\[[^]]*\]/"illuminance": [2e7, 2e7, 2e7]/')" -o "$dir/x.png" --size 8x8
+check ev100-overflows-exposure "camera.ev100: expected a number in \[-30, 30\]" \
+    "$(bad_scene ev 's/"ev100": *[0-9.e-]*/"ev100": -3e38/')" -o "$dir/x.png" --size 8x8
+# An image over the memory budget is refused before anything is allocated: at once.
+start=$(date +%s)
+check size-over-memory-budget "--size 16384x16384: needs about 32 GiB" "$scenes/fog_default.json" -o "$dir/x.png" \
+    --size 16384x16384
+if [ $(($(date +%s) - start)) -gt 10 ]; then
+    echo "FAIL size-over-memory-budget: took more than 10 s"
+    failures=$((failures + 1))
+fi
 
 [ "$failures" -eq 0 ] || { echo "$failures failure(s)"; exit 1; }

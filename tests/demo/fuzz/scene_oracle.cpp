@@ -1,0 +1,127 @@
+#include "scene_oracle.h"
+
+#include "core/checks.h"
+#include "host/camera_math.h"
+#include "host/scene_mesh.h"
+
+#include <glm/ext/matrix_transform.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace demo::fuzz {
+namespace {
+
+bool finite(const glm::mat4& m) {
+    return postfx::core::allFinite(m);
+}
+
+// Stand-in handles: postfx's host-side checks compare them with VK_NULL_HANDLE and never use them.
+template <class Handle>
+Handle fakeHandle(uintptr_t value) {
+    return reinterpret_cast<Handle>(value);
+}
+
+postfx::ImageInput image(uintptr_t id, VkFormat format, VkExtent2D extent, VkImageLayout layout,
+                         VkImageUsageFlags usage) {
+    return {fakeHandle<VkImage>(id), fakeHandle<VkImageView>(id + 1), format, extent, layout, usage};
+}
+
+std::string meshProblem(const Scene& scene, bool infiniteFar) {
+    const SceneMesh mesh = buildSceneMesh(scene, infiniteFar);
+    if (mesh.vertices.size() > std::numeric_limits<uint32_t>::max() ||
+        mesh.indices.size() > std::numeric_limits<uint32_t>::max())
+        return "mesh: more than 2^32 vertices or indices";
+    for (const auto& v : mesh.vertices)
+        if (!postfx::core::allFinite(v.position) || !postfx::core::allFinite(v.normal))
+            return "mesh: a vertex is not finite";
+    return "";
+}
+
+std::string frameProblem(const Scene& scene, VkExtent2D extent, bool reversedZ, bool infiniteFar,
+                         const ShadowFit& fit) {
+    const Camera& cam = scene.camera;
+    const float aspect = float(extent.width) / float(extent.height);
+    const glm::mat4 proj = perspectiveProjection(glm::radians(cam.fovYDeg), aspect, cam.nearPlane,
+                                                 cam.farPlane, reversedZ, infiniteFar);
+    const glm::mat4 view = cameraView(cam);
+    // The G-buffer's uniforms (renderer_frame.cpp, makeFrameUniforms): camera-relative, inverted in float.
+    glm::mat4 viewRel = view;
+    viewRel[3] = glm::vec4(0, 0, 0, 1);
+    const glm::mat4 viewProj = proj * viewRel;
+    if (!finite(proj) || !finite(view) || !finite(viewProj) || !finite(glm::inverse(viewProj)))
+        return "camera: a matrix or the inverse of viewProj is not finite";
+
+    postfx::FrameInfo frame;
+    frame.color = image(0x10, VK_FORMAT_R16G16B16A16_SFLOAT, extent, VK_IMAGE_LAYOUT_GENERAL,
+                        VK_IMAGE_USAGE_STORAGE_BIT);
+    frame.depth = image(0x20, VK_FORMAT_D32_SFLOAT, extent, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                        VK_IMAGE_USAGE_SAMPLED_BIT);
+    frame.camera.position = glm::dvec3(cam.position);
+    frame.camera.view = view;
+    frame.camera.projection = proj;
+    frame.sun.toSun = scene.sun.direction;
+    frame.sun.illuminance = scene.sun.illuminance;
+    frame.ambient = scene.ambient;
+    if (fit.valid && scene.sun.shadows) {
+        frame.shadowMap.image =
+            image(0x30, VK_FORMAT_D32_SFLOAT, {2048, 2048}, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                  VK_IMAGE_USAGE_SAMPLED_BIT);
+        frame.shadowMap.worldToClip = glm::dmat4(fit.viewProj);
+        frame.shadowMap.depthBias = shadowDepthBias(fit);
+    }
+    frame.fog = scene.fog;
+    postfx::ContextCreateInfo info;
+    info.maxExtent = {16384, 16384};
+    if (postfx::Status s = postfx::core::checkSharedInputs(frame, info); !s)
+        return "postfx rejects the frame: " + s.message;
+    return "";
+}
+
+}  // namespace
+
+std::string renderProblem(const Scene& scene) {
+    // PNG: radiance (at most the largest half float, the HDR image's format) times the exposure goes
+    // through the ACES curve, which squares it.
+    const float exposure = exposureFromEv100(scene.camera.ev100);
+    const float brightest = 65504.0f * exposure;
+    if (!(exposure > 0.0f) || !std::isfinite(brightest * brightest * 2.51f))
+        return "exposure: " + std::to_string(exposure) + " overflows the tonemap";
+
+    for (bool infiniteFar : {false, true})
+        if (std::string p = meshProblem(scene, infiniteFar); !p.empty()) return p;
+
+    for (uint32_t mapSize : {1u, 2048u, 16384u}) {
+        const ShadowFit fit = fitShadowMap(scene, mapSize);
+        if (!fit.valid) continue;
+        if (!finite(fit.viewProj)) return "shadow fit: viewProj is not finite";
+        const float bias = shadowDepthBias(fit);
+        if (!(fit.texelWorldSize >= 0.0f) || !std::isfinite(fit.texelWorldSize) || !(bias >= 0.0f) ||
+            !std::isfinite(bias))
+            return "shadow fit: texel size or depth bias not finite";
+    }
+
+    const ShadowFit fit = fitShadowMap(scene, 2048);
+    for (VkExtent2D extent : {VkExtent2D{64, 64}, VkExtent2D{1, 16384}, VkExtent2D{16384, 1}})
+        for (bool reversedZ : {true, false})
+            for (bool infiniteFar : {false, true})
+                if (std::string p = frameProblem(scene, extent, reversedZ, infiniteFar, fit); !p.empty())
+                    return p;
+
+    // The fog as postfx checks it at record time (FogEffect::validate, the same check as
+    // validateFogSettings): after the preset replaced its knobs; Auto may pick any preset.
+    if (scene.fog.enabled) {
+        for (postfx::FogQuality q :
+             {postfx::FogQuality::Custom, postfx::FogQuality::Low, postfx::FogQuality::Medium,
+              postfx::FogQuality::High, postfx::FogQuality::Ultra}) {
+            const postfx::FogSettings s =
+                q == postfx::FogQuality::Custom ? scene.fog : postfx::applyFogQuality(scene.fog, q);
+            if (postfx::Status st = postfx::validateFogSettings(s); !st)
+                return "postfx rejects the fog: " + st.message;
+        }
+    }
+    return "";
+}
+
+}  // namespace demo::fuzz
