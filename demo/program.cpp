@@ -74,10 +74,13 @@ std::unique_ptr<VulkanHost> Program::createHost(bool validation) const {
     return host;
 }
 
-int Program::validationStatus(const VulkanHost& host, int status) const {
-    if (size_t n = host.validationMessageCount(); n > 0)
-        return fail(std::to_string(n) + " Vulkan validation message(s), printed above");
-    return status;
+int Program::validationStatus(VulkanHost& host, int status) const {
+    const size_t before = host.validationMessageCount();
+    host.destroy();
+    const size_t n = host.validationMessageCount();
+    if (n == 0) return status;
+    return fail(std::to_string(n) + " Vulkan validation message(s), printed above (" +
+                std::to_string(n - before) + " while destroying the device and instance)");
 }
 
 }  // namespace demo::cli

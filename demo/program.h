@@ -55,8 +55,10 @@ public:
     // The Vulkan host (the validation layer on when asked); nullptr after printing "Vulkan: <error>".
     std::unique_ptr<VulkanHost> createHost(bool validation) const;
 
-    // status, or 1 after printing how many messages the validation layer printed (above).
-    int validationStatus(const VulkanHost& host, int status = 0) const;
+    // Destroys the host's device and instance (VulkanHost::destroy: the validation layer reports objects
+    // left on the device there), then returns status, or 1 after printing how many messages the
+    // validation layer printed (above), those at destruction included.
+    int validationStatus(VulkanHost& host, int status = 0) const;
 
 private:
     const char* name_;

@@ -38,7 +38,8 @@ const char* kUsage =
     "  --standard-z       standard depth (near 0, far 1) instead of reversed Z\n"
     "  --infinite-far     projection without a far plane\n"
     "  --validation       Vulkan validation layer with synchronization validation (also\n"
-    "                     POSTFX_VALIDATION=1); any validation message fails the run\n"
+    "                     POSTFX_VALIDATION=1); any validation message fails the run, one\n"
+    "                     at the device's destruction (an object left alive) included\n"
     "  --reference        the fog from postfx's CPU reference (double precision, no jitter, all\n"
     "                     CPU threads) instead of the GPU pass, over the same GPU frame (the last)\n"
     "  --reference-steps N  march steps per pixel of --reference (default 4096), 1..1048576\n"
@@ -166,15 +167,16 @@ int run(const Args& args) {
         }
         if (!demo::writeImage(args.output, image, scene.camera.ev100, error)) return fail(error);
     }
+    const std::string device = host->deviceDescription();
     if (int status = kProgram.validationStatus(*host)) return status;
     if (args.reference) {
         std::printf("postfx-render: wrote %s (%ux%u, frame %u with the fog reference) on %s\n",
                     args.output.c_str(), args.render.width, args.render.height, args.render.frames - 1,
-                    host->deviceDescription().c_str());
+                    device.c_str());
     } else {
         std::printf("postfx-render: wrote %s (%ux%u, %u frame%s) on %s\n", args.output.c_str(),
                     args.render.width, args.render.height, args.render.frames,
-                    args.render.frames == 1 ? "" : "s", host->deviceDescription().c_str());
+                    args.render.frames == 1 ? "" : "s", device.c_str());
     }
     return 0;
 }

@@ -2,6 +2,8 @@
 # Installs the Debian 12 packages postfx needs that are not installed yet (apt-get; sudo when not root).
 # Usage: scripts/install-deps.sh [build|test]   (test adds what the test suite alone needs)
 # openimageio-tools: OpenImageIO's CMake config refuses to load without /usr/bin/iconvert.
+# libasan8 libubsan1: the run-time libraries of g++'s -fsanitize=address,undefined (the sanitizer build,
+# scripts/run-sanitizer-tests.sh); gcc-12 depends on them already, named here so that the need is visible.
 set -euo pipefail
 packages=(
     cmake g++ make pkg-config
@@ -9,8 +11,9 @@ packages=(
     libglm-dev libglfw3-dev libopenimageio-dev openimageio-tools nlohmann-json3-dev libimgui-dev
 )
 if [[ "${1:-build}" == test ]]; then
-    # clang, libclang-rt-14-dev: the scene loader's fuzz target (libFuzzer's runtime, tests/demo/fuzz).
-    packages+=(libgtest-dev clang-format xvfb xauth clang libclang-rt-14-dev)
+    # clang, libclang-rt-14-dev: the scene loader's fuzz target (libFuzzer's runtime, tests/demo/fuzz);
+    # libasan8, libubsan1: gcc's sanitizer runtimes for the sanitizer build (scripts/run-sanitizer-tests.sh).
+    packages+=(libgtest-dev clang-format xvfb xauth clang libclang-rt-14-dev libasan8 libubsan1)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Builds postfx with warnings as errors and runs every test (host-only and GPU tests on lavapipe, under
 # the Khronos validation layer). Installs missing Debian packages first. Build folder: build/.
+# Then the same tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in build-asan/
+# (scripts/run-sanitizer-tests.sh); POSTFX_SKIP_SANITIZERS=1 skips that part for a quick local run
+# (.ci/run never skips it). Arguments go to both ctest runs (e.g. -R Fog).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh test
@@ -13,3 +16,10 @@ cmake --build build -j"$jobs"
 # Tests that need a Vulkan device run on Mesa's lavapipe unless POSTFX_DEVICE picks another.
 ctest --test-dir build --output-on-failure -j"$jobs" "$@"
 tests/demo/fuzz/run_fuzz.sh  # the scene loader under libFuzzer for 60 s (docs/scene-format.md, "Fuzzing")
+if [[ "${POSTFX_SKIP_SANITIZERS:-}" == 1 ]]; then
+    echo "run-tests: POSTFX_SKIP_SANITIZERS=1, the sanitizer build is skipped"
+    exit 0
+fi
+start=$SECONDS
+scripts/run-sanitizer-tests.sh "$@"
+echo "run-tests: the sanitizer build and its tests took $((SECONDS - start)) s"

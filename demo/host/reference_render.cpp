@@ -35,7 +35,10 @@ void recordDepthCopy(VkCommandBuffer cmd, const GpuImage& depth, const GpuBuffer
 
 std::vector<float> floatsAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t count) {
     std::vector<float> out(count);
-    std::memcpy(out.data(), static_cast<const char*>(buffer.mapped) + offset, count * sizeof(float));
+    // An empty vector's data() may be null, and memcpy's pointers must not be even for 0 bytes (a scene
+    // without shadows reads no shadow texels).
+    if (count > 0)
+        std::memcpy(out.data(), static_cast<const char*>(buffer.mapped) + offset, count * sizeof(float));
     return out;
 }
 

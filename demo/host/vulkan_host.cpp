@@ -262,9 +262,14 @@ std::unique_ptr<VulkanHost> VulkanHost::create(const HostOptions& options, std::
 }
 
 VulkanHost::~VulkanHost() {
+    destroy();
+}
+
+void VulkanHost::destroy() {
     if (device) {
         vkDeviceWaitIdle(device);
         if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
+        // The validation layer reports objects left on the device here, through messenger_.
         vkDestroyDevice(device, nullptr);
     }
     if (messenger_) {
@@ -272,7 +277,14 @@ VulkanHost::~VulkanHost() {
             vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
         if (destroyMessenger) destroyMessenger(instance, messenger_, nullptr);
     }
+    // Messages of vkDestroyInstance reach this host through the messenger chained to vkCreateInstance.
     if (instance) vkDestroyInstance(instance, nullptr);
+    commandPool = VK_NULL_HANDLE;
+    queue = VK_NULL_HANDLE;
+    device = VK_NULL_HANDLE;
+    messenger_ = VK_NULL_HANDLE;
+    physicalDevice = VK_NULL_HANDLE;
+    instance = VK_NULL_HANDLE;
 }
 
 std::vector<std::string> VulkanHost::validationMessages() const {
@@ -297,6 +309,7 @@ void VulkanHost::addMessage(std::string message) {
 
 std::string VulkanHost::deviceDescription() const {
     std::string name = properties.deviceName;
+    if (physicalDevice == VK_NULL_HANDLE) return name;  // after destroy()
     if (properties.apiVersion < VK_API_VERSION_1_2 &&
         !hasDeviceExtension(physicalDevice, "VK_KHR_driver_properties"))
         return name;

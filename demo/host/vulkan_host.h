@@ -30,7 +30,13 @@ const char* vkResultName(VkResult result);
 class VulkanHost {
 public:
     static std::unique_ptr<VulkanHost> create(const HostOptions& options, std::string& error);
-    ~VulkanHost();
+    ~VulkanHost();  // destroy()
+
+    // Waits for the device, then destroys the command pool, the device, the messenger and the instance
+    // (idempotent; the handles become VK_NULL_HANDLE and the host cannot be used for Vulkan work again).
+    // The messages the validation layer reports meanwhile (objects still alive on the device when it is
+    // destroyed) are counted like the others: call this, then validationMessages(), to see every message.
+    void destroy();
 
     VkInstance instance = VK_NULL_HANDLE;
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
@@ -43,13 +49,14 @@ public:
     bool validationEnabled = false;
     bool debugUtilsEnabled = false;  // VK_EXT_debug_utils is enabled on the instance (labels work)
 
-    // Validation messages (warnings and errors) reported since creation.
+    // Validation messages (warnings and errors) reported since creation, those of destroy() included.
     std::vector<std::string> validationMessages() const;
     size_t validationMessageCount() const;
     // Returns the messages reported so far and forgets them (tests that provoke a message on purpose).
     std::vector<std::string> takeValidationMessages();
 
-    std::string deviceDescription() const;  // "llvmpipe (LLVM 15.0.6, 256 bits), Mesa 22.3.6"
+    // "llvmpipe (LLVM 15.0.6, 256 bits), Mesa 22.3.6"; the device's name alone after destroy().
+    std::string deviceDescription() const;
 
     // One-shot command buffer helper: records with `fn`, submits, waits.
     bool submitAndWait(const std::function<void(VkCommandBuffer)>& record, std::string& error);

@@ -393,7 +393,7 @@ void App::hold() {
 }
 
 void App::destroy() {
-    if (host_) {
+    if (host_ && host_->device) {  // not after the host's own destroy() below
         vkDeviceWaitIdle(host_->device);
         ui_.reset();
         tonemap_.destroy();
@@ -410,6 +410,7 @@ void App::destroy() {
         swapchain_.destroy();
         if (surface_) vkDestroySurfaceKHR(host_->instance, surface_, nullptr);
         surface_ = VK_NULL_HANDLE;
+        host_->destroy();  // so that runWindow counts the messages at destruction (objects left alive)
     }
     if (window_) glfwDestroyWindow(window_);
     window_ = nullptr;

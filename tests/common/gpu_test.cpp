@@ -14,8 +14,22 @@ void GpuTest::SetUp() {
 
 void GpuTest::TearDown() {
     if (!host) return;
-    const auto messages = host->validationMessages();
+    // Taken, so that the destructor reports only the messages of the destruction.
+    const auto messages = host->takeValidationMessages();
     EXPECT_EQ(messages.size(), 0u) << "validation messages; first: " << (messages.empty() ? "" : messages[0]);
+}
+
+GpuTest::~GpuTest() {
+    destroyHostExpectingNoMessages(host);
+}
+
+void destroyHostExpectingNoMessages(std::unique_ptr<demo::VulkanHost>& host) {
+    if (!host) return;
+    host->destroy();
+    const auto messages = host->takeValidationMessages();
+    EXPECT_EQ(messages.size(), 0u) << "validation messages while destroying the device and instance; first: "
+                                   << (messages.empty() ? "" : messages[0]);
+    host.reset();
 }
 
 postfx::ContextCreateInfo GpuTest::hostHandles(postfx::ContextCreateInfo info) const {

@@ -1,5 +1,7 @@
 // Fixture for GPU tests: a demo VulkanHost (the test's "host renderer") under the Khronos validation
-// layer with synchronization validation. Every test fails if the layer reported any message.
+// layer with synchronization validation. Every test fails if the layer reported any message, while the
+// test ran (TearDown) or while the host's device and instance were destroyed (the fixture's destructor,
+// after the derived fixture's members: objects a test or postfx left on the device are reported there).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -13,6 +15,7 @@ namespace test {
 
 class GpuTest : public ::testing::Test {
 protected:
+    ~GpuTest() override;
     void SetUp() override;
     void TearDown() override;
 
@@ -22,5 +25,10 @@ protected:
 
     std::unique_ptr<demo::VulkanHost> host;
 };
+
+// Destroys host (VulkanHost::destroy) and adds a test failure naming the first message if the validation
+// layer reported any since the last takeValidationMessages(), e.g. a VkSampler left on the device. Then
+// resets host. GpuTest's destructor calls it.
+void destroyHostExpectingNoMessages(std::unique_ptr<demo::VulkanHost>& host);
 
 }  // namespace test

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The sanitizer part of the tests (scripts/run-tests.sh runs it after the main build): postfx, the demo
+# host and the tests built with AddressSanitizer (LeakSanitizer included) and UndefinedBehaviorSanitizer
+# in build-asan/, then the host-only tests and the GPU tests on lavapipe under the validation layer.
+# Any report ends the process that raised it with a non-zero status, so it fails its test (and CI).
+# Driver-internal leaks are suppressed by tests/sanitizers/lsan.supp (its comment says which and why).
+# Usage: scripts/run-sanitizer-tests.sh [ctest arguments, e.g. -R Core]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+# -O1: a sanitized -O0 build makes the CPU fog references several times slower; -O1 keeps the stack
+# traces exact. No benchmark (it tests postfx-bench's report, not memory; its GPU code is postfx's).
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+    -DPOSTFX_SANITIZE=address,undefined -DPOSTFX_WERROR=ON -DPOSTFX_BUILD_DEMO=ON -DPOSTFX_BUILD_BENCH=OFF \
+    -DPOSTFX_BUILD_TESTS=ON -DPOSTFX_BUILD_EXAMPLES=ON >/dev/null
+cmake --build build-asan -j"$jobs"
+# halt_on_error: the first report ends the process (the build adds -fno-sanitize-recover=all, which
+# UBSan also needs at run time); detect_leaks: LeakSanitizer at exit, with the drivers' leaks suppressed.
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:abort_on_error=0:exitcode=23"
+export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+ctest --test-dir build-asan --output-on-failure -j"$jobs" "$@"
