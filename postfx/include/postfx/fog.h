@@ -50,14 +50,10 @@ enum class FogQuality {
     Auto,
 };
 
-struct FogSettings {
-    bool enabled = false;
-    // Custom uses steps/jitter/shadowKernel/resolutionScale below; a preset replaces those four. A value
-    // that is not a FogQuality (cast from an int) is rejected.
-    FogQuality quality = FogQuality::Custom;
-    // Auto only: GPU time budget for the fog's passes (excluding noise generation) [ms]; > 0 and finite
-    // (checked whatever the quality).
-    float autoBudgetMs = 0.5f;
+// The participating medium both fogs share (the ray-marched fog, FogSettings, and the froxel fog,
+// FroxelFogSettings in postfx/froxel_fog.h): one definition, one validation. Messages name the keys with
+// the effect's prefix ("fog.density", "froxel_fog.density").
+struct FogMedium {
     // Extinction σt at base_height where noise = 1 [1/m]; in [0, 1e6]. 0.02 gives a visibility of ~150 m.
     float density = 0.02f;
     Vec3 albedo{0.9f};  // single-scattering albedo σs/σt per RGB channel [1]; each in [0, 1]
@@ -69,6 +65,24 @@ struct FogSettings {
     float baseHeight = 0.0f;  // [m]; finite
     // Rays are marched to the surface or to this distance, whichever is nearer [m]; in (0, 1e7].
     float maxDistance = 200.0f;
+    // Sun visibility also includes the fog's own transmittance toward the sun (closed form of the
+    // height term; noise not included).
+    bool selfShadow = false;
+    // Beyond max_distance (up to the surface, or to infinity for pixels with no geometry), add the
+    // height fog's closed-form contribution (no noise, no shadow map), so fog does not end at a wall.
+    bool analyticTail = true;
+    FogNoiseSettings noise;
+};
+
+// The ray-marched fog: the shared medium (FogMedium) and how it is marched.
+struct FogSettings : FogMedium {
+    bool enabled = false;
+    // Custom uses steps/jitter/shadowKernel/resolutionScale below; a preset replaces those four. A value
+    // that is not a FogQuality (cast from an int) is rejected.
+    FogQuality quality = FogQuality::Custom;
+    // Auto only: GPU time budget for the fog's passes (excluding noise generation) [ms]; > 0 and finite
+    // (checked whatever the quality).
+    float autoBudgetMs = 0.5f;
     uint32_t steps = 32;  // march steps per pixel, independent of distance; in [1, 4096]
     bool jitter = true;   // offset the march start by interleaved gradient noise of pixel and frame
     // March at this fraction of the color image's width and height (rounded up), then composite at full
@@ -77,12 +91,6 @@ struct FogSettings {
     float resolutionScale = 1.0f;
     // Stop marching once the transmittance is below this [1]; in [0, 1). 0 = never stop early.
     float transmittanceCutoff = 0.001f;
-    // Sun visibility also includes the fog's own transmittance toward the sun (closed form of the
-    // height term; noise not included).
-    bool selfShadow = false;
-    // Beyond max_distance (up to the surface, or to infinity for pixels with no geometry), add the
-    // height fog's closed-form contribution (no noise, no shadow map), so fog does not end at a wall.
-    bool analyticTail = true;
     // Empty-space skipping (docs/effects/fog.md#empty-space): march only the part of each ray below the
     // height above which the medium's extinction is negligible (its optical depth over max_distance below
     // 1e-4), spending every step there; rays that never go below it take no step. false marches all of
@@ -92,7 +100,6 @@ struct FogSettings {
     // The march's many samples already soften shafts (what a larger kernel costs and buys:
     // docs/accuracy-cost/README.md).
     uint32_t shadowKernel = 1;
-    FogNoiseSettings noise;
 };
 
 // FogQuality::Auto's measurements for one (color extent, noise on, shadow map present): the median GPU

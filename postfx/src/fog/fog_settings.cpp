@@ -49,18 +49,40 @@ float clampedAnisotropy(float g) {
     return std::clamp(g, -kMaxAnisotropy, kMaxAnisotropy);
 }
 
+Status validateMedium(const FogMedium& m, const std::string& p) {
+    if (Status r = checkRange((p + ".density").c_str(), m.density, 0.0, 1e6); !r) return r;
+    for (int c = 0; c < 3; ++c)
+        if (Status r = checkRange((p + ".albedo").c_str(), m.albedo[c], 0.0, 1.0); !r) return r;
+    if (Status r = checkRange((p + ".anisotropy").c_str(), m.anisotropy, -1.0, 1.0); !r) return r;
+    if (Status r = checkRange((p + ".height_falloff").c_str(), m.heightFalloff, 0.0, 10.0); !r) return r;
+    if (!std::isfinite(m.baseHeight)) return bad(p + ".base_height", "is not finite");
+    if (Status r = checkRange((p + ".max_distance").c_str(), m.maxDistance, 0.0, 1e7); !r) return r;
+    if (m.maxDistance <= 0.0f) return bad(p + ".max_distance", "must be > 0");
+    const FogNoiseSettings& n = m.noise;
+    if (!n.enabled) return Status::success();
+    if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
+        return bad((p + ".noise.texture_size"),
+                   std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
+    if (n.hostTexture && n.hostTextureLayout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL &&
+        n.hostTextureLayout != VK_IMAGE_LAYOUT_GENERAL &&
+        n.hostTextureLayout != VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL)
+        return bad((p + ".noise.host_texture_layout"),
+                   std::to_string(int64_t(n.hostTextureLayout)) +
+                       " is not SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL (a layout it can be "
+                       "sampled in)");
+    if (Status r = checkRange((p + ".noise.tiling").c_str(), n.tiling, 0.0, 1000.0); !r) return r;
+    if (n.tiling <= 0.0f) return bad((p + ".noise.tiling"), "must be > 0");
+    if (Status r = checkRange((p + ".noise.threshold").c_str(), n.threshold, 0.0, 1.0); !r) return r;
+    if (Status r = checkRange((p + ".noise.multiplier").c_str(), n.multiplier, 0.0, 1e3); !r) return r;
+    for (int c = 0; c < 3; ++c)
+        if (Status r = checkRange((p + ".noise.wind").c_str(), n.wind[c], -1e3, 1e3); !r) return r;
+    return Status::success();
+}
+
 Status validateSettings(const FogSettings& s) {
     if (uint32_t(s.quality) > uint32_t(FogQuality::Auto))
         return bad("fog.quality", std::to_string(uint32_t(s.quality)) +
                                       " is not a FogQuality (Custom, Low, Medium, High, Ultra or Auto)");
-    if (Status r = checkRange("fog.density", s.density, 0.0, 1e6); !r) return r;
-    for (int c = 0; c < 3; ++c)
-        if (Status r = checkRange("fog.albedo", s.albedo[c], 0.0, 1.0); !r) return r;
-    if (Status r = checkRange("fog.anisotropy", s.anisotropy, -1.0, 1.0); !r) return r;
-    if (Status r = checkRange("fog.height_falloff", s.heightFalloff, 0.0, 10.0); !r) return r;
-    if (!std::isfinite(s.baseHeight)) return bad("fog.base_height", "is not finite");
-    if (Status r = checkRange("fog.max_distance", s.maxDistance, 0.0, 1e7); !r) return r;
-    if (s.maxDistance <= 0.0f) return bad("fog.max_distance", "must be > 0");
     if (s.steps < 1 || s.steps > 4096)
         return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
     if (Status r = checkRange("fog.resolution_scale", s.resolutionScale, 0.25, 1.0); !r) return r;
@@ -70,25 +92,7 @@ Status validateSettings(const FogSettings& s) {
     if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
         return bad("fog.shadow_kernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
-    const FogNoiseSettings& n = s.noise;
-    if (!n.enabled) return Status::success();
-    if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
-        return bad("fog.noise.texture_size",
-                   std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
-    if (n.hostTexture && n.hostTextureLayout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL &&
-        n.hostTextureLayout != VK_IMAGE_LAYOUT_GENERAL &&
-        n.hostTextureLayout != VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL)
-        return bad("fog.noise.host_texture_layout",
-                   std::to_string(int64_t(n.hostTextureLayout)) +
-                       " is not SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL (a layout it can be "
-                       "sampled in)");
-    if (Status r = checkRange("fog.noise.tiling", n.tiling, 0.0, 1000.0); !r) return r;
-    if (n.tiling <= 0.0f) return bad("fog.noise.tiling", "must be > 0");
-    if (Status r = checkRange("fog.noise.threshold", n.threshold, 0.0, 1.0); !r) return r;
-    if (Status r = checkRange("fog.noise.multiplier", n.multiplier, 0.0, 1e3); !r) return r;
-    for (int c = 0; c < 3; ++c)
-        if (Status r = checkRange("fog.noise.wind", n.wind[c], -1e3, 1e3); !r) return r;
-    return Status::success();
+    return validateMedium(s, "fog");
 }
 
 }  // namespace postfx::fog
@@ -100,7 +104,7 @@ Status validateFogSettings(const FogSettings& settings) {
 
 namespace fog {
 
-double fogMediumTop(const FogSettings& s, bool noiseEnabled) {
+double fogMediumTop(const FogMedium& s, bool noiseEnabled) {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     if (fogMediumEmpty(s, noiseEnabled)) return -kInf;
     if (s.heightFalloff <= 0.0f) return kInf;

@@ -6,10 +6,17 @@
 
 #include "fog/fog_shared.h"
 
+#include <string>
+
 namespace postfx::fog {
 
 constexpr float kMaxAnisotropy = 0.999f;                       // |g| is clamped to this
 constexpr float kMaxHeightExponent = gpu::kMaxHeightExponent;  // -height_falloff·(y - base_height) <= this
+
+// The shared medium's checks (FogMedium), used by both fogs: InvalidArgument naming the field with the
+// effect's key `prefix` ("fog" or "froxel_fog": "froxel_fog.density: -1 is outside [0, 1e+06]"); the
+// noise's settings are checked when the noise is enabled.
+Status validateMedium(const FogMedium& medium, const std::string& prefix);
 
 // InvalidArgument naming the field ("fog.density: -1 is negative") for any value out of range or NaN.
 Status validateSettings(const FogSettings& settings);
@@ -17,7 +24,7 @@ Status validateSettings(const FogSettings& settings);
 // The medium is empty everywhere: density 0, or noise on with multiplier 0 or a threshold at or above the
 // texels' maximum of 1. The fog then records nothing (docs/frame-plan.md) and the reference leaves the
 // color as it is, so the analytic tail (which has no noise term) never adds fog to an empty medium.
-inline bool fogMediumEmpty(const FogSettings& s, bool noiseEnabled) {
+inline bool fogMediumEmpty(const FogMedium& s, bool noiseEnabled) {
     return s.density <= 0.0f || (noiseEnabled && (s.noise.multiplier <= 0.0f || s.noise.threshold >= 1.0f));
 }
 
@@ -28,7 +35,7 @@ constexpr double kNegligibleOpticalDepth = 1e-4;
 // kNegligibleOpticalDepth / max_distance, so that no march segment above it can hold more than that
 // optical depth; noise_max = clamp(1 - threshold, 0, 1) · multiplier (noise values are in [0, 1]).
 // +Inf when the height term does not fall (height_falloff 0), -Inf for an empty medium.
-double fogMediumTop(const FogSettings& s, bool noiseEnabled);
+double fogMediumTop(const FogMedium& s, bool noiseEnabled);
 
 // g clamped to [-kMaxAnisotropy, kMaxAnisotropy].
 float clampedAnisotropy(float g);
