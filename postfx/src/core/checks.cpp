@@ -107,8 +107,9 @@ bool sameExtent(VkExtent2D a, VkExtent2D b) {
     return a.width == b.width && a.height == b.height;
 }
 
-Status checkLight(const LocalLight& light, uint32_t index) {
-    const std::string n = "FrameInfo.lights[" + std::to_string(index) + "]";
+}  // namespace
+
+Status checkLight(const LocalLight& light, const std::string& n) {
     if (light.type != LightType::Point && light.type != LightType::Spot)
         return invalid(n + ".type " + std::to_string(uint32_t(light.type)) + " is not Point or Spot");
     for (int c = 0; c < 3; ++c)
@@ -133,8 +134,6 @@ Status checkLight(const LocalLight& light, uint32_t index) {
         return s;
     return Status::success();
 }
-
-}  // namespace
 
 std::string extentText(VkExtent2D e) {
     return std::to_string(e.width) + "x" + std::to_string(e.height);
@@ -288,7 +287,8 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
     if (frame.lightCount > 0 && !frame.lights)
         return invalid("FrameInfo.lights is null with lightCount " + std::to_string(frame.lightCount));
     for (uint32_t i = 0; i < frame.lightCount; ++i)
-        if (Status s = checkLight(frame.lights[i], i); !s) return s;
+        if (Status s = checkLight(frame.lights[i], "FrameInfo.lights[" + std::to_string(i) + "]"); !s)
+            return s;
     return Status::success();
 }
 

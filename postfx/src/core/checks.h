@@ -72,6 +72,10 @@ Status checkTime(double timeSeconds, const std::string& field);
 // The shadow map's transform (also used by the CPU references): finite, and worldToClip · translate(camera)
 // (the camera-relative transform the GPU gets in float) finite in float. `field` names the matrix.
 Status checkShadowTransform(const DMat4& worldToClip, const DVec3& camera, const std::string& field);
+// One local light (also used by the CPU references): type, position within ±kMaxWorldCoordinate, intensity
+// in [0, 1e9], range, source radius, cone angles, a spot's direction. `name` names it
+// ("FrameInfo.lights[2]").
+Status checkLight(const LocalLight& light, const std::string& name);
 // A VkImageLayout of the Vulkan headers postfx was built with (not a value cast from another int).
 bool knownImageLayout(VkImageLayout layout);
 

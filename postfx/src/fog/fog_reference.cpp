@@ -3,6 +3,7 @@
 #include "core/checks.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_shared.h"
+#include "fog/reference_image.h"
 #include "fog/reference_model.h"
 
 #include <postfx/reference.h>
@@ -24,19 +25,9 @@ using glm::dvec4;
 
 using core::allFinite;
 using core::invalid;
-
-Status checkCount(const char* field, size_t count, uint64_t expected, const char* what) {
-    if (count == expected) return Status::success();
-    return invalid(std::string(field) + ": " + std::to_string(count) + " values, expected " +
-                   std::to_string(expected) + " (" + what + ")");
-}
-
-// Rotation-only view: the view matrix with its translation column zeroed (the march is camera-relative).
-glm::dmat4 clipToView(const CameraInput& camera) {
-    glm::dmat4 rotation(camera.view);
-    rotation[3] = dvec4(0.0, 0.0, 0.0, 1.0);
-    return glm::inverse(glm::dmat4(camera.projection) * rotation);
-}
+using detail::checkCount;
+using detail::clipToView;
+using detail::forEachRow;
 
 Status validate(const FogInputs& in) {
     if (in.width == 0 || in.height == 0)
@@ -134,24 +125,9 @@ Model makeModel(const FogInputs& in) {
     return m;
 }
 
-struct Ray {
-    dvec3 d;          // unit direction, camera-relative world space
-    double distance;  // D_s: to the surface, ∞ for no geometry
-};
-
-// Ray: ndc of the pixel centre, p = clipToView · (ndc, z, 1), x_s = p.xyz / p.w, D_s = |x_s|, d = x_s / D_s.
-// No geometry (z exactly the far value): d from z = 0.5, D_s = ∞.
+using Ray = detail::PixelRay;
 Ray pixelRay(const Model& m, uint32_t i, uint32_t j, double z) {
-    const double nx = (i + 0.5) / m.width * 2.0 - 1.0, ny = (j + 0.5) / m.height * 2.0 - 1.0;
-    const bool geometry = z != m.farDepth;
-    const dvec4 p = m.clipToView * dvec4(nx, ny, geometry ? z : 0.5, 1.0);
-    const dvec3 x = dvec3(p) / p.w;
-    const double length = glm::length(x);
-    // A surface that reconstructs to infinity (not a valid depth) is treated as no geometry.
-    if (!geometry || !std::isfinite(length) || length == 0.0)
-        return {glm::normalize(dvec3(m.clipToView * dvec4(nx, ny, 0.5, 1.0))),
-                std::numeric_limits<double>::infinity()};
-    return {x / length, length};
+    return detail::pixelRay(m.clipToView, m.farDepth, m.width, m.height, i, j, z);
 }
 
 // noise(x) = clamp(n(u) - threshold, 0, 1) · multiplier, 1 with noise disabled.
@@ -165,6 +141,10 @@ struct Radiance {
     dvec3 L{0.0};    // in-scattered radiance
     double T = 1.0;  // transmittance (σt is grey: albedo only scales σs)
 };
+
+void composite(const Radiance& r, const float* color, float* out) {
+    detail::composite(r.L, r.T, color, out);
+}
 
 // Adds a segment of constant light and optical depth τ: L += T·albedo·light·(1 - e^{-τ}); T *= e^{-τ}.
 // With S = σs·light = albedo·σt·light this is the doc's T·S·(1 - exp(-σtΔ))/σt for τ = σtΔ, exact
@@ -231,44 +211,6 @@ Radiance scatterAlong(const Model& m, const Ray& ray) {
     marchPixel(m, ray, sunPhase, r);
     if (m.analyticTail && ray.distance > m.maxDistance) tailContribution(m, ray, sunPhase, r);
     return r;
-}
-
-// Composite: out.rgb = color.rgb · T + L, out.a = color.a, as the GPU does it (shaders/fog/composite.glsl):
-// ±Inf color counts as ±FLT_MAX, the result is clamped to ±FLT_MAX, a NaN channel stays NaN.
-void composite(const Radiance& r, const float* color, float* out) {
-    constexpr double kMax = std::numeric_limits<float>::max();
-    for (int c = 0; c < 3; ++c) {
-        if (std::isnan(color[c])) {
-            out[c] = color[c];
-            continue;
-        }
-        const double bounded = std::clamp(double(color[c]), -kMax, kMax);
-        out[c] = float(std::clamp(bounded * r.T + r.L[c], -kMax, kMax));
-    }
-    out[3] = color[3];
-}
-
-// Runs `rowTask(j)` for rows 0..rows-1 on `threads` threads (0: all hardware threads). Rows are
-// independent, so the result does not depend on how they are shared out.
-template <class RowTask>
-void forEachRow(uint32_t rows, uint32_t threads, const RowTask& rowTask) {
-    std::atomic<uint32_t> nextRow{0};
-    auto work = [&] {
-        for (uint32_t j; (j = nextRow.fetch_add(1)) < rows;)
-            rowTask(j);
-    };
-    threads = std::min(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), rows);
-    std::vector<std::thread> pool;
-    try {
-        pool.reserve(threads - 1);
-        for (uint32_t t = 1; t < threads; ++t)
-            pool.emplace_back(work);
-    } catch (const std::exception&) {
-        // Fewer threads than asked for: the ones running (and this one) take all rows.
-    }
-    work();
-    for (std::thread& t : pool)
-        t.join();
 }
 
 // Reduced resolution, as the GPU does it (raymarch_reduced.comp, upsample.comp): texel (i, j) of the
