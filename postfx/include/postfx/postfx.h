@@ -4,6 +4,7 @@
 #include <postfx/context.h>
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>
+#include <postfx/froxel_fog.h>
 #include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>

@@ -5,6 +5,7 @@
 
 #include <postfx/export.h>
 #include <postfx/fog.h>
+#include <postfx/froxel_fog.h>
 #include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
@@ -46,6 +47,53 @@ struct FogInputs {
 
 // Renders the fog over `inputs.color` into `out` (RGBA, same layout). Validates like Context::record.
 POSTFX_API Status renderFog(const FogInputs& inputs, std::vector<float>& out);
+
+// Everything the froxel fog reference reads: FogInputs' images and frame inputs, the froxel fog's
+// settings and the frame's local lights.
+struct FroxelFogInputs {
+    uint32_t width = 0, height = 0;
+    std::span<const float> color;  // RGBA, width·height·4, row-major, top row first
+    std::span<const float> depth;  // width·height depth values as the GPU samples them
+    DepthConvention depthConvention;
+
+    CameraInput camera;
+    SunInput sun;
+    Vec3 ambient{0.0f};
+    double timeSeconds = 0.0;
+    FroxelFogSettings settings;          // its volumes are read through settings.volumes
+    std::span<const LocalLight> lights;  // at most kMaxLocalLights, each checked as FrameInfo's
+
+    // Shadow map texels (row-major, top row = v 0), empty for none; read as the ray-marched fog reads
+    // them with a 1×1 kernel.
+    std::span<const float> shadowDepth;
+    uint32_t shadowWidth = 0, shadowHeight = 0;
+    DMat4 shadowWorldToClip{1.0};
+    bool shadowReversedZ = false;
+    float shadowDepthBias = 0.0f;
+
+    // Noise texels in [0, 1], noiseSize³ of them, x fastest then y then z. Required when
+    // settings.noise.enabled.
+    std::span<const float> noise;
+    uint32_t noiseSize = 0;
+
+    uint32_t stepsPerPixel =
+        4096;              // midpoint steps along [0, min(surface, max_distance)] (the tail is exact)
+    uint32_t threads = 0;  // 0: all hardware threads
+};
+
+// Renders the froxel fog's model over `inputs.color` into `out` (RGBA, same layout), evaluated
+// continuously along each pixel's ray (no grid: its difference to the GPU includes the grid's
+// discretisation), docs/effects/froxel-fog.md. InvalidArgument naming the field for bad settings,
+// lights or inputs.
+POSTFX_API Status renderFroxelFog(const FroxelFogInputs& inputs, std::vector<float>& out);
+
+// The local-light terms of the model (docs/effects/froxel-fog.md#local-lights), exposed for tests.
+// Illuminance [lx] at world position `x` from `light`, before the phase function:
+// I·cone/(d² + r²)·window(d), 0 at d >= range.
+POSTFX_API Vec3 localLightIlluminance(const LocalLight& light, const DVec3& x);
+// The density factor of `volume` at world position `x` [1]: 0 outside, smoothstep(0, edge_falloff,
+// depth inside) inside (1 with edge_falloff 0).
+POSTFX_API double fogVolumeWeight(const FogVolume& volume, const DVec3& x);
 
 // The model's pieces, exposed for tests.
 POSTFX_API double henyeyGreenstein(double cosTheta, double g);  // [1/sr]; g clamped to [-0.999, 0.999]

@@ -19,6 +19,7 @@ namespace postfx {
 using Vec3 = glm::vec<3, float, glm::packed_highp>;
 using DVec3 = glm::vec<3, double, glm::packed_highp>;
 using UVec2 = glm::vec<2, glm::uint, glm::packed_highp>;
+using UVec3 = glm::vec<3, glm::uint, glm::packed_highp>;
 using Mat4 = glm::mat<4, 4, float, glm::packed_highp>;
 using DMat4 = glm::mat<4, 4, double, glm::packed_highp>;
 static_assert(sizeof(Vec3) == 12 && alignof(Vec3) == 4, "postfx::Vec3 must be three packed floats");

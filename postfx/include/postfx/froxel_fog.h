@@ -1,0 +1,74 @@
+// Froxel volumetric fog: settings (docs/effects/froxel-fog.md). The GPU effect is not there yet: these
+// settings, their checks, the slice distribution and the CPU reference (postfx/reference.h) are; the
+// settings are not yet part of FrameInfo.
+//
+// Every setting: unit, default, valid range, checked by validateFroxelFogSettings with an error naming
+// the field by its scene-file key ("froxel_fog.grid[2]: 0 is outside [1, 512]").
+#pragma once
+
+#include <postfx/export.h>
+#include <postfx/fog.h>
+#include <postfx/result.h>
+#include <postfx/types.h>
+
+#include <cstdint>
+
+namespace postfx {
+
+enum class FogVolumeShape : uint32_t { Box, Sphere };  // another value (cast from an int) is rejected
+
+// A local fog volume: extinction added to the medium's inside a box or a sphere (additive density).
+struct FogVolume {
+    FogVolumeShape shape = FogVolumeShape::Box;
+    DVec3 center{0.0};     // world position [m]; each component in [-1e9, 1e9]
+    Vec3 halfSize{1.0f};   // box: half extent along world x, y, z [m]; each in [0, 1e7] (0: empty)
+    float radius = 1.0f;   // sphere: [m]; in [0, 1e7] (0: empty)
+    float density = 0.1f;  // extinction added at full strength [1/m]; in [0, 1e6]
+    // The density ramps with a smoothstep from 0 at the surface to full at this depth inside (distance
+    // to the nearest face for a box, radius - |x - center| for a sphere) [m]; in [0, 1e7]. 0 = hard edge.
+    float edgeFalloff = 0.0f;
+};
+
+// At most this many volumes per frame (FroxelFogSettings::volumeCount): each is tested per froxel on the
+// GPU without a volume list, and 64 covers the rooms and patches a scene places by hand.
+inline constexpr uint32_t kMaxFogVolumes = 64;
+
+// How the grid's depth slices are spread between the near plane and max_distance (froxelSliceDepth).
+enum class FroxelDepthDistribution : uint32_t {
+    Power,  // d(z) = near + (far - near)·z^k, k = depth_exponent (Wronski 2014: k = 2)
+    Log,    // d(z) = near·(far/near)^z: slices of equal relative thickness (as Unreal)
+};
+
+// Largest grid size along each axis: the stability cases need 1×1×1 and 512 slices.
+inline constexpr uint32_t kMaxFroxelGridSize = 512;
+
+// The froxel fog: the shared medium (FogMedium, the same keys and ranges as the ray-marched fog, named
+// "froxel_fog.*") and its grid. max_distance is the grid's far end.
+struct FroxelFogSettings : FogMedium {
+    bool enabled = false;
+    // Froxels along the view's x, y and depth [1]; each in [1, 512]. x and y are replaced by tileSizePx.
+    UVec3 grid{160, 90, 128};
+    // 0: grid.x, grid.y as set; otherwise grid.x, grid.y = ceil(extent / tileSizePx) of the color image
+    // [px]; in [0, 4096].
+    uint32_t tileSizePx = 0;
+    FroxelDepthDistribution depthDistribution = FroxelDepthDistribution::Power;
+    float depthExponent = 2.0f;  // k of the power distribution [1]; in [1, 8] (checked for Log too)
+    bool tricubic = false;       // apply: tricubic B-spline instead of trilinear filtering of the volume
+    bool jitter = true;          // the sample inside each froxel moves per frame (Halton 2, 3, 5)
+    // volumeCount local fog volumes (may be null when 0), read during record(); count in [0, 64].
+    const FogVolume* volumes = nullptr;
+    uint32_t volumeCount = 0;
+};
+
+// Checks every setting against its documented range (the medium's as FogMedium's, named "froxel_fog.*",
+// the noise's when it is enabled, every volume's); InvalidArgument naming the first bad field.
+POSTFX_API Status validateFroxelFogSettings(const FroxelFogSettings& settings);
+
+// View distance of the slice boundary at z01 ∈ [0, 1] (0: the near plane, 1: far = max_distance) [m]:
+// Power: near + (far - near)·z01^k; Log: near·(far/near)^z01. z01 is clamped to [0, 1]; near must be in
+// (0, far) (otherwise near is returned).
+POSTFX_API double froxelSliceDepth(const FroxelFogSettings& settings, double nearPlane, double z01);
+// Its inverse: z01 ∈ [0, 1] of view distance `depth`, clamped to [near, far].
+POSTFX_API double froxelSliceCoordinate(const FroxelFogSettings& settings, double nearPlane, double depth);
+
+}  // namespace postfx

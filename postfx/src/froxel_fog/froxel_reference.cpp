@@ -1,0 +1,295 @@
+// Double-precision CPU reference of the froxel fog (docs/effects/froxel-fog.md): the shared medium plus
+// local fog volumes, lit by the sun, ambient and local lights, evaluated continuously along each pixel's
+// ray with a converged midpoint march (no grid, no jitter), then the ray-marched fog's analytic tail.
+#include "core/checks.h"
+#include "fog/fog_settings.h"
+#include "fog/reference_image.h"
+#include "fog/reference_model.h"
+
+#include <postfx/reference.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <new>
+#include <string>
+#include <vector>
+
+namespace postfx::reference {
+namespace {
+
+using glm::dvec3;
+
+using core::invalid;
+using detail::checkCount;
+
+constexpr double kPi = 3.14159265358979323846;
+
+Status validate(const FroxelFogInputs& in) {
+    if (in.width == 0 || in.height == 0)
+        return invalid("FroxelFogInputs.width/height: " + std::to_string(in.width) + "x" +
+                       std::to_string(in.height) + " image is empty");
+    const uint64_t pixels = uint64_t(in.width) * in.height;
+    if (Status s = checkCount("FroxelFogInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s)
+        return s;
+    if (Status s = checkCount("FroxelFogInputs.depth", in.depth.size(), pixels, "width·height"); !s) return s;
+    for (size_t i = 0; i < in.depth.size(); ++i)
+        if (!std::isfinite(in.depth[i]))
+            return invalid("FroxelFogInputs.depth: value " + std::to_string(i) + " is not finite");
+    if (Status s = validateFroxelFogSettings(in.settings); !s) return s;
+    if (in.lights.size() > kMaxLocalLights)
+        return invalid("FroxelFogInputs.lights: " + std::to_string(in.lights.size()) +
+                       " lights exceed kMaxLocalLights (" + std::to_string(kMaxLocalLights) + ")");
+    for (size_t i = 0; i < in.lights.size(); ++i)
+        if (Status s = core::checkLight(in.lights[i], "FroxelFogInputs.lights[" + std::to_string(i) + "]");
+            !s)
+            return s;
+    if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
+    if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
+    if (!core::allFinite(detail::clipToView(in.camera)))
+        return invalid("camera.projection: projection · view rotation is not invertible");
+    if (Status s = core::checkTime(in.timeSeconds, "FroxelFogInputs.timeSeconds"); !s) return s;
+    if (in.stepsPerPixel == 0) return invalid("FroxelFogInputs.stepsPerPixel: 0 must be >= 1");
+    if (in.settings.noise.enabled) {
+        if (in.noiseSize == 0) return invalid("FroxelFogInputs.noiseSize: 0 with froxel_fog.noise enabled");
+        const uint64_t n = in.noiseSize;
+        if (Status s = checkCount("FroxelFogInputs.noise", in.noise.size(), n * n * n, "noiseSize³"); !s)
+            return s;
+    }
+    if (!in.shadowDepth.empty()) {
+        const uint64_t texels = uint64_t(in.shadowWidth) * in.shadowHeight;
+        if (Status s = checkCount("FroxelFogInputs.shadowDepth", in.shadowDepth.size(), texels,
+                                  "shadowWidth·shadowHeight");
+            !s)
+            return s;
+        if (Status s = core::checkShadowTransform(in.shadowWorldToClip, in.camera.position,
+                                                  "FroxelFogInputs.shadowWorldToClip");
+            !s)
+            return s;
+        if (!(in.shadowDepthBias >= 0.0f) || !std::isfinite(in.shadowDepthBias))
+            return invalid("FroxelFogInputs.shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
+                           " must be finite and >= 0");
+    }
+    return Status::success();
+}
+
+double smoothstep(double e0, double e1, double x) {
+    if (!(e1 > e0)) return x >= e1 ? 1.0 : 0.0;  // hard step where the two edges meet
+    const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+// Everything the march reads, converted to double once.
+struct Model {
+    glm::dmat4 clipToView;
+    double farDepth;
+    uint32_t width, height, steps;
+    dvec3 camera;
+    double density, heightFalloff, baseHeight, maxDistance;
+    dvec3 albedo, sunIlluminance, toSun, ambient;
+    double g;
+    bool selfShadow, analyticTail, noise;
+    std::span<const float> noiseTexels;
+    uint32_t noiseSize;
+    dvec3 noiseOrigin;
+    double noiseScale, noiseThreshold, noiseMultiplier;
+    detail::ShadowMap shadow;
+    std::vector<FogVolume> volumes;  // centres made camera-relative
+    std::vector<LocalLight> lights;  // positions made camera-relative
+};
+
+Model makeModel(const FroxelFogInputs& in) {
+    const FroxelFogSettings& s = in.settings;
+    Model m;
+    m.clipToView = detail::clipToView(in.camera);
+    m.farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
+    m.width = in.width;
+    m.height = in.height;
+    m.steps = in.stepsPerPixel;
+    m.camera = in.camera.position;
+    m.density = s.density;
+    m.heightFalloff = s.heightFalloff;
+    m.baseHeight = s.baseHeight;
+    m.maxDistance = s.maxDistance;
+    m.albedo = dvec3(s.albedo);
+    m.sunIlluminance = dvec3(in.sun.illuminance);
+    m.toSun = glm::normalize(dvec3(in.sun.toSun));
+    m.ambient = dvec3(in.ambient);
+    m.g = s.anisotropy;  // clamped by henyeyGreenstein
+    m.selfShadow = s.selfShadow;
+    m.analyticTail = s.analyticTail;
+    // An empty shared medium (fog::fogMediumEmpty) has no extinction: the volumes may still have some.
+    m.noise = s.noise.enabled;
+    m.noiseTexels = in.noise;
+    m.noiseSize = in.noiseSize;
+    m.noiseScale = 0.01 * double(s.noise.tiling);
+    const dvec3 origin = (m.camera - dvec3(s.noise.wind) * in.timeSeconds) * m.noiseScale;
+    m.noiseOrigin = origin - glm::floor(origin);
+    m.noiseThreshold = s.noise.threshold;
+    m.noiseMultiplier = s.noise.multiplier;
+    m.shadow = {in.shadowDepth,
+                in.shadowWidth,
+                in.shadowHeight,
+                in.shadowWorldToClip,
+                in.shadowReversedZ,
+                double(in.shadowDepthBias),
+                1};
+    for (uint32_t i = 0; i < s.volumeCount; ++i) {
+        FogVolume v = s.volumes[i];
+        if (v.density <= 0.0f) continue;
+        v.center = DVec3(dvec3(v.center) - m.camera);
+        m.volumes.push_back(v);
+    }
+    for (const LocalLight& l : in.lights)
+        if (l.intensity != Vec3(0.0f)) {
+            LocalLight relative = l;
+            relative.position = DVec3(dvec3(l.position) - m.camera);
+            m.lights.push_back(relative);
+        }
+    return m;
+}
+
+// Shared medium's extinction at camera-relative x: density·h(y)·noise(x) (the ray-marched fog's σt).
+double mediumExtinction(const Model& m, const dvec3& x, double& h) {
+    h = detail::heightTerm(m.camera.y + x.y, m.heightFalloff, m.baseHeight);
+    if (m.density == 0.0) return 0.0;
+    double noise = 1.0;
+    if (m.noise) {
+        const double n = detail::sampleNoise(m.noiseTexels, m.noiseSize, m.noiseOrigin + x * m.noiseScale);
+        noise = std::clamp(n - m.noiseThreshold, 0.0, 1.0) * m.noiseMultiplier;
+    }
+    return m.density * h * noise;
+}
+
+// In-scattered radiance per unit σs from the local lights at camera-relative x, seen along d:
+// Σ E_i(x)·p(cos θ_i), θ_i between the light's direction of travel and the direction toward the camera
+// (cos θ_i = d · toLight, as the sun's d · toSun). Fog between the light and x does not attenuate it.
+dvec3 localLights(const Model& m, const dvec3& x, const dvec3& d) {
+    dvec3 sum(0.0);
+    for (const LocalLight& l : m.lights) {
+        const dvec3 toLight = dvec3(l.position) - x;
+        const double distance = glm::length(toLight);
+        // At the light itself the direction is undefined: isotropic there.
+        const double phase =
+            distance > 0.0 ? henyeyGreenstein(glm::dot(d, toLight / distance), m.g) : 1.0 / (4.0 * kPi);
+        sum += phase * dvec3(localLightIlluminance(l, DVec3(x)));
+    }
+    return sum;
+}
+
+struct Radiance {
+    dvec3 L{0.0};
+    double T = 1.0;
+};
+
+// L += T·albedo·light·(1 - e^{-τ}); T *= e^{-τ} (fog_reference.cpp's step: exact, 0 at σt = 0).
+void addSegment(const Model& m, const dvec3& light, double tau, Radiance& r) {
+    r.L += r.T * m.albedo * light * -std::expm1(-tau);
+    r.T *= std::exp(-tau);
+}
+
+// March [0, D], D = min(D_s, max_distance): N midpoint steps, σt and the source held over each.
+void marchPixel(const Model& m, const detail::PixelRay& ray, const dvec3& sunPhase, Radiance& r) {
+    const double D = std::min(ray.distance, m.maxDistance);
+    const double dt = D / m.steps;
+    for (uint32_t k = 0; k < m.steps; ++k) {
+        const dvec3 x = (k + 0.5) * dt * ray.d;
+        double h;
+        double sigmaT = mediumExtinction(m, x, h);
+        for (const FogVolume& v : m.volumes)
+            sigmaT += double(v.density) * fogVolumeWeight(v, DVec3(x));
+        if (sigmaT == 0.0) continue;
+        double sun = 0.0;
+        if (sunPhase != dvec3(0.0)) {
+            sun = detail::shadowVisibility(m.shadow, m.camera + x);
+            if (m.selfShadow) sun *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
+        }
+        addSegment(m, sunPhase * sun + m.ambient + localLights(m, x, ray.d), sigmaT * dt, r);
+    }
+}
+
+// The ray-marched fog's analytic tail beyond max_distance: the shared medium's height fog without noise,
+// shadow map, volumes or local lights (fog_reference.cpp's tailContribution).
+void tailContribution(const Model& m, const detail::PixelRay& ray, const dvec3& sunPhase, Radiance& r) {
+    const double t0 = m.maxDistance;
+    const double exponent0 = detail::heightExponent(m.camera.y + t0 * ray.d.y, m.heightFalloff, m.baseHeight);
+    const double tau =
+        detail::tailOpticalDepth(m.density, exponent0, m.heightFalloff * ray.d.y, ray.distance - t0);
+    double sun = 1.0;
+    if (m.selfShadow)
+        sun = detail::sunTransmittance(m.density, std::exp(exponent0), m.heightFalloff, m.toSun.y);
+    addSegment(m, sunPhase * sun + m.ambient, tau, r);
+}
+
+Radiance scatterAlong(const Model& m, const detail::PixelRay& ray) {
+    const dvec3 sunPhase = m.sunIlluminance * henyeyGreenstein(glm::dot(ray.d, m.toSun), m.g);
+    Radiance r;
+    marchPixel(m, ray, sunPhase, r);
+    if (m.analyticTail && ray.distance > m.maxDistance && m.density > 0.0)
+        tailContribution(m, ray, sunPhase, r);
+    return r;
+}
+
+}  // namespace
+
+Vec3 localLightIlluminance(const LocalLight& s, const DVec3& x) {
+    const dvec3 fromLight = dvec3(x) - dvec3(s.position);
+    const double distance = glm::length(fromLight);
+    if (!(distance < double(s.range))) return Vec3(0.0f);
+    const double r = s.sourceRadius, q = distance / double(s.range);
+    const double window = (1.0 - q * q * q * q) * (1.0 - q * q * q * q);
+    double cone = 1.0;
+    if (s.type == LightType::Spot) {
+        const dvec3 axis = glm::normalize(dvec3(s.direction));
+        const double cosAngle = distance > 0.0 ? glm::dot(fromLight / distance, axis) : 1.0;
+        cone = smoothstep(std::cos(double(s.outerConeAngle)), std::cos(double(s.innerConeAngle)), cosAngle);
+    }
+    return Vec3(dvec3(s.intensity) * (cone * window / (distance * distance + r * r)));
+}
+
+double fogVolumeWeight(const FogVolume& v, const DVec3& x) {
+    const dvec3 p = dvec3(x) - dvec3(v.center);
+    double depth;  // distance inside the surface, <= 0 outside
+    if (v.shape == FogVolumeShape::Sphere) {
+        depth = double(v.radius) - glm::length(p);
+    } else {
+        const dvec3 inside = dvec3(v.halfSize) - glm::abs(p);
+        depth = std::min({inside.x, inside.y, inside.z});
+    }
+    if (!(depth > 0.0)) return 0.0;
+    return v.edgeFalloff > 0.0f ? smoothstep(0.0, double(v.edgeFalloff), depth) : 1.0;
+}
+
+Status renderFroxelFog(const FroxelFogInputs& in, std::vector<float>& out) {
+    if (Status s = validate(in); !s) return s;
+    std::vector<float> result;  // not `out` directly: `in.color` may view it
+    try {
+        result.assign(in.color.begin(), in.color.end());
+    } catch (const std::bad_alloc&) {
+        return {Result::OutOfMemory, "reference::renderFroxelFog: cannot allocate the output image"};
+    }
+    if (in.settings.enabled) {
+        Model m;
+        try {
+            m = makeModel(in);
+        } catch (const std::bad_alloc&) {
+            return {Result::OutOfMemory,
+                    "reference::renderFroxelFog: cannot allocate the lights and volumes"};
+        }
+        const bool empty = fog::fogMediumEmpty(in.settings, in.settings.noise.enabled) && m.volumes.empty();
+        if (!empty)
+            detail::forEachRow(m.height, in.threads, [&](uint32_t j) {
+                for (uint32_t i = 0; i < m.width; ++i) {
+                    const size_t p = size_t(j) * m.width + i;
+                    const detail::PixelRay ray =
+                        detail::pixelRay(m.clipToView, m.farDepth, m.width, m.height, i, j, in.depth[p]);
+                    const Radiance r = scatterAlong(m, ray);
+                    detail::composite(r.L, r.T, &in.color[p * 4], &result[p * 4]);
+                }
+            });
+    }
+    out.swap(result);
+    return Status::success();
+}
+
+}  // namespace postfx::reference
