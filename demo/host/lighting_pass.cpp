@@ -33,13 +33,14 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
 
     using namespace shared;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    const std::array<VkDescriptorSetLayoutBinding, 6> bindings{{
+    const std::array<VkDescriptorSetLayoutBinding, 7> bindings{{
         {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
         {kBindingAlbedo, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
         {kBindingNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
         {kBindingDepth, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
         {kBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
         {kBindingHdr, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, cs, nullptr},
+        {kBindingLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
     }};
     VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     lci.bindingCount = uint32_t(bindings.size());
@@ -47,7 +48,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
     if (!vkCheck(vkCreateDescriptorSetLayout(device, &lci, nullptr, &setLayout_),
                  "vkCreateDescriptorSetLayout", error))
         return false;
-    const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+    const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
                                                      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4},
                                                      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}}};
     VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -64,6 +65,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
         return false;
 
     const VkDescriptorBufferInfo ubo{in.frameUniforms->buffer, 0, sizeof(FrameUniforms)};
+    const VkDescriptorBufferInfo lightsUbo{in.lights->buffer, 0, sizeof(LightsUniforms)};
     const VkImageLayout readOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const VkImageLayout depthReadOnly = VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL;
     const std::array<VkDescriptorImageInfo, 5> images{{
@@ -73,7 +75,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
         {shadowSampler, in.shadowMap->view, depthReadOnly},
         {VK_NULL_HANDLE, in.hdr->view, VK_IMAGE_LAYOUT_GENERAL},
     }};
-    std::array<VkWriteDescriptorSet, 6> writes{};
+    std::array<VkWriteDescriptorSet, 7> writes{};
     for (size_t i = 0; i < writes.size(); ++i) {
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = set_;
@@ -82,6 +84,8 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
         writes[i].descriptorType = bindings[i].descriptorType;
         if (i == 0)
             writes[i].pBufferInfo = &ubo;
+        else if (i == 6)
+            writes[i].pBufferInfo = &lightsUbo;
         else
             writes[i].pImageInfo = &images[i - 1];
     }

@@ -1,4 +1,5 @@
-// The deferred lighting compute pass: G-buffer + depth + sun shadow map -> HDR radiance (RGBA16F).
+// The deferred lighting compute pass: G-buffer + depth + sun shadow map + local lights -> HDR radiance
+// (RGBA16F).
 // See demo/shaders/lighting.comp for the shading formula.
 #pragma once
 
@@ -8,6 +9,7 @@ namespace demo {
 
 struct LightingInputs {
     const GpuBuffer* frameUniforms = nullptr;  // shared::FrameUniforms
+    const GpuBuffer* lights = nullptr;         // shared::LightsUniforms
     const GpuImage* albedo = nullptr;          // SHADER_READ_ONLY_OPTIMAL when dispatched
     const GpuImage* normal = nullptr;          // SHADER_READ_ONLY_OPTIMAL
     const GpuImage* depth = nullptr;           // DEPTH_STENCIL_READ_ONLY_OPTIMAL

@@ -46,7 +46,7 @@ Renderer::Impl::~Impl() {
     destroyImage(device, fogScratch);
     if (framePool) vkDestroyDescriptorPool(device, framePool, nullptr);
     if (frameSetLayout) vkDestroyDescriptorSetLayout(device, frameSetLayout, nullptr);
-    for (GpuBuffer* b : {&frameUniforms, &vertices, &indices, &readback})
+    for (GpuBuffer* b : {&frameUniforms, &lightsUniforms, &vertices, &indices, &readback})
         destroyBuffer(device, *b);
 }
 
@@ -124,6 +124,9 @@ bool Renderer::Impl::createResources(std::string& error) {
     if (!createBuffer(host, sizeof(shared::FrameUniforms),
                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
                       frameUniforms, error) ||
+        !createBuffer(host, sizeof(shared::LightsUniforms),
+                      VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
+                      lightsUniforms, error) ||
         !createFrameSet(error))
         return false;
 
@@ -150,8 +153,13 @@ bool Renderer::Impl::createResources(std::string& error) {
             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, hdr,
             error))
         return false;
-    LightingInputs in{&frameUniforms, &gbuffer.color[0], &gbuffer.color[1],
-                      &gbuffer.depth, &shadow.depth,     &hdr};
+    LightingInputs in{&frameUniforms,
+                      &lightsUniforms,
+                      &gbuffer.color[0],
+                      &gbuffer.color[1],
+                      &gbuffer.depth,
+                      &shadow.depth,
+                      &hdr};
     if (!lighting.create(host, in, error)) return false;
     if (!createBuffer(host, VkDeviceSize(extent.width) * extent.height * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       true, readback, error))

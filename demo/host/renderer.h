@@ -115,9 +115,10 @@ public:
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                      const postfx::ImageInput& fogOutput, std::string& error);
     // What recordFrame(cmd, scene, frameIndex) gives postfx: images (HDR color in GENERAL, depth and
-    // shadow map in the layouts they rest in), time, camera, sun, ambient, shadow map, scene.fog. For a
-    // host pass that wants exactly postfx's inputs after recordFrame (the benchmark's baselines).
-    // Records nothing.
+    // shadow map in the layouts they rest in), time, camera, sun, ambient, shadow map, scene.fog and
+    // scene.lights (FrameInfo::lights points into the renderer: valid until its next frame or
+    // frameInputs call). For a host pass that wants exactly postfx's inputs after recordFrame (the
+    // benchmark's baselines). Records nothing.
     postfx::FrameInfo frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const;
 
     // postfx's plan (docs/frame-plan.md) for frame `frameIndex` of `scene` as recordFrame(cmd, scene,

@@ -3,6 +3,9 @@
 #include "host/camera_math.h"
 #include "host/renderer_impl.h"
 
+#include <cmath>
+#include <vector>
+
 namespace demo {
 namespace {
 
@@ -32,9 +35,27 @@ shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions&
     u.ambient = glm::vec4(scene.ambient, 0.0f);
     u.sky = glm::vec4(scene.sky, 0.0f);
     u.depthParams = glm::vec4(options.reversedZ ? 0.0f : 1.0f, 1.0f / float(options.shadowMapSize),
-                              fit.texelWorldSize, 0.0f);
+                              fit.texelWorldSize, float(scene.lights.size()));
     u.extent = glm::uvec4(options.width, options.height, 0, 0);
     return u;
+}
+
+// The scene's lights for lighting.comp: positions camera-relative (computed in double), angles as cosines.
+// The first scene.lights.size() entries of shared::LightsUniforms (at most kMaxDemoLights: recordFrame
+// checks).
+std::vector<shared::GpuLight> makeGpuLights(const Scene& scene) {
+    std::vector<shared::GpuLight> out(scene.lights.size());
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const postfx::LocalLight l = toLocalLight(scene.lights[i]);
+        const bool spot = l.type == postfx::LightType::Spot;
+        const glm::vec3 relative(glm::dvec3(l.position) - glm::dvec3(scene.camera.position));
+        shared::GpuLight& g = out[i];
+        g.positionRadius = glm::vec4(relative, l.sourceRadius);
+        g.intensityRange = glm::vec4(glm::vec3(l.intensity), l.range);
+        g.directionCosOuter = glm::vec4(glm::vec3(l.direction), spot ? std::cos(l.outerConeAngle) : -2.0f);
+        g.cosInner = glm::vec4(spot ? std::cos(l.innerConeAngle) : -1.0f, 0.0f, 0.0f, 0.0f);
+    }
+    return out;
 }
 
 }  // namespace
@@ -95,6 +116,11 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     frame.camera = in.camera;
     frame.sun = in.sun;
     frame.ambient = in.ambient;
+    localLights.clear();
+    for (const Light& l : scene.lights)
+        localLights.push_back(toLocalLight(l));
+    frame.lights = localLights.data();
+    frame.lightCount = uint32_t(localLights.size());
     frame.shadowMap = in.shadowMap;
     frame.fog = in.fog;
     return frame;
@@ -141,6 +167,11 @@ postfx::FrameInfo Renderer::frameInputs(VkCommandBuffer cmd, const Scene& scene,
 
 bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                                  const postfx::ImageInput& fogOutput, std::string& error) {
+    if (scene.lights.size() > shared::kMaxDemoLights) {
+        error = "the scene has " + std::to_string(scene.lights.size()) + " lights, more than the limit of " +
+                std::to_string(shared::kMaxDemoLights);
+        return false;
+    }
     const ShadowFit fit = shadowFit(scene);
     const bool shadows = drawsShadows(scene, fit, frameIndex);
     shadowInfo.enabled = shadows;
@@ -154,6 +185,16 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     vkCmdUpdateBuffer(cmd, frameUniforms.buffer, 0, sizeof(u), &u);
     bufferBarrier(cmd, frameUniforms, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   kUniformStages, VK_ACCESS_UNIFORM_READ_BIT);
+    // Local lights (lighting pass only): the same, for the entries in use (none: nothing written).
+    if (!scene.lights.empty()) {
+        const std::vector<shared::GpuLight> lights = makeGpuLights(scene);
+        bufferBarrier(cmd, lightsUniforms, kCompute, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT);
+        vkCmdUpdateBuffer(cmd, lightsUniforms.buffer, 0, lights.size() * sizeof(shared::GpuLight),
+                          lights.data());
+        bufferBarrier(cmd, lightsUniforms, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      kCompute, VK_ACCESS_UNIFORM_READ_BIT);
+    }
 
     // Raster passes leave their attachments readable by compute shaders. They start by discarding
     // their attachments after the previous frame's COMPUTE_SHADER reads: the lighting pass and

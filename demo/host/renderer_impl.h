@@ -11,6 +11,7 @@
 #include <postfx/context.h>
 
 #include <array>
+#include <vector>
 
 namespace demo {
 
@@ -34,7 +35,10 @@ struct Renderer::Impl {
     RenderOptions options;
     VkExtent2D extent{0, 0};
 
-    GpuBuffer frameUniforms;  // shared::FrameUniforms, written with vkCmdUpdateBuffer each frame
+    GpuBuffer frameUniforms;   // shared::FrameUniforms, written with vkCmdUpdateBuffer each frame
+    GpuBuffer lightsUniforms;  // shared::LightsUniforms, written with vkCmdUpdateBuffer each frame
+    // The scene's lights as postfx reads them (FrameInfo::lights points here; rebuilt by frameInfo).
+    mutable std::vector<postfx::LocalLight> localLights;
     VkDescriptorSetLayout frameSetLayout = VK_NULL_HANDLE;
     VkDescriptorPool framePool = VK_NULL_HANDLE;
     VkDescriptorSet frameSet = VK_NULL_HANDLE;  // set 0 of the raster passes

@@ -5,6 +5,7 @@
 #include "scene/fog_json.h"
 #include "scene/json_read.h"
 #include "scene/json_text.h"
+#include "scene/lights_json.h"
 
 #include <glm/geometric.hpp>
 
@@ -137,7 +138,7 @@ private:
 
 // ---- scene -----------------------------------------------------------------------------------------
 
-constexpr const char* kTopKeys[] = {"camera", "sun", "ambient", "sky", "objects", "effects"};
+constexpr const char* kTopKeys[] = {"camera", "sun", "ambient", "sky", "objects", "lights", "effects"};
 constexpr const char* kCameraKeys[] = {"position", "look_at", "up", "fov_y_deg", "near", "far", "ev100"};
 constexpr const char* kSunKeys[] = {"direction", "illuminance", "shadows"};
 constexpr const char* kPlaneKeys[] = {"type", "point", "normal", "albedo"};
@@ -259,6 +260,7 @@ Scene readScene(const json& root) {
     for (std::size_t i = 0; i < objects.size(); ++i)
         scene.objects.push_back(readObject(objects[i], element("objects", i)));
 
+    if (const json* lights = find(root, "lights")) scene.lights = readLights(*lights, "lights");
     if (const json* effects = find(root, "effects")) readEffects(*effects, "effects", scene.fog);
     return scene;
 }
@@ -359,6 +361,7 @@ nlohmann::json sceneToJson(const Scene& scene) {
         }
     }
     j["objects"] = std::move(objects);
+    j["lights"] = lightsToJson(scene.lights);
     j["effects"] = effectsToJson(scene.fog);
     return j;
 }

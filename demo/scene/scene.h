@@ -2,6 +2,8 @@
 // Units: metres, lux (illuminance), cd/m² (radiance); directions in world space (right-handed, y up).
 #pragma once
 
+#include "scene/light.h"
+
 #include <postfx/fog.h>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
@@ -66,6 +68,9 @@ struct Scene {
     glm::vec3 ambient{0.0f};  // uniform incident radiance for the ambient term [cd/m²], [0, 1e7]
     glm::vec3 sky{0.0f};      // radiance of pixels with no geometry [cd/m²], [0, 1e7]
     std::vector<Object> objects;
+    // Local lights (`lights`, at most postfx::kMaxLocalLights): the demo's surface lighting adds them and
+    // passes them to postfx in FrameInfo::lights.
+    std::vector<Light> lights;
     // effects.fog: postfx's ray-marched fog (docs/effects/fog.md); disabled unless the file has it.
     postfx::FogSettings fog;
 };

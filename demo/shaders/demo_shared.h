@@ -13,9 +13,14 @@ using uint = uint32_t;
 using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
 using mat4 = glm::mat4;
+using glm::clamp;
+using glm::max;
+using glm::smoothstep;
 #define DEMO_CONST(type, name, value) inline constexpr type name = value
+#define DEMO_INLINE inline
 #else
 #define DEMO_CONST(type, name, value) const type name = value
+#define DEMO_INLINE
 #endif
 
 // Descriptor set 0 of the raster passes (G-buffer, shadow map): the frame uniforms only.
@@ -26,6 +31,7 @@ DEMO_CONST(uint, kBindingNormal, 2u);     // sampler2D, G-buffer world normal (x
 DEMO_CONST(uint, kBindingDepth, 3u);      // sampler2D, G-buffer depth (D32)
 DEMO_CONST(uint, kBindingShadowMap, 4u);  // sampler2DShadow, sun shadow map (standard Z)
 DEMO_CONST(uint, kBindingHdr, 5u);        // image2D rgba16f, output radiance
+DEMO_CONST(uint, kBindingLights, 6u);     // uniform LightsUniforms, the scene's local lights
 
 DEMO_CONST(uint, kLightingGroupSize, 8u);  // lighting workgroup is kLightingGroupSize² threads
 
@@ -46,10 +52,42 @@ struct FrameUniforms {
     vec4 ambient;         // rgb [cd/m²]
     vec4 sky;             // rgb [cd/m²]
     // x: G-buffer depth clear value (0 reversed Z, 1 standard); y: shadow map texel size in uv;
-    // z: shadow normal offset [m] (world size of one shadow texel); w: unused
+    // z: shadow normal offset [m] (world size of one shadow texel); w: number of local lights
     vec4 depthParams;
     uvec4 extent;  // xy: HDR image size [pixels]
 };
+
+// Local lights (scene `lights`, postfx::LocalLight), at most kMaxDemoLights (= postfx::kMaxLocalLights;
+// checked in renderer_frame.cpp). 256 · 64 bytes = 16 KiB, the smallest maxUniformBufferRange Vulkan allows.
+DEMO_CONST(uint, kMaxDemoLights, 256u);
+struct GpuLight {
+    vec4 positionRadius;     // xyz: camera-relative position [m]; w: source radius [m]
+    vec4 intensityRange;     // rgb: luminous intensity [cd]; w: range [m]
+    vec4 directionCosOuter;  // xyz: unit cone axis; w: cos(outer half angle) (point light: -2)
+    vec4 cosInner;           // x: cos(inner half angle) (point light: -1); yzw: unused
+};
+struct LightsUniforms {
+    GpuLight lights[kMaxDemoLights];  // the first FrameUniforms::depthParams.w are used
+};
+
+// The falloff of local lights, the one definition shared by the demo's surface lighting (lighting.comp)
+// and its tests; postfx's froxel fog uses the same model (docs/scene-format.md#lights). Illuminance at
+// distance d from a light of intensity I [cd] on a surface facing it: E = I · localLightFalloff(d, r, range)
+// · spotFactor(...): inverse square guarded by the source radius r, 1 / (d² + r²), times Unreal's window
+// clamp(1 - (d/range)⁴, 0, 1)², which reaches 0 at `range` smoothly.
+DEMO_INLINE float localLightFalloff(float d, float radius, float range) {
+    float x = d / range;  // d and range >= 0; x4 overflows to +inf far away, giving window 0
+    float x2 = x * x;
+    float window = clamp(1.0f - x2 * x2, 0.0f, 1.0f);
+    // d² + r² underflows for radii below about 1e-19 m: 1e-30 m² keeps the result finite.
+    return window * window / max(d * d + radius * radius, 1e-30f);
+}
+// Spot cone: smoothstep(cos outer, cos inner, cos angle), with cosAngle = dot(axis, light -> point);
+// a hard edge when inner == outer. Point lights pass cosOuter = -2, cosInner = -1 (always 1).
+DEMO_INLINE float spotFactor(float cosAngle, float cosOuter, float cosInner) {
+    if (cosInner <= cosOuter) return cosAngle >= cosOuter ? 1.0f : 0.0f;
+    return smoothstep(cosOuter, cosInner, cosAngle);
+}
 
 // Push constants of the G-buffer fragment shader, per draw.
 struct DrawPush {
@@ -79,10 +117,12 @@ struct TonemapPush {
 
 #ifdef __cplusplus
 static_assert(sizeof(FrameUniforms) == 3 * 64 + 7 * 16, "FrameUniforms must match std140");
+static_assert(sizeof(LightsUniforms) == 16384, "LightsUniforms must match std140 and fit 16 KiB");
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match std430 push constants");
 static_assert(sizeof(TonemapPush) == 32, "TonemapPush must match std430 push constants");
 }  // namespace demo::shared
 #endif
 
 #undef DEMO_CONST
+#undef DEMO_INLINE
 #endif  // DEMO_SHADERS_DEMO_SHARED_H

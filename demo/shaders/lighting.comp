@@ -1,5 +1,7 @@
-// Deferred sun + ambient lighting into the HDR radiance image, per RGB channel:
-//   L = albedo/π · E · max(0, n·l) · visibility + albedo · ambient;  no geometry: L = sky.
+// Deferred sun + ambient + local-light lighting into the HDR radiance image, per RGB channel:
+//   L = albedo/π · (E · max(0, n·l) · visibility + Σ_lights I · falloff · spot · max(0, n·l_i))
+//       + albedo · ambient;  no geometry: L = sky.
+// Local lights cast no shadows; falloff and spot factor are demo_shared.h's (localLightFalloff, spotFactor).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "demo_shared.h"
@@ -14,6 +16,9 @@ layout(set = 0, binding = kBindingNormal) uniform sampler2D gNormal;
 layout(set = 0, binding = kBindingDepth) uniform sampler2D gDepth;
 layout(set = 0, binding = kBindingShadowMap) uniform sampler2DShadow shadowMap;
 layout(set = 0, binding = kBindingHdr, rgba16f) uniform writeonly image2D hdr;
+layout(set = 0, binding = kBindingLights, std140) uniform LightsBlock {
+    LightsUniforms lightList;
+};
 
 #include "shadow.glsl"
 
@@ -29,15 +34,30 @@ void main() {
         // Pixel centre -> NDC (Vulkan: y down, matching image rows) -> camera-relative world.
         vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame.extent.xy) * 2.0 - 1.0;
         vec4 h = frame.invViewProj * vec4(ndc, depth, 1.0);
-        vec3 world = h.xyz / h.w + frame.cameraPosition.xyz;
+        vec3 relative = h.xyz / h.w;  // camera-relative, as the lights' positions
+        vec3 world = relative + frame.cameraPosition.xyz;
 
         vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
         vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
         float nDotL = max(dot(n, frame.toSun.xyz), 0.0);
         float visibility = 1.0;
         if (frame.toSun.w > 0.5 && nDotL > 0.0) visibility = sunVisibility(world, n, nDotL);
-        radiance =
-            albedo / kPi * frame.sunIlluminance.rgb * (nDotL * visibility) + albedo * frame.ambient.rgb;
+        vec3 irradiance = frame.sunIlluminance.rgb * (nDotL * visibility);
+        uint lightCount = uint(frame.depthParams.w);
+        for (uint i = 0u; i < lightCount; ++i) {
+            GpuLight light = lightList.lights[i];
+            vec3 toLight = light.positionRadius.xyz - relative;
+            float d = length(toLight);
+            vec3 l = d > 0.0 ? toLight / d : n;
+            float nDotLi = max(dot(n, l), 0.0);
+            if (nDotLi <= 0.0) continue;
+            float spot =
+                spotFactor(dot(light.directionCosOuter.xyz, -l), light.directionCosOuter.w, light.cosInner.x);
+            float falloff = localLightFalloff(d, light.positionRadius.w, light.intensityRange.w);
+            irradiance += light.intensityRange.rgb * (falloff * spot * nDotLi);
+        }
+        irradiance = min(irradiance, vec3(1e30));  // finite (I · falloff may overflow): albedo 0 gives 0
+        radiance = albedo / kPi * irradiance + albedo * frame.ambient.rgb;
     }
     imageStore(hdr, pixel, vec4(min(radiance, vec3(kHalfMax)), 1.0));
 }

@@ -5,6 +5,7 @@
 #include "host/vulkan_host.h"
 #include "window/fly_camera.h"
 #include "window/fog_controls.h"
+#include "window/light_controls.h"
 #include "window/swapchain.h"
 #include "window/tonemap_pass.h"
 #include "window/ui_overlay.h"
@@ -71,7 +72,8 @@ private:
     VkExtent2D renderExtent_{0, 0};
     TonemapPass tonemap_;
     std::unique_ptr<UiOverlay> ui_;
-    FogControls fogControls_;  // edits scene_.fog and scene_.sun from the overlay's panel
+    FogControls fogControls_;      // edits scene_.fog and scene_.sun from the overlay's panel
+    LightControls lightControls_;  // edits scene_.lights
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers_{};
     std::array<VkFence, kFramesInFlight> fences_{};              // signalled when the slot's frame completed
     std::array<VkSemaphore, kFramesInFlight> imageAvailable_{};  // acquire -> the slot's submission
@@ -283,7 +285,10 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         stats_.fogQuality = fogQualityText();
         // The fog controls edit scene_ before this frame records it (Renderer::recordFrame takes fog, sun
         // and camera from scene_ every frame); their values are always valid for postfx.
-        ui_->build(stats_, [this] { fogControls_.build(scene_); });
+        ui_->build(stats_, [this] {
+            fogControls_.build(scene_);
+            lightControls_.build(scene_);
+        });
     }
 
     VkCommandBuffer cmd = commandBuffers_[slot];

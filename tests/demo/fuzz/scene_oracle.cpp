@@ -4,11 +4,14 @@
 #include "host/camera_math.h"
 #include "host/scene_mesh.h"
 
+#include "shaders/demo_shared.h"
+
 #include <glm/ext/matrix_transform.hpp>
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace demo::fuzz {
 namespace {
@@ -72,6 +75,11 @@ std::string frameProblem(const Scene& scene, VkExtent2D extent, bool reversedZ, 
         frame.shadowMap.depthBias = shadowDepthBias(fit);
     }
     frame.fog = scene.fog;
+    std::vector<postfx::LocalLight> lights;  // as renderer_frame.cpp passes them
+    for (const Light& l : scene.lights)
+        lights.push_back(toLocalLight(l));
+    frame.lights = lights.data();
+    frame.lightCount = uint32_t(lights.size());
     postfx::ContextCreateInfo info;
     info.maxExtent = {16384, 16384};
     if (postfx::Status s = postfx::core::checkSharedInputs(frame, info); !s)
@@ -100,6 +108,18 @@ std::string renderProblem(const Scene& scene) {
         if (!(fit.texelWorldSize >= 0.0f) || !std::isfinite(fit.texelWorldSize) || !(bias >= 0.0f) ||
             !std::isfinite(bias))
             return "shadow fit: texel size or depth bias not finite";
+    }
+
+    // Local lights as lighting.comp evaluates them: at most kMaxDemoLights, the falloff finite at the
+    // light itself and the spot cosines finite.
+    if (scene.lights.size() > shared::kMaxDemoLights) return "lights: more than kMaxDemoLights";
+    for (const Light& light : scene.lights) {
+        const postfx::LocalLight l = toLocalLight(light);
+        const glm::vec3 relative(glm::dvec3(l.position) - glm::dvec3(scene.camera.position));
+        if (!postfx::core::allFinite(relative)) return "lights: a camera-relative position is not finite";
+        const float atLight = shared::localLightFalloff(0.0f, l.sourceRadius, l.range);
+        if (!std::isfinite(atLight) || !(atLight >= 0.0f) || !std::isfinite(std::cos(l.outerConeAngle)))
+            return "lights: the falloff or the cone is not finite";
     }
 
     const ShadowFit fit = fitShadowMap(scene, 2048);

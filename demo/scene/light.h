@@ -1,0 +1,28 @@
+// Local lights of scene files (the top-level `lights` array, docs/scene-format.md#lights) and their
+// conversion to postfx::LocalLight, which the demo passes in FrameInfo::lights.
+#pragma once
+
+#include <postfx/inputs.h>
+#include <glm/glm.hpp>
+
+namespace demo {
+
+enum class LightKind { Point, Spot };
+
+// Units and ranges are those of postfx::LocalLight; angles are kept in degrees as written in the file,
+// so that a scene round-trips exactly.
+struct Light {
+    LightKind kind = LightKind::Point;
+    glm::vec3 position{0.0f};                // [m], each in [-1e7, 1e7]
+    glm::vec3 direction{0.0f, -1.0f, 0.0f};  // spot only: the cone's axis, unit (normalised on load)
+    glm::vec3 intensity{0.0f};               // luminous intensity per RGB channel [cd], each in [0, 1e9]
+    float radius = 0.05f;                    // source radius guarding the inverse square [m], (0, range]
+    float range = 100.0f;                    // light ignored beyond it [m], (0, 1e9]
+    float innerAngleDeg = 0.0f;              // spot: full intensity inside this half angle [deg], [0, outer]
+    float outerAngleDeg = 45.0f;             // spot: dark outside this half angle [deg], [0, 89.9]
+};
+
+// The postfx description of `light` (angles in radians).
+postfx::LocalLight toLocalLight(const Light& light);
+
+}  // namespace demo
