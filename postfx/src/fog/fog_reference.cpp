@@ -27,7 +27,9 @@ using core::allFinite;
 using core::invalid;
 using detail::checkCount;
 using detail::clipToView;
+using detail::fillMediumModel;
 using detail::forEachRow;
+using detail::MediumModel;
 
 Status validate(const FogInputs& in) {
     if (in.width == 0 || in.height == 0)
@@ -69,59 +71,17 @@ Status validate(const FogInputs& in) {
 }
 
 // Everything the march reads, converted to double once.
-struct Model {
-    glm::dmat4 clipToView;
-    double farDepth;  // depth value of "no geometry": 0 reversed Z, 1 standard Z
-    uint32_t width, height, steps;
-    dvec3 camera;
-    double density, heightFalloff, baseHeight, maxDistance;
-    dvec3 albedo, sunIlluminance, toSun, ambient;
-    double g;
-    bool selfShadow, analyticTail;
+struct Model : MediumModel {
     bool skipEmptySpace;
     double mediumTop;  // above base height: fog::fogMediumTop
-    bool noise;
-    std::span<const float> noiseTexels;
-    uint32_t noiseSize;
-    dvec3 noiseOrigin;  // noise coordinate of the camera, wrapped to [0, 1)
-    double noiseScale, noiseThreshold, noiseMultiplier;
-    detail::ShadowMap shadow;
 };
 
 Model makeModel(const FogInputs& in) {
     const FogSettings& s = in.settings;
     Model m;
-    m.clipToView = clipToView(in.camera);
-    m.farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
-    m.width = in.width;
-    m.height = in.height;
-    m.steps = in.stepsPerPixel;
-    m.camera = in.camera.position;
-    m.density = s.density;
-    m.heightFalloff = s.heightFalloff;
-    m.baseHeight = s.baseHeight;
-    m.maxDistance = s.maxDistance;
-    m.albedo = dvec3(s.albedo);
-    m.sunIlluminance = dvec3(in.sun.illuminance);
-    m.toSun = glm::normalize(dvec3(in.sun.toSun));
-    m.ambient = dvec3(in.ambient);
-    m.g = s.anisotropy;  // clamped by henyeyGreenstein
-    m.selfShadow = s.selfShadow;
+    fillMediumModel(m, in, s, s.shadowKernel);
     m.skipEmptySpace = s.skipEmptySpace;
     m.mediumTop = fog::fogMediumTop(s, s.noise.enabled);
-    m.analyticTail = s.analyticTail;
-    m.noise = s.noise.enabled;
-    m.noiseTexels = in.noise;
-    m.noiseSize = in.noiseSize;
-    m.noiseScale = 0.01 * double(s.noise.tiling);
-    // u = (x_world - wind·time) · 0.01 · tiling with x_world = camera + x: the camera's part, wrapped.
-    const dvec3 origin = (m.camera - dvec3(s.noise.wind) * in.timeSeconds) * m.noiseScale;
-    m.noiseOrigin = origin - glm::floor(origin);
-    m.noiseThreshold = s.noise.threshold;
-    m.noiseMultiplier = s.noise.multiplier;
-    m.shadow = {in.shadowDepth,       in.shadowWidth,     in.shadowHeight,
-                in.shadowWorldToClip, in.shadowReversedZ, double(in.shadowDepthBias),
-                s.shadowKernel};
     return m;
 }
 

@@ -2,8 +2,11 @@
 // froxel fog's (froxel_fog/froxel_reference.cpp): pixel rays, the composite, rows spread over threads.
 #pragma once
 
+#include <postfx/fog.h>
 #include <postfx/inputs.h>
+
 #include <postfx/result.h>
+#include "fog/reference_model.h"
 
 #include <glm/glm.hpp>
 
@@ -11,6 +14,7 @@
 #include <atomic>
 #include <cstdint>
 #include <exception>
+#include <span>
 #include <thread>
 #include <vector>
 
@@ -35,6 +39,57 @@ PixelRay pixelRay(const glm::dmat4& clipToView, double farDepth, uint32_t width,
 // Composite: out.rgb = color.rgb · T + L, out.a = color.a, as the GPU does it (shaders/fog/composite.glsl):
 // ±Inf color counts as ±FLT_MAX, the result is clamped to ±FLT_MAX, a NaN channel stays NaN.
 void composite(const glm::dvec3& L, double T, const float* color, float* out);
+
+// What both references' marches read of the shared medium and the frame, converted to double once.
+struct MediumModel {
+    glm::dmat4 clipToView;
+    double farDepth;  // depth value of "no geometry": 0 reversed Z, 1 standard Z
+    uint32_t width, height, steps;
+    glm::dvec3 camera;
+    double density, heightFalloff, baseHeight, maxDistance;
+    glm::dvec3 albedo, sunIlluminance, toSun, ambient;
+    double g;
+    bool selfShadow, analyticTail, noise;
+    std::span<const float> noiseTexels;
+    uint32_t noiseSize;
+    glm::dvec3 noiseOrigin;  // noise coordinate of the camera, wrapped to [0, 1)
+    double noiseScale, noiseThreshold, noiseMultiplier;
+    ShadowMap shadow;
+};
+
+// Fills `m` from a reference's inputs (FogInputs, FroxelFogInputs: the same field names) and its medium.
+template <class Inputs>
+void fillMediumModel(MediumModel& m, const Inputs& in, const FogMedium& s, uint32_t shadowKernel) {
+    m.clipToView = clipToView(in.camera);
+    m.farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
+    m.width = in.width;
+    m.height = in.height;
+    m.steps = in.stepsPerPixel;
+    m.camera = glm::dvec3(in.camera.position);
+    m.density = s.density;
+    m.heightFalloff = s.heightFalloff;
+    m.baseHeight = s.baseHeight;
+    m.maxDistance = s.maxDistance;
+    m.albedo = glm::dvec3(s.albedo);
+    m.sunIlluminance = glm::dvec3(in.sun.illuminance);
+    m.toSun = glm::normalize(glm::dvec3(in.sun.toSun));
+    m.ambient = glm::dvec3(in.ambient);
+    m.g = s.anisotropy;  // clamped by henyeyGreenstein
+    m.selfShadow = s.selfShadow;
+    m.analyticTail = s.analyticTail;
+    m.noise = s.noise.enabled;
+    m.noiseTexels = in.noise;
+    m.noiseSize = in.noiseSize;
+    m.noiseScale = 0.01 * double(s.noise.tiling);
+    // u = (x_world - wind·time) · 0.01 · tiling with x_world = camera + x: the camera's part, wrapped.
+    const glm::dvec3 origin = (m.camera - glm::dvec3(s.noise.wind) * in.timeSeconds) * m.noiseScale;
+    m.noiseOrigin = origin - glm::floor(origin);
+    m.noiseThreshold = s.noise.threshold;
+    m.noiseMultiplier = s.noise.multiplier;
+    m.shadow = {in.shadowDepth,       in.shadowWidth,     in.shadowHeight,
+                in.shadowWorldToClip, in.shadowReversedZ, double(in.shadowDepthBias),
+                shadowKernel};
+}
 
 // Runs `rowTask(j)` for rows 0..rows-1 on `threads` threads (0: all hardware threads). Rows are
 // independent, so the result does not depend on how they are shared out.

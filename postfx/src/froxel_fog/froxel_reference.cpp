@@ -80,20 +80,7 @@ double smoothstep(double e0, double e1, double x) {
 }
 
 // Everything the march reads, converted to double once.
-struct Model {
-    glm::dmat4 clipToView;
-    double farDepth;
-    uint32_t width, height, steps;
-    dvec3 camera;
-    double density, heightFalloff, baseHeight, maxDistance;
-    dvec3 albedo, sunIlluminance, toSun, ambient;
-    double g;
-    bool selfShadow, analyticTail, noise;
-    std::span<const float> noiseTexels;
-    uint32_t noiseSize;
-    dvec3 noiseOrigin;
-    double noiseScale, noiseThreshold, noiseMultiplier;
-    detail::ShadowMap shadow;
+struct Model : detail::MediumModel {
     std::vector<FogVolume> volumes;  // centres made camera-relative
     std::vector<LocalLight> lights;  // positions made camera-relative
 };
@@ -101,39 +88,8 @@ struct Model {
 Model makeModel(const FroxelFogInputs& in) {
     const FroxelFogSettings& s = in.settings;
     Model m;
-    m.clipToView = detail::clipToView(in.camera);
-    m.farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
-    m.width = in.width;
-    m.height = in.height;
-    m.steps = in.stepsPerPixel;
-    m.camera = in.camera.position;
-    m.density = s.density;
-    m.heightFalloff = s.heightFalloff;
-    m.baseHeight = s.baseHeight;
-    m.maxDistance = s.maxDistance;
-    m.albedo = dvec3(s.albedo);
-    m.sunIlluminance = dvec3(in.sun.illuminance);
-    m.toSun = glm::normalize(dvec3(in.sun.toSun));
-    m.ambient = dvec3(in.ambient);
-    m.g = s.anisotropy;  // clamped by henyeyGreenstein
-    m.selfShadow = s.selfShadow;
-    m.analyticTail = s.analyticTail;
     // An empty shared medium (fog::fogMediumEmpty) has no extinction: the volumes may still have some.
-    m.noise = s.noise.enabled;
-    m.noiseTexels = in.noise;
-    m.noiseSize = in.noiseSize;
-    m.noiseScale = 0.01 * double(s.noise.tiling);
-    const dvec3 origin = (m.camera - dvec3(s.noise.wind) * in.timeSeconds) * m.noiseScale;
-    m.noiseOrigin = origin - glm::floor(origin);
-    m.noiseThreshold = s.noise.threshold;
-    m.noiseMultiplier = s.noise.multiplier;
-    m.shadow = {in.shadowDepth,
-                in.shadowWidth,
-                in.shadowHeight,
-                in.shadowWorldToClip,
-                in.shadowReversedZ,
-                double(in.shadowDepthBias),
-                1};
+    detail::fillMediumModel(m, in, s, 1);  // the froxel fog filters no shadow kernel
     for (uint32_t i = 0; i < s.volumeCount; ++i) {
         FogVolume v = s.volumes[i];
         if (v.density <= 0.0f) continue;
