@@ -125,8 +125,13 @@ ShadowFit fitShadowMap(const Scene& scene, uint32_t mapSize) {
     }
     // orthoRH_ZO maps view z = -near to depth 0 and z = -far to depth 1.
     const glm::mat4 proj = glm::orthoRH_ZO(lsLo.x, lsHi.x, lsLo.y, lsHi.y, -lsHi.z, -lsLo.z);
-    fit.valid = true;
     fit.viewProj = proj * view;
+    // A fit float cannot hold (a grazing sun over a scene 1e7 m deep, found by the scene fuzzer) is not
+    // valid: the scene then renders without a shadow map, as with shadows off.
+    fit.valid = true;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            fit.valid = fit.valid && std::isfinite(fit.viewProj[c][r]);
     fit.texelWorldSize = std::max(lsHi.x - lsLo.x, lsHi.y - lsLo.y) / float(mapSize);
     return fit;
 }

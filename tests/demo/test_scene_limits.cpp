@@ -2,6 +2,7 @@
 // tests/demo/fuzz/scene_oracle.h, on the committed scenes, the largest allowed scene and the fuzzer's
 // regression inputs), the oracle itself catches what the limits keep out, and the object count is capped.
 #include "fuzz/scene_oracle.h"
+#include "host/camera_math.h"
 #include "host/scene_mesh.h"
 #include "scene/json_text.h"
 #include "scene/scene.h"
@@ -119,8 +120,14 @@ TEST(DemoSceneLimits, OracleCatchesWhatTheLimitsKeepOut) {
         change(s);
         return demo::fuzz::renderProblem(s);
     };
-    EXPECT_NE(problem([](demo::Scene& s) { s.objects[0].radius = 3e38f; }), "");
-    EXPECT_NE(problem([](demo::Scene& s) { s.objects[0].position.x = 3e38f; }), "");
+    // A shadow fit float cannot hold is not valid: the renderer then draws no shadow map (camera_math).
+    for (auto change : {+[](demo::Scene& s) { s.objects[0].radius = 3e38f; },
+                        +[](demo::Scene& s) { s.objects[0].position.x = 3e38f; }}) {
+        demo::Scene s = good;
+        change(s);
+        EXPECT_FALSE(demo::fitShadowMap(s, 2048).valid);
+        EXPECT_EQ(demo::fuzz::renderProblem(s), "");
+    }
     EXPECT_NE(problem([](demo::Scene& s) { s.camera.position.x = 3e38f; }), "");
     EXPECT_NE(problem([](demo::Scene& s) { s.camera.up = {0.0f, 1e-45f, 0.0f}; }), "");
     EXPECT_NE(problem([](demo::Scene& s) {
