@@ -9,6 +9,7 @@
 #include <postfx/export.h>
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>
+#include <postfx/froxel_fog.h>
 #include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
@@ -87,7 +88,8 @@ struct FrameInfo {
 
     // Effect settings. Each effect is off by default; the order they composite in is fixed
     // (docs/architecture.md, "Composite order").
-    FogSettings fog;  // ray-marched fog (docs/effects/fog.md)
+    FogSettings fog;              // ray-marched fog (docs/effects/fog.md)
+    FroxelFogSettings froxelFog;  // froxel fog (docs/effects/froxel-fog.md); not together with `fog`
 };
 
 // GPU time of one postfx pass in one frame.
