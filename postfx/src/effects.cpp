@@ -4,12 +4,15 @@
 #include "effects.h"
 
 #include "fog/fog_effect.h"
+#include "froxel_fog/froxel_effect.h"
 
 namespace postfx {
 
 std::vector<std::unique_ptr<core::Effect>> makeEffects(const core::Gpu& gpu) {
     std::vector<std::unique_ptr<core::Effect>> effects;
     effects.push_back(std::make_unique<fog::FogEffect>(gpu));  // ray-marched fog (docs/effects/fog.md)
+    // froxel fog (docs/effects/froxel-fog.md); never in one frame with the ray-marched fog
+    effects.push_back(std::make_unique<froxel_fog::FroxelFogEffect>(gpu));
     return effects;
 }
 

@@ -59,13 +59,7 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
     }
 
     // Analytic tail: height fog from max distance to the surface (or infinity), no noise, no shadow map.
-    if (fogFlag(kFogFlagAnalyticTail) && surfaceDistance > maxDistance && !cutOff) {
-        float y0 = fog.heights.x + dir.y * maxDistance;
-        float opticalDepth = heightFogOpticalDepth(y0, dir.y, surfaceDistance - maxDistance);
-        vec3 light = sunPhase * sunTransmittance(y0) + ambient;
-        inScattered += integrateStep(transmittance, albedo * light, opticalDepth);
-        transmittance *= exp(-opticalDepth);
-    }
+    if (!cutOff) addAnalyticTail(dir, surfaceDistance, sunPhase, inScattered, transmittance);
     return FogScatter(inScattered, transmittance);
 }
 

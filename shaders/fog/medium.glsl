@@ -104,4 +104,18 @@ float heightFogOpticalDepth(float heightAboveBase0, float dirY, float len) {
     return opticalDepth;
 }
 
+// The analytic tail (docs/effects/fog.md, "Analytic tail"): the height fog without noise or shadow map
+// from max distance to the surface (or to infinity) behind (L, T), when the flag is on and the surface is
+// beyond max distance. `sunPhase`: the sun's illuminance times the phase toward the camera along `dir`.
+void addAnalyticTail(vec3 dir, float surfaceDistance, vec3 sunPhase, inout vec3 inScattered,
+                     inout float transmittance) {
+    float maxDistance = fog.medium.w;
+    if (!fogFlag(kFogFlagAnalyticTail) || !(surfaceDistance > maxDistance)) return;
+    float y0 = fog.heights.x + dir.y * maxDistance;
+    float opticalDepth = heightFogOpticalDepth(y0, dir.y, surfaceDistance - maxDistance);
+    vec3 light = sunPhase * sunTransmittance(y0) + fog.ambient.rgb;
+    inScattered += integrateStep(transmittance, fog.albedo.rgb * light, opticalDepth);
+    transmittance *= exp(-opticalDepth);
+}
+
 #endif

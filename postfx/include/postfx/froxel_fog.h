@@ -1,6 +1,6 @@
-// Froxel volumetric fog: settings (docs/effects/froxel-fog.md). The GPU effect is not there yet: these
-// settings, their checks, the slice distribution and the CPU reference (postfx/reference.h) are; the
-// settings are not yet part of FrameInfo.
+// Froxel volumetric fog: settings (docs/effects/froxel-fog.md), FrameInfo::froxelFog. The medium and its
+// light are evaluated once per froxel of a camera-aligned grid, integrated front to back and applied per
+// pixel; the CPU reference is reference::renderFroxelFog (postfx/reference.h).
 //
 // Every setting: unit, default, valid range, checked by validateFroxelFogSettings with an error naming
 // the field by its scene-file key ("froxel_fog.grid[2]: 0 is outside [1, 512]").
@@ -64,11 +64,19 @@ struct FroxelFogSettings : FogMedium {
 // the noise's when it is enabled, every volume's); InvalidArgument naming the first bad field.
 POSTFX_API Status validateFroxelFogSettings(const FroxelFogSettings& settings);
 
-// View distance of the slice boundary at z01 ∈ [0, 1] (0: the near plane, 1: far = max_distance) [m]:
-// Power: near + (far - near)·z01^k; Log: near·(far/near)^z01. z01 is clamped to [0, 1]; near must be in
-// (0, far) (otherwise near is returned).
+// Distance along the view ray of the slice boundary at z01 ∈ [0, 1] (0: the near plane, 1: far =
+// max_distance) [m]: Power: near + (far - near)·z01^k; Log: near·(far/near)^z01. z01 is clamped to [0, 1];
+// near must be in (0, far) (otherwise near is returned).
 POSTFX_API double froxelSliceDepth(const FroxelFogSettings& settings, double nearPlane, double z01);
-// Its inverse: z01 ∈ [0, 1] of view distance `depth`, clamped to [near, far].
+// Its inverse: z01 ∈ [0, 1] of distance `depth` along the ray, clamped to [near, far].
 POSTFX_API double froxelSliceCoordinate(const FroxelFogSettings& settings, double nearPlane, double depth);
+// The grid's froxels along x, y and depth for a color image of width × height [px]: settings.grid, or
+// with tileSizePx > 0, x and y = ceil(extent / tileSizePx) (each at most 512). The froxels always span
+// the image exactly.
+POSTFX_API UVec3 froxelGridSize(const FroxelFogSettings& settings, uint32_t width, uint32_t height);
+
+// The froxel fog's generated noise texture (as kFogNoiseTexture, the shared medium's noise), for
+// Context::imageView and Context::recordImageReadback: held while froxel fog with generated noise runs.
+inline constexpr ResourceName kFroxelFogNoiseTexture{"froxel_fog.noise"};
 
 }  // namespace postfx

@@ -3,6 +3,7 @@
 #include "core/checks.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
+#include "fog/medium_noise.h"
 #include "postfx_objects_spirv.h"
 
 namespace postfx::fog {
@@ -40,33 +41,18 @@ const core::ComputePipelineDesc kUpsample[2] = {
 const core::ComputePipelineDesc kNoiseGenerate{"fog.noise", spirv::fog_noise_generate_comp, kNoiseBindings,
                                                sizeof(gpu::NoisePush)};
 
-constexpr VkFormat kNoiseFormat = VK_FORMAT_R8_UNORM;
-
 uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kFogGroupSize - 1) / gpu::kFogGroupSize;
 }
 
 }  // namespace
 
-FogEffect::FogEffect(const core::Gpu& gpu) {
-    // The generated noise is written as a storage image, sampled with linear filtering (the march's
-    // trilinear reads) and copied from (read-back).
-    VkFormatProperties props{};
-    gpu.fn.vkGetPhysicalDeviceFormatProperties(gpu.physicalDevice, kNoiseFormat, &props);
-    const VkFormatFeatureFlags needed =
-        VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
-        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
-    noiseFormatSupported_ = (props.optimalTilingFeatures & needed) == needed;
-}
+FogEffect::FogEffect(const core::Gpu& gpu) : noiseFormatSupported_(noiseFormatSupported(gpu)) {}
 
 Status FogEffect::validate(const FrameInfo& frame) const {
     if (!frame.fog.enabled) return Status::success();
     if (Status s = validateSettings(frame.fog); !s) return s;
-    const FogNoiseSettings& noise = frame.fog.noise;
-    if (noise.enabled && !noise.hostTexture && !noiseFormatSupported_)
-        return {Result::Unsupported,
-                "fog.noise: the device cannot use VK_FORMAT_R8_UNORM as a storage image, linearly filtered "
-                "sampled image and transfer source (give fog.noise.hostTexture instead)"};
+    if (Status s = checkNoiseSupported(frame.fog.noise, noiseFormatSupported_, "fog"); !s) return s;
     return Status::success();
 }
 
@@ -105,31 +91,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const glm::uvec2 march = fogMarchExtent(full.x, full.y, frame.fog.resolutionScale);
     const bool reduced = march != full;
 
-    // The noise: the generated texture (persistent: regenerated only when its size or seed changes), the
-    // host's, or a 1-texel stand-in bound when noise is off (never sampled: a flag skips it).
-    core::ImageRef noiseImage;
-    if (noise.enabled && !noise.hostTexture) {
-        core::ImageDesc desc;
-        desc.type = VK_IMAGE_TYPE_3D;
-        desc.format = kNoiseFormat;
-        desc.extent = {noise.textureSize, noise.textureSize, noise.textureSize};
-        desc.usage =
-            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        noiseImage = b.persistentImage(kNoise, desc, (uint64_t(noise.textureSize) << 32) | noise.seed);
-        const uint32_t groups = noise.textureSize / gpu::kNoiseGroupSize;  // a power of two >= 16
-        const gpu::NoisePush push{glm::uvec4(noise.textureSize, noise.seed, 0u, 0u)};
-        b.pass(kNoiseGenerate, groups, groups, groups)
-            .bind(gpu::kNoiseBindingTexture, noiseImage, Use::StorageWrite)
-            .push(&push, sizeof push);
-    } else if (noise.enabled) {
-        noiseImage = b.external("host.noise", noise.hostTexture, noise.hostTextureLayout);
-    } else {
-        core::ImageDesc one;
-        one.type = VK_IMAGE_TYPE_3D;
-        one.format = kNoiseFormat;
-        one.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
-        noiseImage = b.transientImage(kNoNoise, one);
-    }
+    const core::ImageRef noiseImage = declareNoise(b, noise, {kNoise, kNoNoise, kNoiseGenerate});
     core::ImageRef scatter;
     if (reduced) {
         core::ImageDesc desc;

@@ -14,9 +14,8 @@ glm::dmat4 rotationOnly(const glm::mat4& view) {
     return r;
 }
 
-gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth, bool noiseEnabled,
-                               bool shadowMapEnabled) {
-    const FogSettings& s = frame.fog;
+gpu::FogUniforms buildMediumUniforms(const FogMedium& s, const FrameInfo& frame, const DepthConvention& depth,
+                                     bool noiseEnabled, bool shadowMapEnabled) {
     const glm::dvec3 camera = frame.camera.position;
     gpu::FogUniforms u{};
     u.clipToView =
@@ -28,7 +27,9 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
     u.sunIlluminance = glm::vec4(frame.sun.illuminance, 0.0f);
     u.ambient = glm::vec4(frame.ambient, 0.0f);
     u.albedo = glm::vec4(s.albedo, 0.0f);
-    u.medium = glm::vec4(s.density, s.heightFalloff, clampedAnisotropy(s.anisotropy), s.maxDistance);
+    // An empty medium (fogMediumEmpty) has no extinction anywhere, the analytic tail's included.
+    const float density = fogMediumEmpty(s, noiseEnabled) ? 0.0f : s.density;
+    u.medium = glm::vec4(density, s.heightFalloff, clampedAnisotropy(s.anisotropy), s.maxDistance);
     u.heights =
         glm::vec4(float(camera.y - double(s.baseHeight)), float(fogMediumTop(s, noiseEnabled)), 0.0f, 0.0f);
 
@@ -38,23 +39,34 @@ gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& de
     u.noise = glm::vec4(glm::vec3(wrapped), float(scale));
     u.noiseRemap = glm::vec4(s.noise.threshold, s.noise.multiplier, 0.0f, 0.0f);
 
-    u.shadow = glm::vec4(frame.shadowMap.depthBias, float((s.shadowKernel - 1) / 2), 0.0f, 0.0f);
+    u.shadow = glm::vec4(frame.shadowMap.depthBias, 0.0f, 0.0f, 0.0f);  // a 1×1 kernel
     const float noGeometryDepth = depth.reversedZ ? 0.0f : 1.0f;
-    u.march = glm::vec4(s.transmittanceCutoff, noGeometryDepth, 0.0f, 0.0f);
-    u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, s.steps,
+    u.march = glm::vec4(0.0f, noGeometryDepth, 0.0f, 0.0f);
+    u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u,
                           uint32_t(frame.frameIndex & 0xffffffffu));
-    u.scatterExtent = glm::uvec4(
-        fogMarchExtent(frame.color.extent.width, frame.color.extent.height, s.resolutionScale), 0u, 0u);
+    u.scatterExtent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u, 0u);
     uint32_t flags = 0;
-    if (s.jitter) flags |= gpu::kFogFlagJitter;
     if (noiseEnabled) flags |= gpu::kFogFlagNoise;
     if (shadowMapEnabled) flags |= gpu::kFogFlagShadowMap;
     if (shadowMapEnabled && frame.shadowMap.reversedZ) flags |= gpu::kFogFlagShadowReversedZ;
     if (s.selfShadow) flags |= gpu::kFogFlagSelfShadow;
     if (s.analyticTail) flags |= gpu::kFogFlagAnalyticTail;
     if (depth.reversedZ) flags |= gpu::kFogFlagDepthReversedZ;
-    if (s.skipEmptySpace) flags |= gpu::kFogFlagSkipEmptySpace;
     u.flags = glm::uvec4(flags, 0u, 0u, 0u);
+    return u;
+}
+
+gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth, bool noiseEnabled,
+                               bool shadowMapEnabled) {
+    const FogSettings& s = frame.fog;
+    gpu::FogUniforms u = buildMediumUniforms(s, frame, depth, noiseEnabled, shadowMapEnabled);
+    u.shadow.y = float((s.shadowKernel - 1) / 2);
+    u.march.x = s.transmittanceCutoff;
+    u.extent.z = s.steps;
+    u.scatterExtent = glm::uvec4(
+        fogMarchExtent(frame.color.extent.width, frame.color.extent.height, s.resolutionScale), 0u, 0u);
+    if (s.jitter) u.flags.x |= gpu::kFogFlagJitter;
+    if (s.skipEmptySpace) u.flags.x |= gpu::kFogFlagSkipEmptySpace;
     return u;
 }
 

@@ -89,7 +89,8 @@ Model makeModel(const FroxelFogInputs& in) {
     const FroxelFogSettings& s = in.settings;
     Model m;
     // An empty shared medium (fog::fogMediumEmpty) has no extinction: the volumes may still have some.
-    detail::fillMediumModel(m, in, s, 1);  // the froxel fog filters no shadow kernel
+    detail::fillMediumModel(m, in, s, 1);                          // the froxel fog filters no shadow kernel
+    if (fog::fogMediumEmpty(s, s.noise.enabled)) m.density = 0.0;  // the tail's included
     for (uint32_t i = 0; i < s.volumeCount; ++i) {
         FogVolume v = s.volumes[i];
         if (v.density <= 0.0f) continue;

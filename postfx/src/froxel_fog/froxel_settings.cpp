@@ -67,6 +67,14 @@ double froxelSliceDepth(const FroxelFogSettings& s, double nearPlane, double z01
     return nearPlane + (far - nearPlane) * std::pow(z, double(s.depthExponent));
 }
 
+UVec3 froxelGridSize(const FroxelFogSettings& s, uint32_t width, uint32_t height) {
+    if (s.tileSizePx == 0) return s.grid;
+    auto tiles = [&](uint32_t size) {
+        return std::clamp((size + s.tileSizePx - 1) / s.tileSizePx, 1u, kMaxFroxelGridSize);
+    };
+    return {tiles(width), tiles(height), s.grid.z};
+}
+
 double froxelSliceCoordinate(const FroxelFogSettings& s, double nearPlane, double depth) {
     const double far = s.maxDistance;
     if (!(nearPlane > 0.0) || !(nearPlane < far)) return 0.0;

@@ -1,0 +1,50 @@
+#include "fog/medium_noise.h"
+
+#include "fog/fog_shared.h"
+
+namespace postfx::fog {
+
+bool noiseFormatSupported(const core::Gpu& gpu) {
+    VkFormatProperties props{};
+    gpu.fn.vkGetPhysicalDeviceFormatProperties(gpu.physicalDevice, kNoiseFormat, &props);
+    const VkFormatFeatureFlags needed =
+        VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT |
+        VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+    return (props.optimalTilingFeatures & needed) == needed;
+}
+
+Status checkNoiseSupported(const FogNoiseSettings& noise, bool formatSupported, const std::string& prefix) {
+    if (!noise.enabled || noise.hostTexture || formatSupported) return Status::success();
+    return {Result::Unsupported,
+            prefix +
+                ".noise: the device cannot use VK_FORMAT_R8_UNORM as a storage image, linearly filtered "
+                "sampled image and transfer source (give " +
+                prefix + ".noise.hostTexture instead)"};
+}
+
+core::ImageRef declareNoise(core::FrameBuilder& b, const FogNoiseSettings& noise, const NoiseDeclaration& d) {
+    if (noise.enabled && !noise.hostTexture) {
+        core::ImageDesc desc;
+        desc.type = VK_IMAGE_TYPE_3D;
+        desc.format = kNoiseFormat;
+        desc.extent = {noise.textureSize, noise.textureSize, noise.textureSize};
+        desc.usage =
+            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        const core::ImageRef image =
+            b.persistentImage(d.generated, desc, (uint64_t(noise.textureSize) << 32) | noise.seed);
+        const uint32_t groups = noise.textureSize / gpu::kNoiseGroupSize;  // a power of two >= 16
+        const gpu::NoisePush push{glm::uvec4(noise.textureSize, noise.seed, 0u, 0u)};
+        b.pass(d.generatePass, groups, groups, groups)
+            .bind(gpu::kNoiseBindingTexture, image, core::Use::StorageWrite)
+            .push(&push, sizeof push);
+        return image;
+    }
+    if (noise.enabled) return b.external("host.noise", noise.hostTexture, noise.hostTextureLayout);
+    core::ImageDesc one;
+    one.type = VK_IMAGE_TYPE_3D;
+    one.format = kNoiseFormat;
+    one.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+    return b.transientImage(d.none, one);
+}
+
+}  // namespace postfx::fog

@@ -1,0 +1,176 @@
+#include "froxel_fog/froxel_effect.h"
+
+#include "fog/fog_settings.h"
+#include "fog/medium_noise.h"
+#include "froxel_fog/froxel_uniforms.h"
+#include "postfx_objects_spirv.h"
+
+#include <memory>
+
+namespace postfx::froxel_fog {
+namespace {
+
+using core::HostImage;
+using core::SamplerKind;
+using core::Use;
+
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+
+// Each kernel's descriptor layout: exactly the bindings it reads or writes (froxel_shared.h).
+constexpr core::Binding kColorIn{gpu::kFroxelBindingColorIn, kStorage};
+constexpr core::Binding kColorOut{gpu::kFroxelBindingColorOut, kStorage};
+constexpr core::Binding kDepth{gpu::kFroxelBindingDepth, kSampled};
+constexpr core::Binding kShadowMap{gpu::kFroxelBindingShadowMap, kSampled};
+constexpr core::Binding kNoiseTexture{gpu::kFroxelBindingNoise, kSampled};
+constexpr core::Binding kUniformBuffer{gpu::kFroxelBindingUniforms, kUniform};
+constexpr core::Binding kLightBuffer{gpu::kFroxelBindingLights, kUniform};
+constexpr core::Binding kLightListImage{gpu::kFroxelBindingLightLists, kStorage};
+constexpr core::Binding kScatterImage{gpu::kFroxelBindingScatter, kStorage};
+constexpr core::Binding kIntegratedImage{gpu::kFroxelBindingIntegrated, kStorage};
+constexpr core::Binding kIntegratedSampled{gpu::kFroxelBindingIntegrated, kSampled};
+
+constexpr core::Binding kLightListBindings[] = {kUniformBuffer, kLightBuffer, kLightListImage};
+constexpr core::Binding kScatterBindings[] = {kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage};
+constexpr core::Binding kScatterLightBindings[] = {kShadowMap, kNoiseTexture, kUniformBuffer, kLightBuffer,
+                                                   kScatterImage};
+constexpr core::Binding kScatterListBindings[] = {kShadowMap,   kNoiseTexture,   kUniformBuffer,
+                                                  kLightBuffer, kLightListImage, kScatterImage};
+constexpr core::Binding kIntegrateBindings[] = {kUniformBuffer, kScatterImage, kIntegratedImage};
+constexpr core::Binding kApplyBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kIntegratedSampled};
+constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
+
+const core::ComputePipelineDesc kLightListPass{"froxel_fog.light_lists", spirv::froxel_fog_light_lists_comp,
+                                               kLightListBindings};
+// Scatter without local lights, looping over every light, and with light lists.
+const core::ComputePipelineDesc kScatterPass[3] = {
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp, kScatterBindings},
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LOCAL_LIGHTS, kScatterLightBindings},
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS, kScatterListBindings}};
+const core::ComputePipelineDesc kIntegratePass{"froxel_fog.integrate", spirv::froxel_fog_integrate_comp,
+                                               kIntegrateBindings};
+// The apply pass in the color format: RGBA16F and RGBA32F.
+const core::ComputePipelineDesc kApplyPass[2] = {
+    {"froxel_fog.apply", spirv::froxel_fog_apply_comp, kApplyBindings},
+    {"froxel_fog.apply", spirv::froxel_fog_apply_comp_COLOR_RGBA32F, kApplyBindings}};
+const core::ComputePipelineDesc kNoiseGenerate{"froxel_fog.noise", spirv::fog_noise_generate_comp,
+                                               kNoiseBindings, sizeof(gpu::NoisePush)};
+
+uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kFroxelGroupSize) {
+    return (size + groupSize - 1) / groupSize;
+}
+
+bool volumesHoldDensity(const FroxelFogSettings& s) {
+    for (uint32_t i = 0; i < s.volumeCount; ++i) {
+        const FogVolume& v = s.volumes[i];
+        const bool sized = v.shape == FogVolumeShape::Sphere
+                               ? v.radius > 0.0f
+                               : v.halfSize.x > 0.0f && v.halfSize.y > 0.0f && v.halfSize.z > 0.0f;
+        if (v.density > 0.0f && sized) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+FroxelFogEffect::FroxelFogEffect(const core::Gpu& gpu)
+    : noiseFormatSupported_(fog::noiseFormatSupported(gpu)) {}
+
+Status FroxelFogEffect::validate(const FrameInfo& frame) const {
+    const FroxelFogSettings& s = frame.froxelFog;
+    if (!s.enabled) return Status::success();
+    if (frame.fog.enabled)
+        return {Result::InvalidArgument,
+                "fog.enabled and froxel_fog.enabled: both fogs are on in one frame; they model the same "
+                "medium, so enable one of them (docs/effects/froxel-fog.md)"};
+    if (Status r = validateFroxelFogSettings(s); !r) return r;
+    return fog::checkNoiseSupported(s.noise, noiseFormatSupported_, "froxel_fog");
+}
+
+bool FroxelFogEffect::active(const FrameInfo& frame) const {
+    const FroxelFogSettings& s = frame.froxelFog;
+    return s.enabled && (!fog::fogMediumEmpty(s, s.noise.enabled) || volumesHoldDensity(s));
+}
+
+Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
+    const FrameInfo& frame = b.frame();
+    const FroxelFogSettings& s = frame.froxelFog;
+    const bool rgba32 = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT;
+    const Vec3 e = frame.sun.illuminance;
+    const bool shadowRead = frame.shadowMap.image.present() && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f);
+    const UVec3 grid = froxelGridSize(s, frame.color.extent.width, frame.color.extent.height);
+
+    const core::ImageRef noise = fog::declareNoise(b, s.noise, {kNoise, kNoNoise, kNoiseGenerate});
+
+    // Local lights: their buffer, and the light lists when there are many.
+    gpu::FroxelLights lights;
+    const uint32_t lightCount = packLights(frame, lights);
+    const bool lists = lightCount >= gpu::kFroxelLightListMinLights;
+    const uint32_t words = lists ? (lightCount + 31) / 32 : 0;
+    const PassUniforms u =
+        buildPassUniforms(frame, b.depthConvention(), grid, lightCount, words, s.noise.enabled, shadowRead);
+    const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
+    core::BufferRef lightBuffer;
+    if (lightCount > 0) lightBuffer = b.uniforms(kLights, &lights, sizeof lights);
+
+    core::ImageDesc volume;
+    volume.type = VK_IMAGE_TYPE_3D;
+    volume.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    volume.extent = {grid.x, grid.y, grid.z};
+    volume.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    const core::ImageRef scatter = b.transientImage(kScatter, volume);
+    volume.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    const core::ImageRef integrated = b.transientImage(kIntegrated, volume);
+
+    const core::ImageRef depth = b.host(HostImage::Depth);
+    // Without a shadow map read, the depth image stands in at its binding (never sampled: the flag is off).
+    const core::ImageRef shadow = shadowRead ? b.host(HostImage::ShadowMap) : depth;
+    const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
+    const Use noiseUse = s.noise.enabled ? Use::Sampled : Use::BoundOnly;
+
+    core::ImageRef lightLists;
+    if (lists) {
+        const glm::uvec3 clusters =
+            (glm::uvec3(grid.x, grid.y, grid.z) +
+             glm::uvec3(gpu::kFroxelClusterSize, gpu::kFroxelClusterSize, gpu::kFroxelClusterSlices) - 1u) /
+            glm::uvec3(gpu::kFroxelClusterSize, gpu::kFroxelClusterSize, gpu::kFroxelClusterSlices);
+        core::ImageDesc desc;
+        desc.type = VK_IMAGE_TYPE_3D;
+        desc.format = VK_FORMAT_R32_UINT;
+        desc.extent = {clusters.x, clusters.y, clusters.z * words};
+        desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+        lightLists = b.transientImage(kLightLists, desc);
+        b.pass(kLightListPass, groupsFor(clusters.x), groupsFor(clusters.y), clusters.z * words)
+            .bind(gpu::kFroxelBindingUniforms, uniforms)
+            .bind(gpu::kFroxelBindingLights, lightBuffer)
+            .bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageWrite);
+    }
+
+    b.pass(kScatterPass[lists            ? 2
+                        : lightCount > 0 ? 1
+                                         : 0],
+           groupsFor(grid.x), groupsFor(grid.y), grid.z)
+        .bind(gpu::kFroxelBindingShadowMap, shadow, shadowUse)
+        .bind(gpu::kFroxelBindingNoise, noise, noiseUse, SamplerKind::LinearRepeat)
+        .bind(gpu::kFroxelBindingUniforms, uniforms);
+    if (lightCount > 0) b.bind(gpu::kFroxelBindingLights, lightBuffer);
+    if (lists) b.bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageRead);
+    b.bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
+
+    b.pass(kIntegratePass, groupsFor(grid.x), groupsFor(grid.y), 1)
+        .bind(gpu::kFroxelBindingUniforms, uniforms)
+        .bind(gpu::kFroxelBindingScatter, scatter, Use::StorageRead)
+        .bind(gpu::kFroxelBindingIntegrated, integrated, Use::StorageWrite);
+
+    const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
+    b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width), groupsFor(frame.color.extent.height), 1)
+        .bind(gpu::kFroxelBindingColorIn, source, Use::StorageRead)
+        .bind(gpu::kFroxelBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kFroxelBindingUniforms, uniforms)
+        .bind(gpu::kFroxelBindingIntegrated, integrated, Use::Sampled, SamplerKind::LinearClamp)
+        .bind(gpu::kFroxelBindingColorOut, target, Use::StorageWrite);
+    return Status::success();
+}
+
+}  // namespace postfx::froxel_fog

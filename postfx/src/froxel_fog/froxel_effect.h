@@ -1,0 +1,36 @@
+// The froxel fog behind the effect boundary (docs/effects/froxel-fog.md): its settings' checks and its
+// declaration of a frame: the noise texture (the shared medium's), the uniforms and local lights, and
+// the passes froxel_fog.noise, froxel_fog.light_lists (with many lights), froxel_fog.scatter,
+// froxel_fog.integrate and froxel_fog.apply over the grid's two volumes.
+#pragma once
+
+#include "core/effect.h"
+#include "core/frame_graph.h"
+#include "core/gpu.h"
+
+namespace postfx::froxel_fog {
+
+// The froxel fog's resources, as the frame plan names them.
+inline constexpr core::ResourceId kNoise{"froxel_fog.noise"};             // generated noise (persistent)
+inline constexpr core::ResourceId kNoNoise{"froxel_fog.no_noise"};        // 1-texel stand-in, noise off
+inline constexpr core::ResourceId kUniforms{"froxel_fog.uniforms"};       // FogUniforms + FroxelUniforms
+inline constexpr core::ResourceId kLights{"froxel_fog.lights"};           // FroxelLights
+inline constexpr core::ResourceId kLightLists{"froxel_fog.light_lists"};  // r32ui cluster light bits
+inline constexpr core::ResourceId kScatter{"froxel_fog.scatter"};         // rgba16f (albedo·light, σt)
+inline constexpr core::ResourceId kIntegrated{"froxel_fog.integrated"};   // rgba16f (L, T) per slice end
+
+class FroxelFogEffect final : public core::Effect {
+public:
+    explicit FroxelFogEffect(const core::Gpu& gpu);
+
+    const char* name() const override { return "froxel_fog"; }
+    Status validate(const FrameInfo& frame) const override;
+    // Enabled, with a shared medium that is not empty or a fog volume that holds some density.
+    bool active(const FrameInfo& frame) const override;
+    Status declare(core::FrameBuilder& builder) const override;
+
+private:
+    bool noiseFormatSupported_ = false;
+};
+
+}  // namespace postfx::froxel_fog

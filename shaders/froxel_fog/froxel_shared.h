@@ -1,0 +1,73 @@
+// The froxel fog's header shared by its C++ (postfx/src/froxel_fog) and its GLSL (shaders/froxel_fog):
+// uniform structs, binding numbers, workgroup sizes, flags (docs/effects/froxel-fog.md). The medium's
+// uniforms are the ray-marched fog's FogUniforms (one definition of the shared medium): the froxel
+// fog's kernels bind them as `fog` and include shaders/fog/medium.glsl.
+#ifndef POSTFX_FROXEL_SHARED_H
+#define POSTFX_FROXEL_SHARED_H
+
+#include "fog/fog_shared.h"
+
+#ifdef __cplusplus
+namespace postfx::gpu {
+#endif
+
+PFX_CONST(uint, kFroxelGroupSize, 8);  // scatter, integrate, apply, light lists: 8×8 invocations
+
+// Light lists: one bit per light (1 = its sphere of influence touches the cluster) for each cluster of
+// kFroxelClusterSize² froxels × kFroxelClusterSlices slices, in words of 32 lights.
+PFX_CONST(uint, kFroxelClusterSize, 8);
+PFX_CONST(uint, kFroxelClusterSlices, 16);
+PFX_CONST(uint, kFroxelMaxLightWords, 8);  // kMaxLocalLights / 32
+// Light lists are built when a frame has at least this many lights; with fewer, every froxel loops over
+// all of them (docs/effects/froxel-fog.md#light-lists: what each costs, measured).
+PFX_CONST(uint, kFroxelLightListMinLights, 8);
+
+PFX_CONST(uint, kFroxelBindingColorIn, 0);     // storage image: host color (read)
+PFX_CONST(uint, kFroxelBindingColorOut, 1);    // storage image: output (host color itself when in place)
+PFX_CONST(uint, kFroxelBindingDepth, 2);       // sampler2D: host depth (texelFetch)
+PFX_CONST(uint, kFroxelBindingShadowMap, 3);   // sampler2D: host shadow map (texelFetch)
+PFX_CONST(uint, kFroxelBindingNoise, 4);       // sampler3D: noise, trilinear, repeat
+PFX_CONST(uint, kFroxelBindingUniforms, 5);    // uniform buffer: FogUniforms, FroxelUniforms
+PFX_CONST(uint, kFroxelBindingLights, 6);      // uniform buffer: FroxelLights
+PFX_CONST(uint, kFroxelBindingLightLists, 7);  // storage image r32ui: cluster light bits
+PFX_CONST(uint, kFroxelBindingScatter, 8);     // storage image rgba16f: per froxel (albedo·light, σt)
+PFX_CONST(uint, kFroxelBindingIntegrated,
+          9);  // storage image / sampler3D rgba16f: (L, T) to each slice's end
+
+// Flags in FroxelUniforms.counts.y
+PFX_CONST(uint, kFroxelFlagLogSlices, 1u);  // depth distribution Log (else Power)
+PFX_CONST(uint, kFroxelFlagTricubic, 2u);   // apply: tricubic B-spline (else trilinear)
+
+// Largest value stored in the rgba16f volumes (the largest finite half): never Inf.
+PFX_CONST(float, kFroxelHalfMax, 65504.0f);
+
+struct FroxelUniforms {
+    uvec4 grid;    // xyz: froxels along x, y and depth; w: lights this frame
+    vec4 jitter;   // xyz: sample position inside each froxel, [0, 1) (Halton or 0.5); w: storage scale
+    vec4 slices;   // x: near [m], y: far = max distance [m], z: power exponent k, w: ln(far / near)
+    uvec4 counts;  // x: fog volumes, y: kFroxelFlag* bits, z: light-list words per cluster, w: 0
+    // Fog volume i: volumes[2i] = (camera-relative centre [m], edge falloff [m]); volumes[2i + 1] = box:
+    // (half size [m], density [1/m]), sphere: (radius [m], -1, 0, density [1/m]).
+    vec4 volumes[2 * 64];
+};
+
+// One local light, camera-relative (postfx::LocalLight).
+struct FroxelLight {
+    vec4 positionRange;      // xyz: position [m], w: range [m]
+    vec4 intensityRadius;    // rgb: intensity [cd], w: source radius [m]
+    vec4 directionCosOuter;  // xyz: unit cone axis, w: cos(outer angle); -2 for a point light
+    vec4 cosInner;           // x: cos(inner angle)
+};
+
+struct FroxelLights {
+    FroxelLight lights[256];  // kMaxLocalLights
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(FroxelUniforms) == 4 * 16 + 128 * 16, "FroxelUniforms must match std140");
+static_assert(sizeof(FroxelLight) == 64, "FroxelLight must match std140");
+static_assert(sizeof(FroxelLights) == 256 * 64, "FroxelLights must match std140");
+}  // namespace postfx::gpu
+#endif
+
+#endif  // POSTFX_FROXEL_SHARED_H
