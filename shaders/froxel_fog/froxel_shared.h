@@ -18,9 +18,6 @@ PFX_CONST(uint, kFroxelGroupSize, 8);  // scatter, integrate, apply, light lists
 PFX_CONST(uint, kFroxelClusterSize, 8);
 PFX_CONST(uint, kFroxelClusterSlices, 16);
 PFX_CONST(uint, kFroxelMaxLightWords, 8);  // kMaxLocalLights / 32
-// Light lists are built when a frame has at least this many lights; with fewer, every froxel loops over
-// all of them (docs/effects/froxel-fog.md#light-lists: what each costs, measured).
-PFX_CONST(uint, kFroxelLightListMinLights, 8);
 
 PFX_CONST(uint, kFroxelBindingColorIn, 0);     // storage image: host color (read)
 PFX_CONST(uint, kFroxelBindingColorOut, 1);    // storage image: output (host color itself when in place)

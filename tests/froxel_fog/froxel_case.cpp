@@ -74,8 +74,8 @@ FroxelCase froxelCase(uint32_t w, uint32_t h, double cameraY, uint32_t wallColum
             const size_t p = size_t(j) * w + i;
             const glm::dvec3 d = pixelDirection(f.camera, i, j, w, h);
             c.images.depth[p] = i < wallColumns ? depthAtDistance(f.camera, d, wall) : 0.0f;
-            c.images.color[p * 4 + 0] = 1.0f + 0.05f * float(i);
-            c.images.color[p * 4 + 1] = 0.5f + 0.05f * float(j);
+            c.images.color[p * 4 + 0] = 1.0f + 0.0625f * float(i);  // exact in half precision
+            c.images.color[p * 4 + 1] = 0.5f + 0.0625f * float(j);
             c.images.color[p * 4 + 2] = 0.25f;
             c.images.color[p * 4 + 3] = 0.5f;
         }

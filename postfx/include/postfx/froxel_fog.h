@@ -55,6 +55,10 @@ struct FroxelFogSettings : FogMedium {
     float depthExponent = 2.0f;  // k of the power distribution [1]; in [1, 8] (checked for Log too)
     bool tricubic = false;       // apply: tricubic B-spline instead of trilinear filtering of the volume
     bool jitter = true;          // the sample inside each froxel moves per frame (Halton 2, 3, 5)
+    // Light lists (docs/effects/froxel-fog.md#light-lists): a pass bins the lights into clusters of 8×8
+    // froxels × 16 slices when the frame has at least this many lights with a non-zero intensity; with
+    // fewer, every froxel loops over all of them [lights]; in [1, 257] (257: never, 1: always).
+    uint32_t lightListMinLights = 8;
     // volumeCount local fog volumes (may be null when 0), read during record(); count in [0, 64].
     const FogVolume* volumes = nullptr;
     uint32_t volumeCount = 0;

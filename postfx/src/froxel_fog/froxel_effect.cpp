@@ -106,7 +106,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     // Local lights: their buffer, and the light lists when there are many.
     gpu::FroxelLights lights;
     const uint32_t lightCount = packLights(frame, lights);
-    const bool lists = lightCount >= gpu::kFroxelLightListMinLights;
+    const bool lists = lightCount > 0 && lightCount >= s.lightListMinLights;
     const uint32_t words = lists ? (lightCount + 31) / 32 : 0;
     const PassUniforms u =
         buildPassUniforms(frame, b.depthConvention(), grid, lightCount, words, s.noise.enabled, shadowRead);

@@ -3,6 +3,7 @@
 #include "fog/fog_settings.h"
 
 #include <postfx/froxel_fog.h>
+#include <postfx/inputs.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +50,9 @@ Status validateFroxelFogSettings(const FroxelFogSettings& s) {
         return invalid("froxel_fog.depth_distribution: " + std::to_string(uint32_t(s.depthDistribution)) +
                        " is not power or log");
     if (Status r = checkRange("froxel_fog.depth_exponent", s.depthExponent, 1.0, 8.0); !r) return r;
+    if (s.lightListMinLights < 1 || s.lightListMinLights > kMaxLocalLights + 1)
+        return invalid("froxel_fog.light_list_min_lights: " + std::to_string(s.lightListMinLights) +
+                       " is outside [1, " + std::to_string(kMaxLocalLights + 1) + "]");
     if (s.volumeCount > kMaxFogVolumes)
         return invalid("froxel_fog.volumes: " + std::to_string(s.volumeCount) +
                        " volumes exceed kMaxFogVolumes (" + std::to_string(kMaxFogVolumes) + ")");

@@ -1,0 +1,184 @@
+// The froxel fog's frame plan (docs/frame-plan.md, docs/effects/froxel-fog.md#frame-plan): off or empty
+// records nothing; without local lights no light buffer and no light lists; few lights a buffer, many
+// also the light lists; every pass's workgroups and every resource's bytes exactly; the recorded passes
+// are the plan's.
+#include "froxel_case.h"
+
+#include <string>
+#include <vector>
+
+namespace test {
+namespace {
+
+std::vector<std::string> passNames(const postfx::FramePlan& plan) {
+    std::vector<std::string> names;
+    for (const postfx::PlannedPass& p : plan.passes)
+        names.push_back(p.name);
+    return names;
+}
+
+uint64_t resourceBytes(const postfx::FramePlan& plan, const std::string& name) {
+    for (const postfx::PlannedResource& r : plan.resources)
+        if (r.name == name) return r.bytes;
+    ADD_FAILURE() << "no resource " << name;
+    return 0;
+}
+
+constexpr uint64_t kUniformSlot = 2560;  // sizeof(FogUniforms) + sizeof(FroxelUniforms) = 2448, to 256
+constexpr uint64_t kLightSlot = 16384;   // 256 lights × 64 bytes
+
+class FroxelFogPlanTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        ASSERT_TRUE(host);
+        ASSERT_TRUE(gpu.init(hostHandles()).ok());
+        postfx::ContextCreateInfo info;
+        info.depth.reversedZ = true;
+        ASSERT_TRUE(createContext(context, info).ok());
+        c = froxelCase(40, 24, 1.0, 20, 10.0);
+        c.frame.froxelFog.grid = {20, 12, 40};
+    }
+
+    // Plans and records `fc` at `frameIndex`; the recorded passes (timings) must be the plan's.
+    postfx::FramePlan planAndRun(const FroxelCase& fc, uint64_t frameIndex, std::vector<float>* color = nullptr) {
+        postfx::FrameInfo frame = fc.prepared();
+        frame.frameIndex = frameIndex;
+        postfx::FramePlan plan;
+        postfx::Status planned = postfx::Status::success();
+        FogHarness harness(*host, gpu);
+        harness.onBeforeRecord = [&](const postfx::FrameInfo& f) { planned = context->plan(f, plan); };
+        std::vector<float> out;
+        const postfx::Status s = harness.run(*context, fc.images, frame, out);
+        EXPECT_TRUE(s.ok()) << s.message;
+        EXPECT_TRUE(planned.ok()) << planned.message;
+        std::vector<postfx::PassTiming> timings;
+        EXPECT_TRUE(context->readPassTimings(frameIndex, timings).ok());
+        std::vector<std::string> recorded;
+        for (const postfx::PassTiming& t : timings)
+            recorded.push_back(t.name);
+        EXPECT_EQ(recorded, passNames(plan)) << "frame " << frameIndex;
+        if (color) *color = out;
+        return plan;
+    }
+
+    static postfx::LocalLight light(double x) {
+        postfx::LocalLight l;
+        l.position = {x, 1.0, -8.0};
+        l.intensity = {50.0f, 50.0f, 50.0f};
+        l.range = 5.0f;
+        return l;
+    }
+
+    postfx::core::Gpu gpu;
+    std::unique_ptr<postfx::Context> context;
+    FroxelCase c;
+};
+
+// Off, density 0 without volumes, noise that is 0 everywhere, volumes of density 0 or of zero size:
+// no pass, no resource, the color as it was.
+TEST_F(FroxelFogPlanTest, OffOrEmptyRecordsNothing) {
+    std::vector<FroxelCase> cases(5, c);
+    cases[0].frame.froxelFog.enabled = false;
+    cases[1].frame.froxelFog.density = 0.0f;
+    cases[2].frame.froxelFog.noise.enabled = true;
+    cases[2].frame.froxelFog.noise.threshold = 1.0f;
+    cases[3].frame.froxelFog.density = 0.0f;
+    cases[3].volumes.resize(2);
+    cases[3].volumes[0].density = 0.0f;
+    cases[3].volumes[1].shape = postfx::FogVolumeShape::Sphere;
+    cases[3].volumes[1].radius = 0.0f;
+    cases[4].frame.froxelFog.enabled = false;
+    cases[4].lights = {light(0.0)};  // lights alone light nothing
+    uint64_t frameIndex = 0;
+    for (const FroxelCase& fc : cases) {
+        std::vector<float> color;
+        const postfx::FramePlan plan = planAndRun(fc, frameIndex++, &color);
+        EXPECT_TRUE(plan.passes.empty()) << "frame " << frameIndex - 1;
+        EXPECT_TRUE(plan.resources.empty());
+        EXPECT_EQ(color, fc.images.color);
+    }
+}
+
+// No local light: scatter, integrate, apply; the two rgba16f volumes, the 1-texel noise stand-in and the
+// uniform slots (two frames in flight).
+TEST_F(FroxelFogPlanTest, WithoutLightsNoLightWork) {
+    const postfx::FramePlan plan = planAndRun(c, 0);
+    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate",
+                                                         "froxel_fog.apply"}));
+    const uint64_t volume = 20 * 12 * 40 * 8;
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.scatter"), volume);
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.integrated"), volume);
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.no_noise"), 1u);
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.uniforms"), 2 * kUniformSlot);
+    EXPECT_EQ(plan.totalBytes(), 2 * volume + 1 + 2 * kUniformSlot);
+    EXPECT_EQ(plan.resources.size(), 4u);
+    const postfx::PlannedPass* scatter = plan.pass("froxel_fog.scatter");
+    ASSERT_TRUE(scatter);
+    EXPECT_EQ(std::vector<uint32_t>(scatter->groups, scatter->groups + 3), (std::vector<uint32_t>{3, 2, 40}));
+    const postfx::PlannedPass* integrate = plan.pass("froxel_fog.integrate");
+    ASSERT_TRUE(integrate);
+    EXPECT_EQ(std::vector<uint32_t>(integrate->groups, integrate->groups + 3), (std::vector<uint32_t>{3, 2, 1}));
+    const postfx::PlannedPass* apply = plan.pass("froxel_fog.apply");
+    ASSERT_TRUE(apply);
+    EXPECT_EQ(std::vector<uint32_t>(apply->groups, apply->groups + 3), (std::vector<uint32_t>{5, 3, 1}));
+    EXPECT_EQ(apply->reads, (std::vector<std::string>{"host.color", "host.depth", "froxel_fog.uniforms",
+                                                      "froxel_fog.integrated"}));
+    EXPECT_FALSE(plan.reads("host.shadow_map"));  // no sun
+}
+
+// Below light_list_min_lights the lights' buffer only (zero-intensity lights do not count); at it, the
+// light lists: clusters of 8×8 froxels × 16 slices, one 32-bit word per 32 lights each.
+TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
+    FroxelCase few = c;
+    for (int k = 0; k < 7; ++k)
+        few.lights.push_back(light(k));
+    few.lights.push_back(light(9.0));
+    few.lights.back().intensity = glm::vec3(0.0f);  // the 8th light adds nothing
+    postfx::FramePlan plan = planAndRun(few, 0);
+    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate",
+                                                         "froxel_fog.apply"}));
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.lights"), 2 * kLightSlot);
+    EXPECT_TRUE(plan.reads("froxel_fog.lights"));
+
+    FroxelCase many = c;
+    for (int k = 0; k < 40; ++k)
+        many.lights.push_back(light(0.25 * k - 5.0));
+    plan = planAndRun(many, 1);
+    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.light_lists", "froxel_fog.scatter",
+                                                         "froxel_fog.integrate", "froxel_fog.apply"}));
+    // 20×12×40 froxels: 3×2×3 clusters, 2 words (40 lights) each.
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.light_lists"), 3u * 2 * 3 * 2 * 4);
+    const postfx::PlannedPass* lists = plan.pass("froxel_fog.light_lists");
+    ASSERT_TRUE(lists);
+    EXPECT_EQ(std::vector<uint32_t>(lists->groups, lists->groups + 3), (std::vector<uint32_t>{1, 1, 6}));
+    EXPECT_EQ(plan.totalBytes(), 2u * 20 * 12 * 40 * 8 + 1 + 2 * kUniformSlot + 2 * kLightSlot + 3 * 2 * 3 * 2 * 4);
+
+    many.frame.froxelFog.lightListMinLights = postfx::kMaxLocalLights + 1;  // never
+    plan = planAndRun(many, 2);
+    EXPECT_FALSE(plan.pass("froxel_fog.light_lists"));
+}
+
+// The sun with a shadow map: scatter reads it; generated noise: froxel_fog.noise in the first frame only.
+TEST_F(FroxelFogPlanTest, NoiseGeneratedOnceAndShadowMapRead) {
+    FroxelCase fc = c;
+    fc.frame.sun.illuminance = glm::vec3(100.0f);
+    fc.frame.froxelFog.noise.enabled = true;
+    fc.frame.froxelFog.noise.textureSize = 16;
+    fc.images.shadowWidth = fc.images.shadowHeight = 8;
+    fc.images.shadow.assign(64, 1.0f);
+    fc.frame.shadowMap.worldToClip = glm::dmat4(1.0);
+    postfx::FramePlan plan = planAndRun(fc, 0);
+    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.noise", "froxel_fog.scatter",
+                                                         "froxel_fog.integrate", "froxel_fog.apply"}));
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.noise"), 16u * 16 * 16);
+    EXPECT_TRUE(plan.pass("froxel_fog.scatter") &&
+                plan.pass("froxel_fog.scatter")->reads.front() == std::string("host.shadow_map"));
+    plan = planAndRun(fc, 1);
+    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate",
+                                                         "froxel_fog.apply"}));
+    EXPECT_NE(context->imageView(postfx::kFroxelFogNoiseTexture), VkImageView(VK_NULL_HANDLE));
+}
+
+}  // namespace
+}  // namespace test
