@@ -41,7 +41,8 @@ protected:
     }
 
     // Plans and records `fc` at `frameIndex`; the recorded passes (timings) must be the plan's.
-    postfx::FramePlan planAndRun(const FroxelCase& fc, uint64_t frameIndex, std::vector<float>* color = nullptr) {
+    postfx::FramePlan planAndRun(const FroxelCase& fc, uint64_t frameIndex,
+                                 std::vector<float>* color = nullptr) {
         postfx::FrameInfo frame = fc.prepared();
         frame.frameIndex = frameIndex;
         postfx::FramePlan plan;
@@ -104,8 +105,8 @@ TEST_F(FroxelFogPlanTest, OffOrEmptyRecordsNothing) {
 // uniform slots (two frames in flight).
 TEST_F(FroxelFogPlanTest, WithoutLightsNoLightWork) {
     const postfx::FramePlan plan = planAndRun(c, 0);
-    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate",
-                                                         "froxel_fog.apply"}));
+    EXPECT_EQ(passNames(plan),
+              (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate", "froxel_fog.apply"}));
     const uint64_t volume = 20 * 12 * 40 * 8;
     EXPECT_EQ(resourceBytes(plan, "froxel_fog.scatter"), volume);
     EXPECT_EQ(resourceBytes(plan, "froxel_fog.integrated"), volume);
@@ -118,7 +119,8 @@ TEST_F(FroxelFogPlanTest, WithoutLightsNoLightWork) {
     EXPECT_EQ(std::vector<uint32_t>(scatter->groups, scatter->groups + 3), (std::vector<uint32_t>{3, 2, 40}));
     const postfx::PlannedPass* integrate = plan.pass("froxel_fog.integrate");
     ASSERT_TRUE(integrate);
-    EXPECT_EQ(std::vector<uint32_t>(integrate->groups, integrate->groups + 3), (std::vector<uint32_t>{3, 2, 1}));
+    EXPECT_EQ(std::vector<uint32_t>(integrate->groups, integrate->groups + 3),
+              (std::vector<uint32_t>{3, 2, 1}));
     const postfx::PlannedPass* apply = plan.pass("froxel_fog.apply");
     ASSERT_TRUE(apply);
     EXPECT_EQ(std::vector<uint32_t>(apply->groups, apply->groups + 3), (std::vector<uint32_t>{5, 3, 1}));
@@ -136,8 +138,8 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
     few.lights.push_back(light(9.0));
     few.lights.back().intensity = glm::vec3(0.0f);  // the 8th light adds nothing
     postfx::FramePlan plan = planAndRun(few, 0);
-    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate",
-                                                         "froxel_fog.apply"}));
+    EXPECT_EQ(passNames(plan),
+              (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate", "froxel_fog.apply"}));
     EXPECT_EQ(resourceBytes(plan, "froxel_fog.lights"), 2 * kLightSlot);
     EXPECT_TRUE(plan.reads("froxel_fog.lights"));
 
@@ -152,7 +154,8 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
     const postfx::PlannedPass* lists = plan.pass("froxel_fog.light_lists");
     ASSERT_TRUE(lists);
     EXPECT_EQ(std::vector<uint32_t>(lists->groups, lists->groups + 3), (std::vector<uint32_t>{1, 1, 6}));
-    EXPECT_EQ(plan.totalBytes(), 2u * 20 * 12 * 40 * 8 + 1 + 2 * kUniformSlot + 2 * kLightSlot + 3 * 2 * 3 * 2 * 4);
+    EXPECT_EQ(plan.totalBytes(),
+              2u * 20 * 12 * 40 * 8 + 1 + 2 * kUniformSlot + 2 * kLightSlot + 3 * 2 * 3 * 2 * 4);
 
     many.frame.froxelFog.lightListMinLights = postfx::kMaxLocalLights + 1;  // never
     plan = planAndRun(many, 2);
@@ -175,8 +178,8 @@ TEST_F(FroxelFogPlanTest, NoiseGeneratedOnceAndShadowMapRead) {
     EXPECT_TRUE(plan.pass("froxel_fog.scatter") &&
                 plan.pass("froxel_fog.scatter")->reads.front() == std::string("host.shadow_map"));
     plan = planAndRun(fc, 1);
-    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate",
-                                                         "froxel_fog.apply"}));
+    EXPECT_EQ(passNames(plan),
+              (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate", "froxel_fog.apply"}));
     EXPECT_NE(context->imageView(postfx::kFroxelFogNoiseTexture), VkImageView(VK_NULL_HANDLE));
 }
 
