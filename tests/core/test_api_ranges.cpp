@@ -299,6 +299,78 @@ void fogRows(std::vector<Row>& bad, std::vector<Row>& good) {
             "fog.noise.wind", [c](FrameInfo& f) -> float& { return f.fog.noise.wind[c]; }, -1e3f, 1e3f);
 }
 
+// The froxel fog's fields (FroxelFogSettings, its volumes): each row runs on the valid frame with the
+// ray-marched fog off and the froxel fog on, with gVolumes as its volumes.
+postfx::FogVolume gVolumes[postfx::kMaxFogVolumes + 1];
+
+void froxelRows(std::vector<Row>& bad, std::vector<Row>& good) {
+    auto froxel = [](std::function<void(FrameInfo&)> set) {
+        return [set](FrameInfo& f) {
+            f.fog.enabled = false;
+            f.froxelFog.enabled = true;
+            for (postfx::FogVolume& v : gVolumes)
+                v = postfx::FogVolume{};
+            f.froxelFog.volumes = gVolumes;
+            f.froxelFog.volumeCount = 2;
+            gVolumes[1].shape = postfx::FogVolumeShape::Sphere;
+            set(f);
+        };
+    };
+    std::vector<Row> b, g;
+    auto range = [&](const std::string& key, std::function<float&(FrameInfo&)> at, float lo, float hi,
+                     bool openLo = false) { addRange<float>(b, g, key, at, lo, hi, openLo); };
+    range(
+        "froxel_fog.density", [](FrameInfo& f) -> float& { return f.froxelFog.density; }, 0.0f, 1e6f);
+    range(
+        "froxel_fog.max_distance", [](FrameInfo& f) -> float& { return f.froxelFog.maxDistance; }, 0.0f, 1e7f,
+        true);
+    range(
+        "froxel_fog.depth_exponent", [](FrameInfo& f) -> float& { return f.froxelFog.depthExponent; }, 1.0f,
+        8.0f);
+    for (int a = 0; a < 3; ++a) {
+        const std::string key = "froxel_fog.grid[" + std::to_string(a) + "]";
+        addBad(b, key, "0", [a](FrameInfo& f) { f.froxelFog.grid[a] = 0; });
+        addBad(b, key, "513", [a](FrameInfo& f) { f.froxelFog.grid[a] = 513; });
+        g.push_back({key, "1", [a](FrameInfo& f) { f.froxelFog.grid[a] = 1; }});
+        g.push_back({key, "512", [a](FrameInfo& f) { f.froxelFog.grid[a] = 512; }});
+    }
+    addBad(b, "froxel_fog.tile_size_px", "4097", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4097; });
+    g.push_back({"froxel_fog.tile_size_px", "4096", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4096; }});
+    addBad(b, "froxel_fog.light_list_min_lights", "0",
+           [](FrameInfo& f) { f.froxelFog.lightListMinLights = 0; });
+    addBad(b, "froxel_fog.light_list_min_lights", "258",
+           [](FrameInfo& f) { f.froxelFog.lightListMinLights = 258; });
+    g.push_back({"froxel_fog.light_list_min_lights", "257",
+                 [](FrameInfo& f) { f.froxelFog.lightListMinLights = 257; }});
+    addBad(b, "froxel_fog.depth_distribution", "cast 2",
+           [](FrameInfo& f) { f.froxelFog.depthDistribution = postfx::FroxelDepthDistribution(2); });
+    addBad(b, "froxel_fog.volumes", "65", [](FrameInfo& f) { f.froxelFog.volumeCount = 65; });
+    g.push_back({"froxel_fog.volumes", "64", [](FrameInfo& f) { f.froxelFog.volumeCount = 64; }});
+    addBad(b, "froxel_fog.volumes", "null", [](FrameInfo& f) { f.froxelFog.volumes = nullptr; });
+    addBad(b, "froxel_fog.volumes[1].shape", "cast 2",
+           [](FrameInfo&) { gVolumes[1].shape = postfx::FogVolumeShape(2); });
+    range(
+        "froxel_fog.volumes[0].density", [](FrameInfo&) -> float& { return gVolumes[0].density; }, 0.0f,
+        1e6f);
+    range(
+        "froxel_fog.volumes[1].radius", [](FrameInfo&) -> float& { return gVolumes[1].radius; }, 0.0f, 1e7f);
+    range(
+        "froxel_fog.volumes[0].edge_falloff", [](FrameInfo&) -> float& { return gVolumes[0].edgeFalloff; },
+        0.0f, 1e7f);
+    for (int c = 0; c < 3; ++c)
+        range(
+            "froxel_fog.volumes[0].half_size", [c](FrameInfo&) -> float& { return gVolumes[0].halfSize[c]; },
+            0.0f, 1e7f);
+    addBad(b, "froxel_fog.volumes[1].center", "NaN", [](FrameInfo&) { gVolumes[1].center.y = kNan; });
+    addBad(b, "froxel_fog.volumes[1].center", "-1.1e9", [](FrameInfo&) { gVolumes[1].center.x = -1.1e9; });
+    // Both fogs in one frame: the two keys named.
+    addBad(b, "fog.enabled and froxel_fog.enabled", "both", [](FrameInfo& f) { f.fog.enabled = true; });
+    for (Row& r : b)
+        bad.push_back({r.field, r.value, froxel(r.set)});
+    for (Row& r : g)
+        good.push_back({r.field, r.value, froxel(r.set)});
+}
+
 class CoreApiRanges : public GpuTest {
 protected:
     void SetUp() override {
@@ -324,6 +396,7 @@ TEST_F(CoreApiRanges, EveryFrameFieldOutsideItsRangeIsRefusedNamingIt) {
     std::vector<Row> bad, good;
     frameRows(bad, good);
     fogRows(bad, good);
+    froxelRows(bad, good);
     ASSERT_GT(bad.size(), 200u);
     {
         const postfx::Status s = plan({"valid", "", [](FrameInfo&) {}});
