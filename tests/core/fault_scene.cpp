@@ -1,10 +1,29 @@
 #include "fault_scene.h"
 
+#include <algorithm>
+#include <array>
+
 namespace test {
 
 namespace {
 constexpr double kWall = 12.0;  // distance of the wall the left half of the pixels sees [m]
+
+// The lights FaultSceneOptions::lights points frames at: points and spots in front of the camera.
+const postfx::LocalLight* sceneLights() {
+    static const auto lights = [] {
+        std::array<postfx::LocalLight, 16> all{};
+        for (size_t k = 0; k < all.size(); ++k) {
+            postfx::LocalLight& l = all[k];
+            l.type = k % 3 == 0 ? postfx::LightType::Spot : postfx::LightType::Point;
+            l.position = {-4.0 + 0.5 * double(k), 1.0, -3.0 - 0.5 * double(k)};
+            l.intensity = {50.0f, 40.0f, 30.0f};
+            l.range = 6.0f;
+        }
+        return all;
+    }();
+    return lights.data();
 }
+}  // namespace
 
 postfx::FrameInfo faultSceneFrame(const FaultSceneOptions& o, uint64_t frameIndex) {
     postfx::FrameInfo frame;
@@ -23,6 +42,14 @@ postfx::FrameInfo faultSceneFrame(const FaultSceneOptions& o, uint64_t frameInde
     fog.noise.enabled = o.noise;
     fog.noise.textureSize = o.noiseSize;
     if (o.autoQuality) fog.quality = postfx::FogQuality::Auto;
+    if (o.froxel) {
+        static_cast<postfx::FogMedium&>(frame.froxelFog) = fog;
+        frame.froxelFog.enabled = true;
+        frame.froxelFog.grid = {4, 4, 8};
+        fog.enabled = false;
+    }
+    frame.lights = sceneLights();
+    frame.lightCount = std::min(o.lights, 16u);
     if (o.shadowMap) {
         // Orthographic from above: clip x = x/20, clip y = z/20, depth (30 - y)/60.
         glm::dmat4 m(0.0);

@@ -221,6 +221,7 @@ const FaultScenario kScenarios[] = {
     {"auto_quality", {.noise = true, .autoQuality = true}, 2},
     {"resize_every_frame", {.noise = true, .resolutionScale = 0.5f}, 2, true, true},
     {"everything", {.noise = true, .shadowMap = true, .resolutionScale = 0.5f, .separateOutput = true}, 3},
+    {"froxel_fog_light_lists", {.noise = true, .shadowMap = true, .froxel = true, .lights = 12}, 2},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, CoreFaultInjectionTest, ::testing::ValuesIn(kScenarios), scenarioName);

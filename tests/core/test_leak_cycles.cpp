@@ -1,7 +1,8 @@
 // Leak cycles: contexts with 1, 2, 3 and 8 frames in flight, timings on and off, record frame after frame
 // with every fog setting that allocates changing each frame (noise sizes, resolution scales, separate
-// output, RGBA16F / RGBA32F, shadow map, fog off) and the extent changing from 1x1 to the context's
-// maxExtent, counting every Vulkan object postfx creates through tests/core/vulkan_interposer.h.
+// output, RGBA16F / RGBA32F, shadow map, the froxel fog with few and many lights, fog off) and the extent
+// changing from 1x1 to the context's maxExtent, counting every Vulkan object postfx creates through
+// tests/core/vulkan_interposer.h.
 //
 // The bound: a context holds `base` objects after create() (descriptor pools, query pool); one frame of
 // configuration c adds owned(c) (images, views, memory, uniform rings, pipelines, samplers). What a frame
@@ -35,6 +36,9 @@ const CycleConfig kConfigs[] = {
     {{.format = VK_FORMAT_R32G32B32A32_SFLOAT, .separateOutput = true}},
     {{.shadowMap = true}},
     {{.noise = true, .noiseSize = 32, .shadowMap = true, .resolutionScale = 0.5f, .separateOutput = true}},
+    {{.froxel = true}},
+    {{.noise = true, .noiseSize = 16, .shadowMap = true, .froxel = true, .lights = 12}},  // light lists
+    {{.format = VK_FORMAT_R32G32B32A32_SFLOAT, .separateOutput = true, .froxel = true, .lights = 3}},
     {{.separateOutput = true}, false},  // fog off: only postfx.copy
     {{}, false},                        // fog off, in place: nothing
 };
@@ -75,7 +79,7 @@ protected:
         scene.width = extent.width;
         scene.height = extent.height;
         postfx::FrameInfo frame = faultSceneFrame(scene, frameIndex);
-        frame.fog.enabled = config.fog;
+        if (!config.fog) frame.fog.enabled = frame.froxelFog.enabled = false;
         std::vector<float> color, output;
         FogHarness harness(*host, gpu);
         return harness.run(context, faultSceneImages(scene), frame, color, &output);
