@@ -1,6 +1,6 @@
 // postfx-render: renders a demo scene headless (G-buffer, sun + shadow map, lighting, postfx) and
-// writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog comes from
-// postfx's CPU reference (Renderer::renderReference) instead of the GPU pass.
+// writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog (ray-marched or
+// froxel) comes from postfx's CPU reference (Renderer::renderReference) instead of the GPU pass.
 #include "program.h"
 
 #include <nlohmann/json.hpp>
@@ -40,8 +40,9 @@ const char* kUsage =
     "  --validation       Vulkan validation layer with synchronization validation (also\n"
     "                     POSTFX_VALIDATION=1); any validation message fails the run, one\n"
     "                     at the device's destruction (an object left alive) included\n"
-    "  --reference        the fog from postfx's CPU reference (double precision, no jitter, all\n"
-    "                     CPU threads) instead of the GPU pass, over the same GPU frame (the last)\n"
+    "  --reference        the fog (ray-marched or froxel) from postfx's CPU reference (double\n"
+    "                     precision, no jitter, all CPU threads) instead of the GPU pass, over the\n"
+    "                     same GPU frame (the last)\n"
     "  --reference-steps N  march steps per pixel of --reference (default 4096), 1..1048576\n"
     "  --print-plan       print postfx's frame plan of the last frame (docs/frame-plan.md) as JSON on\n"
     "                     stdout instead of writing an image: the frames before it are rendered\n"
@@ -156,8 +157,9 @@ int run(const Args& args) {
             if (!renderer->renderReference(scene, image, error, args.referenceSteps)) return fail(error);
             const double seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (scene.fog.enabled) {
-                std::printf("reference: %u steps/pixel, %.1f s on %u threads\n", args.referenceSteps, seconds,
+            if (scene.fog.enabled || scene.froxelFog.enabled) {
+                std::printf("reference: %s, %u steps/pixel, %.1f s on %u threads\n",
+                            scene.froxelFog.enabled ? "froxel fog" : "fog", args.referenceSteps, seconds,
                             std::max(1u, std::thread::hardware_concurrency()));
             } else {
                 std::printf("reference: the scene has no fog (the un-fogged frame), %.1f s\n", seconds);

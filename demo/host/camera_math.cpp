@@ -95,9 +95,12 @@ ShadowFit fitShadowMap(const Scene& scene, uint32_t mapSize) {
     // compared inside the map. (postfx shadows a sample beyond the far plane under a caster anyway; this
     // keeps the map the description of all the fog sees.) The near side stays at the casters: nothing
     // nearer the sun shadows, and postfx lights the fog before the near plane.
-    if (scene.fog.enabled) {
+    // Either fog (the froxel fog's grid also ends at its max_distance, and its tail reads no shadow map).
+    float reach = 0.0f;
+    if (scene.fog.enabled) reach = std::max(reach, scene.fog.maxDistance);
+    if (scene.froxelFog.enabled) reach = std::max(reach, scene.froxelFog.maxDistance);
+    if (reach > 0.0f) {
         const glm::vec3 camera = glm::vec3(view * glm::vec4(scene.camera.position, 1.0f));
-        const float reach = scene.fog.maxDistance;
         // Distance in the light's xy from the camera to the footprint rectangle: the ball's chord
         // along the sun inside the footprint reaches down to camera.z - sqrt(reach² - d²).
         const glm::vec2 nearest = glm::clamp(glm::vec2(camera), glm::vec2(lsLo), glm::vec2(lsHi));

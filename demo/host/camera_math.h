@@ -28,8 +28,8 @@ struct ShadowFit {
 
 // Covers the bounding box of all boxes and spheres (with a margin) as seen from the sun: no shadow
 // falls outside that footprint. In depth it reaches from the casters' sun side to the farthest of the
-// casters, every plane where it crosses the footprint (receivers of long shadows) and, with fog on, the
-// farthest point inside the footprint that the fog's march reaches (max_distance around the camera, on
+// casters, every plane where it crosses the footprint (receivers of long shadows) and, with fog on (either
+// fog), the farthest point inside the footprint that the fog reaches (max_distance around the camera, on
 // the camera's side of the planes).
 ShadowFit fitShadowMap(const Scene& scene, uint32_t mapSize);
 

@@ -1,5 +1,6 @@
 // Renderer::renderReference: the GPU frame up to lighting, read back, and postfx's CPU fog reference
-// over it (postfx::reference::renderFog) with the same inputs the GPU frame gave postfx.
+// over it (postfx::reference::renderFog, or renderFroxelFog for the froxel fog) with the same inputs the
+// GPU frame gave postfx.
 #include "host/renderer.h"
 #include "host/renderer_impl.h"
 
@@ -42,6 +43,30 @@ std::vector<float> floatsAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t
     return out;
 }
 
+// The scene the GPU renders for renderReference when it has froxel fog, whose reference runs on the CPU:
+// the froxel fog off, and in its place a ray-marched fog that only makes postfx generate the noise
+// texture the froxel fog reads (the texture depends on its size and seed only; postfx's public API reads
+// it back through the ray-marched fog, recordFogNoiseReadback). Its max_distance is the froxel fog's, so
+// the shadow map is fitted as for `scene` (fitShadowMap); without noise its density is 0 and postfx
+// records nothing for it.
+Scene noiseStandIn(const Scene& scene) {
+    Scene s = scene;
+    const postfx::FroxelFogSettings& froxel = scene.froxelFog;
+    s.froxelFog.enabled = false;
+    s.fog = postfx::FogSettings{};
+    s.fog.enabled = true;
+    s.fog.maxDistance = froxel.maxDistance;
+    s.fog.steps = 1;
+    s.fog.jitter = false;
+    s.fog.analyticTail = false;
+    const bool noise = froxel.noise.enabled && !froxel.noise.hostTexture;
+    s.fog.density = noise ? 1.0f : 0.0f;
+    s.fog.noise.enabled = noise;
+    s.fog.noise.textureSize = froxel.noise.textureSize;
+    s.fog.noise.seed = froxel.noise.seed;
+    return s;
+}
+
 }  // namespace
 
 bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel,
@@ -64,16 +89,24 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     if (!setScene(scene, error)) return false;  // also waits for the device to be idle
 
     const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns
-    const ShadowFit fit = r.shadowFit(scene);
-    const bool shadows = r.drawsShadows(scene, fit, frameIndex);
+    // What the GPU renders: the scene, or with froxel fog its noise stand-in (same geometry, lights and
+    // shadow fit).
+    const bool froxel = scene.froxelFog.enabled;
+    Scene standIn;
+    if (froxel) standIn = noiseStandIn(scene);
+    const Scene& gpuScene = froxel ? standIn : scene;
+    const ShadowFit fit = r.shadowFit(gpuScene);
+    const bool shadows = r.drawsShadows(gpuScene, fit, frameIndex);
     const PostfxInputs in = r.postfxInputs(scene, frameIndex, fit, shadows);
-    const bool fog = in.fog.enabled;
-    const bool noise = fog && in.fog.noise.enabled && !in.fog.noise.hostTexture;
+    const bool fog = in.fog.enabled || froxel;  // a fog reference to evaluate
+    const postfx::FogNoiseSettings& noiseSettings = froxel ? in.froxelFog.noise : in.fog.noise;
+    const bool noise = fog && noiseSettings.enabled && !noiseSettings.hostTexture;
+    const uint32_t noiseEdge = noiseSettings.textureSize;
 
     // With fog, postfx runs as in render() but writes to a scratch image: it validates the inputs and
     // generates the noise texture, and the HDR image keeps the un-fogged scene.
     postfx::ImageInput fogOutput;
-    if (fog) {
+    if (gpuScene.fog.enabled) {
         if (!r.fogScratch.image &&
             !createImage(r.host, r.hdr.format, r.extent, VK_IMAGE_USAGE_STORAGE_BIT, r.fogScratch, error))
             return false;
@@ -85,8 +118,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const size_t pixels = size_t(r.extent.width) * r.extent.height;
     const VkExtent2D shadowExtent = r.shadow.depth.extent;
     const size_t shadowTexels = shadows ? size_t(shadowExtent.width) * shadowExtent.height : 0;
-    const size_t noiseTexels =
-        noise ? size_t(in.fog.noise.textureSize) * in.fog.noise.textureSize * in.fog.noise.textureSize : 0;
+    const size_t noiseTexels = noise ? size_t(noiseEdge) * noiseEdge * noiseEdge : 0;
     const VkDeviceSize depthOffset = 0;
     const VkDeviceSize shadowOffset = depthOffset + pixels * sizeof(float);
     const VkDeviceSize noiseOffset = shadowOffset + shadowTexels * sizeof(float);
@@ -110,11 +142,11 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     vkBeginCommandBuffer(cmd, &bi);
     uint32_t noiseSize = 0;
     const bool recorded = [&] {
-        if (fog) {  // the scratch image's old content is never read
+        if (fogOutput.image) {  // the scratch image's old content is never read
             imageBarrier(cmd, r.fogScratch, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kCompute, 0,
                          kCompute, VK_ACCESS_SHADER_WRITE_BIT);
         }
-        if (!r.recordFrame(cmd, scene, frameIndex, fogOutput, error)) return false;
+        if (!r.recordFrame(cmd, gpuScene, frameIndex, fogOutput, error)) return false;
         r.recordReadback(cmd);  // the HDR image: postfx only read it
         recordDepthCopy(cmd, r.gbuffer.depth, buffer, depthOffset);
         if (shadows) recordDepthCopy(cmd, r.shadow.depth, buffer, shadowOffset);
@@ -141,9 +173,9 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     }
     if (!vkCheck(vkWaitForFences(device, 1, &r.fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences", error))
         return false;
-    if (noise && noiseSize != in.fog.noise.textureSize) {
+    if (noise && noiseSize != noiseEdge) {
         error = "postfx noise readback: texture edge " + std::to_string(noiseSize) + ", expected " +
-                std::to_string(in.fog.noise.textureSize);
+                std::to_string(noiseEdge);
         return false;
     }
 
@@ -197,33 +229,51 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     for (size_t i = 0; i < noiseTexels; ++i)
         noiseTexels01[i] = float(bytes[i]) / 255.0f;
 
+    // What both references read alike: the read-back images and the GPU frame's inputs.
+    const auto fill = [&](auto& fi) {
+        fi.width = out.width;
+        fi.height = out.height;
+        fi.color = color;
+        fi.depth = depth;
+        fi.depthConvention.reversedZ = r.options.reversedZ;
+        fi.depthConvention.infiniteFar = r.options.infiniteFar;
+        fi.camera = in.camera;
+        fi.camera.projection = projection;
+        fi.sun = in.sun;
+        fi.ambient = in.ambient;
+        fi.timeSeconds = in.timeSeconds;
+        if (shadows) {
+            fi.shadowDepth = shadowDepth;
+            fi.shadowWidth = shadowExtent.width;
+            fi.shadowHeight = shadowExtent.height;
+            fi.shadowWorldToClip = in.shadowMap.worldToClip;
+            fi.shadowReversedZ = in.shadowMap.reversedZ;
+            fi.shadowDepthBias = in.shadowMap.depthBias;
+        }
+        if (noise) {
+            fi.noise = noiseTexels01;
+            fi.noiseSize = noiseSize;
+        }
+        fi.stepsPerPixel = stepsPerPixel;
+        fi.threads = 0;  // all hardware threads
+    };
+    if (froxel) {
+        postfx::reference::FroxelFogInputs fi;
+        fill(fi);
+        fi.settings = in.froxelFog;              // its volumes point into scene.froxelVolumes
+        std::vector<postfx::LocalLight> lights;  // as the GPU frame gives them (Impl::frameInfo)
+        for (const Light& l : scene.lights)
+            lights.push_back(toLocalLight(l));
+        fi.lights = lights;
+        if (const postfx::Status s = postfx::reference::renderFroxelFog(fi, out.rgba); !s.ok()) {
+            error = "froxel fog reference: " + s.message;
+            return false;
+        }
+        return true;
+    }
     postfx::reference::FogInputs fi;
-    fi.width = out.width;
-    fi.height = out.height;
-    fi.color = color;
-    fi.depth = depth;
-    fi.depthConvention.reversedZ = r.options.reversedZ;
-    fi.depthConvention.infiniteFar = r.options.infiniteFar;
-    fi.camera = in.camera;
-    fi.camera.projection = projection;
-    fi.sun = in.sun;
-    fi.ambient = in.ambient;
-    fi.timeSeconds = in.timeSeconds;
+    fill(fi);
     fi.settings = in.fog;
-    if (shadows) {
-        fi.shadowDepth = shadowDepth;
-        fi.shadowWidth = shadowExtent.width;
-        fi.shadowHeight = shadowExtent.height;
-        fi.shadowWorldToClip = in.shadowMap.worldToClip;
-        fi.shadowReversedZ = in.shadowMap.reversedZ;
-        fi.shadowDepthBias = in.shadowMap.depthBias;
-    }
-    if (noise) {
-        fi.noise = noiseTexels01;
-        fi.noiseSize = noiseSize;
-    }
-    fi.stepsPerPixel = stepsPerPixel;
-    fi.threads = 0;  // all hardware threads
     if (const postfx::Status s = postfx::reference::renderFog(fi, out.rgba); !s.ok()) {
         error = "fog reference: " + s.message;
         return false;

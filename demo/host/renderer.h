@@ -83,12 +83,15 @@ public:
     bool render(const Scene& scene, ImageF& out, std::string& error);
 
     // The same frame as render() (index options.frames - 1) with postfx's fog replaced by its CPU
-    // reference (postfx::reference::renderFog, double precision, `stepsPerPixel` midpoint steps, no
-    // jitter, all CPU threads). The GPU renders the frame up to lighting; postfx runs too, writing to
-    // a scratch image, so that the noise texture it generates can be read back while the HDR image
-    // keeps the un-fogged scene. Read back: HDR color, depth, shadow map (when drawn), noise (when
-    // on); the camera, sun, ambient, shadow and time inputs are those of the GPU frame. Without fog
-    // the result is the un-fogged scene. `out` has render()'s layout. Calls setScene(scene) first.
+    // reference (postfx::reference::renderFog for scene.fog, renderFroxelFog for scene.froxelFog with
+    // the scene's lights and fog volumes; double precision, `stepsPerPixel` midpoint steps, no jitter,
+    // all CPU threads). The GPU renders the frame up to lighting; postfx runs too, writing to a scratch
+    // image, so that the noise texture it generates can be read back while the HDR image keeps the
+    // un-fogged scene (for the froxel fog, whose noise postfx generates as the ray-marched fog's, a
+    // ray-marched fog with the same noise stands in for it in that frame: the texture depends only on
+    // its size and seed). Read back: HDR color, depth, shadow map (when drawn), noise (when on); the
+    // camera, sun, ambient, lights, shadow and time inputs are those of the GPU frame. Without fog the
+    // result is the un-fogged scene. `out` has render()'s layout. Calls setScene(scene) first.
     // `stride` > 1 evaluates the reference only at the pixels (x, y) with x and y multiples of
     // `stride` (CPU time / stride²): `out` is then ceil(W / stride) x ceil(H / stride), its pixel
     // (i, j) being the frame's pixel (i · stride, j · stride).
@@ -100,7 +103,8 @@ public:
     bool setScene(const Scene& scene, std::string& error);
 
     // Records one frame into `cmd` (recording, outside a render pass): frame uniforms, shadow map
-    // (when scene.sun.shadows), G-buffer, lighting, then postfx (scene.fog; time frameIndex / 60 s).
+    // (when scene.sun.shadows), G-buffer, lighting, then postfx (scene.fog, scene.froxelFog; time
+    // frameIndex / 60 s).
     // Geometry comes from the last setScene(); camera, sun, ambient, sky and fog from `scene`.
     // Frames execute in recording order on host.queue; before recording frame k the caller waits
     // for frame k - kFramesInFlight. After it, hdrImage() is in GENERAL with COMPUTE_SHADER writes
@@ -115,10 +119,11 @@ public:
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                      const postfx::ImageInput& fogOutput, std::string& error);
     // What recordFrame(cmd, scene, frameIndex) gives postfx: images (HDR color in GENERAL, depth and
-    // shadow map in the layouts they rest in), time, camera, sun, ambient, shadow map, scene.fog and
-    // scene.lights (FrameInfo::lights points into the renderer: valid until its next frame or
-    // frameInputs call). For a host pass that wants exactly postfx's inputs after recordFrame (the
-    // benchmark's baselines). Records nothing.
+    // shadow map in the layouts they rest in), time, camera, sun, ambient, shadow map, scene.fog,
+    // scene.froxelFog and scene.lights (FrameInfo::lights points into the renderer: valid until its next
+    // frame or frameInputs call; FrameInfo::froxelFog.volumes points into scene.froxelVolumes: valid while
+    // `scene` lives and its froxelVolumes is unchanged, froxelFogSettings). For a host pass that wants
+    // exactly postfx's inputs after recordFrame (the benchmark's baselines). Records nothing.
     postfx::FrameInfo frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const;
 
     // postfx's plan (docs/frame-plan.md) for frame `frameIndex` of `scene` as recordFrame(cmd, scene,

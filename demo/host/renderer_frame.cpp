@@ -94,6 +94,7 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
         in.shadowMap.depthBias = shadowDepthBias(fit);
     }
     in.fog = scene.fog;
+    in.froxelFog = froxelFogSettings(scene);
     return in;
 }
 
@@ -123,6 +124,7 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     frame.lightCount = uint32_t(localLights.size());
     frame.shadowMap = in.shadowMap;
     frame.fog = in.fog;
+    frame.froxelFog = in.froxelFog;  // its volumes point into scene.froxelVolumes
     return frame;
 }
 

@@ -16,8 +16,8 @@
 namespace demo {
 
 // What postfx is told about one frame besides the images: built by ONE function
-// (Renderer::Impl::postfxInputs) for both the GPU frame (postfx::FrameInfo) and the CPU reference
-// (postfx::reference::FogInputs), so that the two cannot diverge.
+// (Renderer::Impl::postfxInputs) for both the GPU frame (postfx::FrameInfo) and the CPU references
+// (postfx::reference::FogInputs, FroxelFogInputs), so that the two cannot diverge.
 struct PostfxInputs {
     double timeSeconds = 0.0;
     postfx::CameraInput camera;
@@ -25,6 +25,8 @@ struct PostfxInputs {
     glm::vec3 ambient{0.0f};
     postfx::ShadowMapInput shadowMap;  // image empty when the frame does not draw the shadow map
     postfx::FogSettings fog;
+    // froxelFogSettings(scene): its volumes point into the scene's froxelVolumes.
+    postfx::FroxelFogSettings froxelFog;
 };
 
 struct Renderer::Impl {

@@ -1,21 +1,23 @@
-// The `effects` object of scene files and its `fog` settings (docs/scene-format.md#effects);
-// internal to demo_scene.
+// The `effects` object of scene files: its `fog` (ray-marched) and `froxel_fog` settings
+// (docs/scene-format.md#effects); internal to demo_scene.
 #pragma once
 
-#include <postfx/fog.h>
 #include <nlohmann/json.hpp>
 
 #include <string>
 
 namespace demo {
 
-// Reads `effects` (at key path `path`) into `fog`. Unknown keys and bad values throw
-// json_read::ReadError naming the key path ("effects.fog.steps: 0 is outside [1, 4096]").
-// Without `effects.fog` the fog keeps FogSettings' defaults (disabled); with it, `enabled` defaults
-// to true (and likewise for `effects.fog.noise`).
-void readEffects(const nlohmann::json& effects, const std::string& path, postfx::FogSettings& fog);
+struct Scene;
 
-// The `effects` object with every fog key written, in the form readEffects reads back exactly.
-nlohmann::json effectsToJson(const postfx::FogSettings& fog);
+// Reads `effects` (at key path `path`) into scene.fog, scene.froxelFog and scene.froxelVolumes. Unknown
+// keys and bad values throw json_read::ReadError naming the key path ("effects.fog.steps: 0 is outside
+// [1, 4096]"). Without `effects.fog` the fog keeps FogSettings' defaults (disabled); with it, `enabled`
+// defaults to true (and likewise for `effects.fog.noise` and for `effects.froxel_fog`). Both fogs enabled
+// is an error naming both keys: postfx draws one of them per frame.
+void readEffects(const nlohmann::json& effects, const std::string& path, Scene& scene);
+
+// The `effects` object with every key of both fogs written, in the form readEffects reads back exactly.
+nlohmann::json effectsToJson(const Scene& scene);
 
 }  // namespace demo

@@ -261,7 +261,7 @@ Scene readScene(const json& root) {
         scene.objects.push_back(readObject(objects[i], element("objects", i)));
 
     if (const json* lights = find(root, "lights")) scene.lights = readLights(*lights, "lights");
-    if (const json* effects = find(root, "effects")) readEffects(*effects, "effects", scene.fog);
+    if (const json* effects = find(root, "effects")) readEffects(*effects, "effects", scene);
     return scene;
 }
 
@@ -362,8 +362,15 @@ nlohmann::json sceneToJson(const Scene& scene) {
     }
     j["objects"] = std::move(objects);
     j["lights"] = lightsToJson(scene.lights);
-    j["effects"] = effectsToJson(scene.fog);
+    j["effects"] = effectsToJson(scene);
     return j;
+}
+
+postfx::FroxelFogSettings froxelFogSettings(const Scene& scene) {
+    postfx::FroxelFogSettings s = scene.froxelFog;
+    s.volumes = scene.froxelVolumes.empty() ? nullptr : scene.froxelVolumes.data();
+    s.volumeCount = uint32_t(scene.froxelVolumes.size());
+    return s;
 }
 
 Scene defaultScene() {

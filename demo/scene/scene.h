@@ -5,6 +5,7 @@
 #include "scene/light.h"
 
 #include <postfx/fog.h>
+#include <postfx/froxel_fog.h>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -73,7 +74,19 @@ struct Scene {
     std::vector<Light> lights;
     // effects.fog: postfx's ray-marched fog (docs/effects/fog.md); disabled unless the file has it.
     postfx::FogSettings fog;
+    // effects.froxel_fog: postfx's froxel fog (docs/effects/froxel-fog.md); disabled unless the file has
+    // it, and never enabled together with `fog` (the loader rejects that). Its `volumes` pointer stays
+    // null and volumeCount 0: the volumes live in froxelVolumes, and froxelFogSettings(scene) points the
+    // settings there for a frame.
+    postfx::FroxelFogSettings froxelFog;
+    // effects.froxel_fog.volumes: its local fog volumes, at most postfx::kMaxFogVolumes.
+    std::vector<postfx::FogVolume> froxelVolumes;
 };
+
+// scene.froxelFog with its volumes pointing into scene.froxelVolumes (volumeCount their number), as the
+// renderer gives it to postfx (FrameInfo::froxelFog): valid while `scene` lives and its froxelVolumes is
+// not changed.
+postfx::FroxelFogSettings froxelFogSettings(const Scene& scene);
 
 // Parses a scene from JSON text. On failure returns false and sets `error` to one line naming the
 // key path, e.g. "objects[2].radius: expected a number in (0, 1e7], got -1".

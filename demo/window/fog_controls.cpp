@@ -1,5 +1,7 @@
 #include "window/fog_controls.h"
 
+#include "window/medium_controls.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -10,12 +12,14 @@
 namespace demo::window {
 namespace {
 
+using widgets::clampOrLow;
+using widgets::sliderUint;
+using widgets::tooltip;
+
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
 
-// The choices of the two combos (all values postfx accepts).
-constexpr std::array<uint32_t, 5> kTextureSizes{16, 32, 64, 128, 256};
-constexpr std::array<const char*, 5> kTextureSizeNames{"16", "32", "64", "128", "256"};
+// The choices of the shadow kernel combo (all values postfx accepts).
 constexpr std::array<uint32_t, 4> kShadowKernels{1, 3, 5, 7};
 constexpr std::array<const char*, 4> kShadowKernelNames{"1 x 1", "3 x 3", "5 x 5", "7 x 7"};
 constexpr int kQualityCount = int(postfx::FogQuality::Auto) + 1;  // Custom .. Auto
@@ -23,12 +27,7 @@ constexpr int kQualityCount = int(postfx::FogQuality::Auto) + 1;  // Custom .. A
 // Limits postfx puts on the sun (SunInput): each illuminance channel in [0, 1e7] lux.
 constexpr float kMaxIlluminance = 1e7f;
 
-// v clamped to [lo, hi]; NaN becomes lo.
-float clampOrLow(float v, float lo, float hi) {
-    return v >= lo ? (v <= hi ? v : hi) : lo;
-}
-
-// Index of `value` in `choices`, or of the nearest one (by ratio: the choices are powers of two or odd).
+// Index of `value` in `choices`, or of the nearest one (by ratio: the choices are odd sizes).
 template <size_t N>
 int choiceIndex(const std::array<uint32_t, N>& choices, uint32_t value) {
     int best = 0;
@@ -40,13 +39,6 @@ int choiceIndex(const std::array<uint32_t, N>& choices, uint32_t value) {
     return best;
 }
 
-bool sliderUint(const char* label, uint32_t& value, int lo, int hi) {
-    int v = int(std::min<uint32_t>(value, uint32_t(INT32_MAX)));
-    if (!ImGui::SliderInt(label, &v, lo, hi, "%d", kClamp)) return false;
-    value = uint32_t(std::clamp(v, lo, hi));
-    return true;
-}
-
 template <size_t N>
 bool combo(const char* label, uint32_t& value, const std::array<uint32_t, N>& choices,
            const std::array<const char*, N>& names) {
@@ -54,28 +46,6 @@ bool combo(const char* label, uint32_t& value, const std::array<uint32_t, N>& ch
     if (!ImGui::Combo(label, &index, names.data(), int(N))) return false;
     value = choices[size_t(std::clamp(index, 0, int(N) - 1))];
     return true;
-}
-
-void tooltip(const char* text) {
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
-}
-
-bool buildNoise(postfx::FogNoiseSettings& n) {
-    bool changed = false;
-    changed |= ImGui::Checkbox("enabled", &n.enabled);
-    tooltip("modulate the extinction by a tileable Perlin-Worley noise texture");
-    changed |= combo("texture size [texels]", n.textureSize, kTextureSizes, kTextureSizeNames);
-    tooltip("edge of the cubic texture postfx generates (again when the size or seed changes)");
-    const uint32_t step = 1;
-    changed |= ImGui::InputScalar("seed", ImGuiDataType_U32, &n.seed, &step, nullptr, "%u");
-    changed |= ImGui::SliderFloat("tiling [1/(100 m)]", &n.tiling, 0.1f, 50.0f, "%.3g", kLog);
-    tooltip("the texture repeats every 100/tiling metres");
-    changed |= ImGui::SliderFloat("threshold", &n.threshold, 0.0f, 1.0f, "%.3f", kClamp);
-    tooltip("noise = clamp(texel - threshold, 0, 1) * multiplier");
-    changed |= ImGui::SliderFloat("multiplier", &n.multiplier, 0.0f, 10.0f, "%.2f", kClamp);
-    changed |= ImGui::DragFloat3("wind [m/s]", &n.wind.x, 0.05f, -100.0f, 100.0f, "%.2f", kClamp);
-    tooltip("velocity of the noise field");
-    return changed;
 }
 
 // The quality combo and the four knobs a preset sets. With a preset they show the preset's values and
@@ -115,33 +85,21 @@ bool buildQuality(postfx::FogSettings& f) {
 bool buildFog(postfx::FogSettings& f) {
     bool changed = false;
     changed |= ImGui::Checkbox("enabled", &f.enabled);
-    changed |= ImGui::SliderFloat("density [1/m]", &f.density, 1e-4f, 1.0f, "%.4g", kLog);
-    tooltip("extinction at the base height where noise = 1; 0.02/m: ~150 m visibility");
-    changed |= ImGui::ColorEdit3("albedo", &f.albedo.x, ImGuiColorEditFlags_Float);
-    tooltip("single-scattering albedo per RGB channel, plain numbers in [0, 1]");
-    changed |= ImGui::SliderFloat("anisotropy g", &f.anisotropy, -0.99f, 0.99f, "%.2f", kClamp);
-    tooltip("Henyey-Greenstein g; > 0 scatters forward (brightest toward the sun)");
-    changed |= ImGui::SliderFloat("height falloff [1/m]", &f.heightFalloff, 0.0f, 1.0f, "%.3g", kLog);
-    tooltip("density ~ exp(-falloff * (y - base height)); 0: homogeneous");
-    changed |= ImGui::SliderFloat("base height [m]", &f.baseHeight, -50.0f, 50.0f, "%.2f", kClamp);
-    changed |= ImGui::SliderFloat("max distance [m]", &f.maxDistance, 1.0f, 2000.0f, "%.1f", kLog);
-    tooltip("march length limit (then the analytic tail)");
+    tooltip("the ray-marched fog; turning it on turns the froxel fog off (postfx draws one of them)");
+    changed |= buildMediumControls(f);  // the medium, its noise included
     changed |= buildQuality(f);
-    changed |= ImGui::Checkbox("self shadow", &f.selfShadow);
-    ImGui::SameLine();
-    changed |= ImGui::Checkbox("analytic tail", &f.analyticTail);
     changed |= ImGui::SliderFloat("transmittance cutoff", &f.transmittanceCutoff, 0.0f, 0.1f, "%.4f", kClamp);
     tooltip("stop marching below this transmittance; 0: never early");
-    if (ImGui::TreeNode("Noise")) {
-        changed |= buildNoise(f.noise);
-        ImGui::TreePop();
-    }
     return changed;
 }
 
 }  // namespace
 
-FogControls::FogControls(const Scene& sceneFile) : fileFog_(sceneFile.fog), fileSun_(sceneFile.sun) {
+FogControls::FogControls(const Scene& sceneFile)
+    : fileFog_(sceneFile.fog),
+      fileFroxelFog_(sceneFile.froxelFog),
+      fileVolumes_(sceneFile.froxelVolumes),
+      fileSun_(sceneFile.sun) {
     takeSun(fileSun_);
 }
 
@@ -173,15 +131,7 @@ glm::vec3 FogControls::sunIlluminance() const {
 }
 
 void FogControls::sanitize(postfx::FogSettings& f) {
-    f.density = clampOrLow(f.density, 0.0f, 1e6f);
-    for (int c = 0; c < 3; ++c)
-        f.albedo[c] = clampOrLow(f.albedo[c], 0.0f, 1.0f);
-    f.anisotropy = clampOrLow(f.anisotropy, -1.0f, 1.0f);
-    f.heightFalloff = clampOrLow(f.heightFalloff, 0.0f, 10.0f);
-    if (!std::isfinite(f.baseHeight))
-        f.baseHeight = std::isnan(f.baseHeight) ? 0.0f : std::clamp(f.baseHeight, -1e6f, 1e6f);
-    if (!(f.maxDistance > 0.0f)) f.maxDistance = 1.0f;  // also NaN
-    f.maxDistance = std::min(f.maxDistance, 1e7f);
+    sanitizeMedium(f);
     f.steps = std::clamp<uint32_t>(f.steps, 1, 4096);
     if (int(f.quality) < 0 || int(f.quality) >= kQualityCount) f.quality = postfx::FogQuality::Custom;
     if (!(f.autoBudgetMs > 0.0f)) f.autoBudgetMs = 0.05f;  // also NaN
@@ -189,34 +139,32 @@ void FogControls::sanitize(postfx::FogSettings& f) {
     f.resolutionScale = clampOrLow(f.resolutionScale, 0.25f, 1.0f);
     f.transmittanceCutoff = clampOrLow(f.transmittanceCutoff, 0.0f, 0.999f);
     f.shadowKernel = std::clamp<uint32_t>(f.shadowKernel | 1u, 1, 7);  // odd: even sizes round up
-    postfx::FogNoiseSettings& n = f.noise;
-    n.textureSize = kTextureSizes[size_t(choiceIndex(kTextureSizes, n.textureSize))];
-    if (!(n.tiling > 0.0f)) n.tiling = 0.1f;  // also NaN
-    n.tiling = std::min(n.tiling, 1000.0f);
-    n.threshold = clampOrLow(n.threshold, 0.0f, 1.0f);
-    n.multiplier = clampOrLow(n.multiplier, 0.0f, 1e3f);
-    for (int c = 0; c < 3; ++c)
-        n.wind[c] = clampOrLow(n.wind[c], -1e3f, 1e3f);
 }
 
 bool FogControls::build(Scene& scene) {
     bool changed = false;
     if (ImGui::Button("Reset to scene file")) {
         scene.fog = fileFog_;
+        scene.froxelFog = fileFroxelFog_;
+        scene.froxelVolumes = fileVolumes_;
         scene.sun.direction = fileSun_.direction;
         scene.sun.illuminance = fileSun_.illuminance;
         takeSun(fileSun_);
         changed = true;
     }
-    tooltip("fog and sun as the scene file has them (the camera stays)");
+    tooltip("both fogs, the fog volumes and the sun as the scene file has them (the camera and lights stay)");
 
     ImGui::PushID("fog");
-    if (ImGui::CollapsingHeader("Fog", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // Open at first, unless the scene shows the froxel fog instead (once: later the user decides).
+    ImGui::SetNextItemOpen(!(scene.froxelFog.enabled && !scene.fog.enabled), ImGuiCond_Once);
+    if (ImGui::CollapsingHeader("Fog")) {
         postfx::FogSettings edited = scene.fog;
         if (buildFog(edited)) {
             sanitize(edited);
             // sanitize makes every field valid; should a check ever disagree, keep the last settings.
             if (postfx::validateFogSettings(edited).ok()) {
+                // postfx draws one fog per frame: turning this one on turns the froxel fog off.
+                if (edited.enabled && !scene.fog.enabled) scene.froxelFog.enabled = false;
                 scene.fog = edited;
                 changed = true;
             }

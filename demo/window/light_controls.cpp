@@ -27,7 +27,19 @@ void split(const glm::vec3& intensity, glm::vec3& colour, float& candela) {
     colour = candela > 0.0f ? intensity / candela : glm::vec3(1.0f);
 }
 
-bool buildLight(Light& l) {
+// The camera's unit view direction (-z when look_at is the camera's position).
+glm::vec3 viewDirection(const Camera& camera) {
+    const glm::vec3 view = camera.lookAt - camera.position;
+    const float length = std::sqrt(glm::dot(view, view));
+    return length > 0.0f ? view / length : glm::vec3(0.0f, 0.0f, -1.0f);
+}
+
+// A point `distance` metres in front of the camera.
+glm::vec3 inFront(const Camera& camera, float distance) {
+    return camera.position + distance * viewDirection(camera);
+}
+
+bool buildLight(Light& l, const Camera& camera) {
     bool changed = false;
     int kind = l.kind == LightKind::Spot ? 1 : 0;
     if (ImGui::Combo("type", &kind, "point\0spot\0")) {
@@ -36,6 +48,11 @@ bool buildLight(Light& l) {
     }
     changed |= ImGui::DragFloat3("position [m]", &l.position.x, 0.05f, -kMaxCoordinate, kMaxCoordinate,
                                  "%.2f", kClamp);
+    if (ImGui::Button("move in front of the camera")) {
+        l.position = inFront(camera, 5.0f);
+        changed = true;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("5 m ahead along the view");
     glm::vec3 colour;
     float candela;
     split(l.intensity, colour, candela);
@@ -54,6 +71,11 @@ bool buildLight(Light& l) {
             l.direction = length > 1e-6f ? l.direction / length : glm::vec3(0.0f, -1.0f, 0.0f);
             changed = true;
         }
+        if (ImGui::Button("aim along the view")) {
+            l.direction = viewDirection(camera);
+            changed = true;
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("the cone's axis becomes the camera's view direction");
         changed |=
             ImGui::SliderFloat("outer angle [deg]", &l.outerAngleDeg, 0.0f, kMaxOuterDeg, "%.1f", kClamp);
         changed |=
@@ -89,7 +111,7 @@ bool LightControls::build(Scene& scene) {
         const std::string label =
             std::string(l.kind == LightKind::Spot ? "spot " : "point ") + std::to_string(i);
         if (ImGui::TreeNode(label.c_str())) {
-            changed |= buildLight(l);
+            changed |= buildLight(l, scene.camera);
             if (ImGui::Button("remove")) remove = int(i);
             ImGui::TreePop();
         }
@@ -101,8 +123,8 @@ bool LightControls::build(Scene& scene) {
         changed = true;
     }
     if (scene.lights.size() < postfx::kMaxLocalLights && ImGui::Button("add light")) {
-        Light l;  // 2 m above the origin, white, 100 cd
-        l.position = {0.0f, 2.0f, 0.0f};
+        Light l;  // 5 m in front of the camera, white, 100 cd
+        l.position = inFront(scene.camera, 5.0f);
         l.intensity = glm::vec3(100.0f);
         l.range = 30.0f;
         l.radius = 0.1f;

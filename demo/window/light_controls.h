@@ -1,5 +1,7 @@
 // The windowed demo's "Lights" section of the ImGui panel: one collapsible entry per scene light
-// (position, colour and intensity, radius, range, spot direction and angles), add and remove buttons.
+// (position, with a button moving it 5 m in front of the camera; colour and intensity; radius, range; spot
+// direction, with a button aiming it along the view, and angles), add (in front of the camera) and remove
+// buttons.
 // Every value it leaves in the scene is within the range the scene loader and postfx accept
 // (docs/scene-format.md#lights), so Context::record never fails because of the UI.
 #pragma once

@@ -5,6 +5,7 @@
 #include "host/vulkan_host.h"
 #include "window/fly_camera.h"
 #include "window/fog_controls.h"
+#include "window/froxel_fog_controls.h"
 #include "window/light_controls.h"
 #include "window/swapchain.h"
 #include "window/tonemap_pass.h"
@@ -72,8 +73,9 @@ private:
     VkExtent2D renderExtent_{0, 0};
     TonemapPass tonemap_;
     std::unique_ptr<UiOverlay> ui_;
-    FogControls fogControls_;      // edits scene_.fog and scene_.sun from the overlay's panel
-    LightControls lightControls_;  // edits scene_.lights
+    FogControls fogControls_;              // edits scene_.fog and scene_.sun from the overlay's panel
+    FroxelFogControls froxelFogControls_;  // edits scene_.froxelFog and scene_.froxelVolumes
+    LightControls lightControls_;          // edits scene_.lights
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers_{};
     std::array<VkFence, kFramesInFlight> fences_{};              // signalled when the slot's frame completed
     std::array<VkSemaphore, kFramesInFlight> imageAvailable_{};  // acquire -> the slot's submission
@@ -283,10 +285,12 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         stats_.pitchDeg = camera_.pitchDeg();
         stats_.renderExtent = renderExtent_;
         stats_.fogQuality = fogQualityText();
-        // The fog controls edit scene_ before this frame records it (Renderer::recordFrame takes fog, sun
-        // and camera from scene_ every frame); their values are always valid for postfx.
+        // The controls edit scene_ before this frame records it (Renderer::recordFrame takes both fogs, the
+        // fog volumes, lights, sun and camera from scene_ every frame); their values are always valid for
+        // postfx, and at most one of the two fogs is on.
         ui_->build(stats_, [this] {
             fogControls_.build(scene_);
+            froxelFogControls_.build(scene_);
             lightControls_.build(scene_);
         });
     }

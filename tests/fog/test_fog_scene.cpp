@@ -221,7 +221,7 @@ TEST(FogScene, EveryKeyRoundTrips) {
     // Every key is written, with the value read.
     const json& fog = out["effects"]["fog"];
     const json in = everyKey();
-    EXPECT_EQ(out["effects"].size(), 1u);
+    EXPECT_EQ(out["effects"].size(), 2u);  // fog and froxel_fog (off), every key of both written
     EXPECT_EQ(fog.size(), in.size());
     EXPECT_EQ(fog["noise"].size(), in["noise"].size());
     for (const auto& [key, value] : in.items()) {
@@ -321,12 +321,14 @@ std::vector<FogRejection> fogRejections() {
     };
     return {
         // unknown keys, at every level
-        {"UnknownEffect", {{"clouds", json::object()}}, "effects.clouds: unknown key (expected fog)"},
+        {"UnknownEffect",
+         {{"clouds", json::object()}},
+         "effects.clouds: unknown key (expected fog or froxel_fog)"},
         {"UnknownFogKey", fog("/colour", {1, 1, 1}),
          "effects.fog.colour: unknown key (expected enabled, density, albedo, anisotropy, height_falloff, "
-         "base_height, max_distance, steps, jitter, resolution_scale, transmittance_cutoff, self_shadow, "
-         "analytic_tail, skip_empty_space, "
-         "shadow_kernel, quality, auto_budget_ms or noise)"},
+         "base_height, max_distance, self_shadow, analytic_tail, noise, steps, jitter, resolution_scale, "
+         "transmittance_cutoff, skip_empty_space, shadow_kernel, quality or auto_budget_ms)"},
+        {"FroxelKeyInFog", fog("/grid", {8, 8, 8}), "effects.fog.grid: unknown key"},
         {"UnknownNoiseKey", fog("/noise/octaves", 4),
          "effects.fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, threshold, "
          "multiplier or wind)"},

@@ -32,9 +32,10 @@ namespace {
 using json = nlohmann::json;
 
 // Values at the edges of the scene format's ranges and of float.
-constexpr double kEdgeValues[] = {
-    0.0, -0.0,        1.0, -1.0, 0.5,  1e-45,  1e-38,   1e-30, 1e-6,  1e-3, 0.01,   179.0,  180.0,       1e6,
-    1e7, 1.0000001e7, 1e9, 1e19, 3e38, 3.4e38, -3.4e38, -1e7,  -30.0, 30.0, 4096.0, 4097.0, 4294967295.0};
+constexpr double kEdgeValues[] = {0.0,    -0.0,   1.0,          -1.0,   0.5,     1e-45, 1e-38, 1e-30,
+                                  1e-6,   1e-3,   0.01,         179.0,  180.0,   1e6,   1e7,   1.0000001e7,
+                                  1e9,    1e19,   3e38,         3.4e38, -3.4e38, -1e7,  -30.0, 30.0,
+                                  4096.0, 4097.0, 4294967295.0, 8.0,    64.0,    512.0, 513.0};
 
 void collect(json& j, std::vector<json*>& numbers, std::vector<json*>& arrays) {
     if (j.is_number()) numbers.push_back(&j);

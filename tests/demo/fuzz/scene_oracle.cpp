@@ -75,7 +75,8 @@ std::string frameProblem(const Scene& scene, VkExtent2D extent, bool reversedZ, 
         frame.shadowMap.depthBias = shadowDepthBias(fit);
     }
     frame.fog = scene.fog;
-    std::vector<postfx::LocalLight> lights;  // as renderer_frame.cpp passes them
+    frame.froxelFog = froxelFogSettings(scene);  // as renderer_frame.cpp passes it
+    std::vector<postfx::LocalLight> lights;      // as renderer_frame.cpp passes them
     for (const Light& l : scene.lights)
         lights.push_back(toLocalLight(l));
     frame.lights = lights.data();
@@ -140,6 +141,13 @@ std::string renderProblem(const Scene& scene) {
             if (postfx::Status st = postfx::validateFogSettings(s); !st)
                 return "postfx rejects the fog: " + st.message;
         }
+    }
+    // The froxel fog as postfx checks it (validateFroxelFogSettings, with the scene's volumes), and never
+    // together with the ray-marched fog (Context::record rejects both in one frame).
+    if (scene.froxelFog.enabled) {
+        if (scene.fog.enabled) return "fog and froxel fog both enabled";
+        if (postfx::Status st = postfx::validateFroxelFogSettings(froxelFogSettings(scene)); !st)
+            return "postfx rejects the froxel fog: " + st.message;
     }
     return "";
 }

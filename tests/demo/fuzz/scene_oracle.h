@@ -13,7 +13,8 @@ namespace demo::fuzz {
 // It computes what the renderer computes, with the renderer's own functions: the meshes
 // (buildSceneMesh), the camera matrices and the float inverse the G-buffer uses, the shadow fit and its
 // depth bias, the PNG exposure; and runs postfx's own checks of the frame (core::checkSharedInputs with
-// stand-in image handles, the fog's settings under every quality preset) for the extreme image shapes
+// stand-in image handles, the fog's settings under every quality preset, the froxel fog's settings with
+// the scene's volumes, never both fogs at once) for the extreme image shapes
 // postfx-render allows (1x16384, 16384x1, 64x64), both depth conventions, with and without a far plane.
 std::string renderProblem(const Scene& scene);
 
