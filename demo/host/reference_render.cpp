@@ -43,30 +43,6 @@ std::vector<float> floatsAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t
     return out;
 }
 
-// The scene the GPU renders for renderReference when it has froxel fog, whose reference runs on the CPU:
-// the froxel fog off, and in its place a ray-marched fog that only makes postfx generate the noise
-// texture the froxel fog reads (the texture depends on its size and seed only; postfx's public API reads
-// it back through the ray-marched fog, recordFogNoiseReadback). Its max_distance is the froxel fog's, so
-// the shadow map is fitted as for `scene` (fitShadowMap); without noise its density is 0 and postfx
-// records nothing for it.
-Scene noiseStandIn(const Scene& scene) {
-    Scene s = scene;
-    const postfx::FroxelFogSettings& froxel = scene.froxelFog;
-    s.froxelFog.enabled = false;
-    s.fog = postfx::FogSettings{};
-    s.fog.enabled = true;
-    s.fog.maxDistance = froxel.maxDistance;
-    s.fog.steps = 1;
-    s.fog.jitter = false;
-    s.fog.analyticTail = false;
-    const bool noise = froxel.noise.enabled && !froxel.noise.hostTexture;
-    s.fog.density = noise ? 1.0f : 0.0f;
-    s.fog.noise.enabled = noise;
-    s.fog.noise.textureSize = froxel.noise.textureSize;
-    s.fog.noise.seed = froxel.noise.seed;
-    return s;
-}
-
 }  // namespace
 
 bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel,
@@ -89,12 +65,8 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     if (!setScene(scene, error)) return false;  // also waits for the device to be idle
 
     const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns
-    // What the GPU renders: the scene, or with froxel fog its noise stand-in (same geometry, lights and
-    // shadow fit).
     const bool froxel = scene.froxelFog.enabled;
-    Scene standIn;
-    if (froxel) standIn = noiseStandIn(scene);
-    const Scene& gpuScene = froxel ? standIn : scene;
+    const Scene& gpuScene = scene;
     const ShadowFit fit = r.shadowFit(gpuScene);
     const bool shadows = r.drawsShadows(gpuScene, fit, frameIndex);
     const PostfxInputs in = r.postfxInputs(scene, frameIndex, fit, shadows);
@@ -106,7 +78,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     // With fog, postfx runs as in render() but writes to a scratch image: it validates the inputs and
     // generates the noise texture, and the HDR image keeps the un-fogged scene.
     postfx::ImageInput fogOutput;
-    if (gpuScene.fog.enabled) {
+    if (gpuScene.fog.enabled || froxel) {
         if (!r.fogScratch.image &&
             !createImage(r.host, r.hdr.format, r.extent, VK_IMAGE_USAGE_STORAGE_BIT, r.fogScratch, error))
             return false;
@@ -151,8 +123,13 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         recordDepthCopy(cmd, r.gbuffer.depth, buffer, depthOffset);
         if (shadows) recordDepthCopy(cmd, r.shadow.depth, buffer, shadowOffset);
         if (noise) {
-            const postfx::Status s =
-                postfx::recordFogNoiseReadback(*r.postfx, cmd, buffer.buffer, noiseOffset, noiseSize);
+            // The texture of whichever fog runs (kFogNoiseTexture or kFroxelFogNoiseTexture).
+            VkExtent3D extent{};
+            VkDeviceSize bytes = 0;
+            const postfx::Status s = r.postfx->recordImageReadback(
+                froxel ? postfx::kFroxelFogNoiseTexture : postfx::kFogNoiseTexture, cmd, buffer.buffer,
+                noiseOffset, extent, bytes);
+            noiseSize = extent.width;
             if (!s.ok()) {
                 error = "postfx noise readback: " + s.message;
                 return false;

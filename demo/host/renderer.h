@@ -87,14 +87,12 @@ public:
     // the scene's lights and fog volumes; double precision, `stepsPerPixel` midpoint steps, no jitter,
     // all CPU threads). The GPU renders the frame up to lighting; postfx runs too, writing to a scratch
     // image, so that the noise texture it generates can be read back while the HDR image keeps the
-    // un-fogged scene (for the froxel fog, whose noise postfx generates as the ray-marched fog's, a
-    // ray-marched fog with the same noise stands in for it in that frame: the texture depends only on
-    // its size and seed). Read back: HDR color, depth, shadow map (when drawn), noise (when on); the
-    // camera, sun, ambient, lights, shadow and time inputs are those of the GPU frame. Without fog the
-    // result is the un-fogged scene. `out` has render()'s layout. Calls setScene(scene) first.
-    // `stride` > 1 evaluates the reference only at the pixels (x, y) with x and y multiples of
-    // `stride` (CPU time / stride²): `out` is then ceil(W / stride) x ceil(H / stride), its pixel
-    // (i, j) being the frame's pixel (i · stride, j · stride).
+    // un-fogged scene (postfx::kFogNoiseTexture or kFroxelFogNoiseTexture). Read back: HDR color, depth,
+    // shadow map (when drawn), noise (when on); the camera, sun, ambient, lights, shadow and time inputs are
+    // those of the GPU frame. Without fog the result is the un-fogged scene. `out` has render()'s layout.
+    // Calls setScene(scene) first. `stride` > 1 evaluates the reference only at the pixels (x, y) with x and
+    // y multiples of `stride` (CPU time / stride²): `out` is then ceil(W / stride) x ceil(H / stride), its
+    // pixel (i, j) being the frame's pixel (i · stride, j · stride).
     bool renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel = 4096,
                          uint32_t stride = 1);
 
