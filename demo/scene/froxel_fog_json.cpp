@@ -12,8 +12,8 @@ namespace {
 using namespace json_read;
 
 // The froxel fog's own keys (besides "enabled" and the medium's).
-constexpr const char* kFroxelKeys[] = {
-    "grid", "tile_size_px", "depth_distribution", "depth_exponent", "tricubic", "jitter", "volumes"};
+constexpr const char* kFroxelKeys[] = {"grid",     "tile_size_px", "depth_distribution",    "depth_exponent",
+                                       "tricubic", "jitter",       "light_list_min_lights", "volumes"};
 constexpr const char* kBoxVolumeKeys[] = {"shape", "center", "half_size", "density", "edge_falloff"};
 constexpr const char* kSphereVolumeKeys[] = {"shape", "center", "radius", "density", "edge_falloff"};
 
@@ -109,6 +109,8 @@ void readFroxelFog(const json& j, const std::string& path, postfx::FroxelFogSett
         s.depthExponent = readNumber(*v, child(path, "depth_exponent"));
     if (const json* v = find(j, "tricubic")) s.tricubic = readBool(*v, child(path, "tricubic"));
     if (const json* v = find(j, "jitter")) s.jitter = readBool(*v, child(path, "jitter"));
+    if (const json* v = find(j, "light_list_min_lights"))
+        s.lightListMinLights = readUint32(*v, child(path, "light_list_min_lights"));
     std::vector<postfx::FogVolume> vs;
     if (const json* v = find(j, "volumes")) vs = readVolumes(*v, child(path, "volumes"));
 
@@ -134,6 +136,7 @@ json froxelFogToJson(const postfx::FroxelFogSettings& s, const std::vector<postf
               {"depth_exponent", number(s.depthExponent)},
               {"tricubic", s.tricubic},
               {"jitter", s.jitter},
+              {"light_list_min_lights", s.lightListMinLights},
               {"volumes", std::move(vs)}};
     medium_json::writeMedium(s, j);
     return j;

@@ -88,6 +88,7 @@ json everyKey() {
     j["depth_exponent"] = 3.5;
     j["tricubic"] = true;
     j["jitter"] = false;
+    j["light_list_min_lights"] = 257;
     json b = box();
     b["density"] = 0.5;
     b["edge_falloff"] = 0.25;
@@ -137,6 +138,7 @@ void expectSameFroxel(const Scene& a, const Scene& b) {
     EXPECT_EQ(x.depthExponent, y.depthExponent);
     EXPECT_EQ(x.tricubic, y.tricubic);
     EXPECT_EQ(x.jitter, y.jitter);
+    EXPECT_EQ(x.lightListMinLights, y.lightListMinLights);
     ASSERT_EQ(a.froxelVolumes.size(), b.froxelVolumes.size());
     for (size_t i = 0; i < a.froxelVolumes.size(); ++i)
         expectSameVolume(a.froxelVolumes[i], b.froxelVolumes[i]);
@@ -215,6 +217,7 @@ TEST(DemoSceneFroxel, EveryKeyIsRead) {
     EXPECT_EQ(f.depthExponent, 3.5f);
     EXPECT_TRUE(f.tricubic);
     EXPECT_FALSE(f.jitter);
+    EXPECT_EQ(f.lightListMinLights, 257u);
     // The settings never point anywhere: the volumes are the scene's.
     EXPECT_EQ(f.volumes, nullptr);
     EXPECT_EQ(f.volumeCount, 0u);
@@ -475,7 +478,7 @@ std::vector<FroxelRejection> froxelRejections() {
          "height_falloff, "
          "base_height, max_distance, self_shadow, analytic_tail, noise, grid, tile_size_px, "
          "depth_distribution, "
-         "depth_exponent, tricubic, jitter or volumes)"},
+         "depth_exponent, tricubic, jitter, light_list_min_lights or volumes)"},
         {"UnknownNoiseKey", froxel("/noise/octaves", 4),
          "effects.froxel_fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, "
          "threshold, multiplier or wind)"},
@@ -539,6 +542,8 @@ std::vector<FroxelRejection> froxelRejections() {
          "effects.froxel_fog.grid[0]: 513 is outside [1, 512]"},
         {"TileSizeTooLarge", froxel("/tile_size_px", 4097),
          "effects.froxel_fog.tile_size_px: 4097 is outside [0, 4096]"},
+        {"LightListMinLightsZero", froxel("/light_list_min_lights", 0),
+         "effects.froxel_fog.light_list_min_lights: 0 is outside [1, 257]"},
         {"ExponentBelowOne", froxel("/depth_exponent", 0.5),
          "effects.froxel_fog.depth_exponent: 0.5 is outside"},
         {"ExponentAboveEight", froxel("/depth_exponent", 9),
