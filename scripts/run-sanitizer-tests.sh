@@ -16,7 +16,8 @@ jobs=$(nproc)
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
     -DPOSTFX_SANITIZE=address,undefined -DPOSTFX_WERROR=ON -DPOSTFX_BUILD_DEMO=ON -DPOSTFX_BUILD_BENCH=OFF \
     -DPOSTFX_BUILD_TESTS=ON -DPOSTFX_BUILD_EXAMPLES=OFF >/dev/null
-cmake --build build-asan -j"$jobs" --target postfx unit_tests gpu_tests stability_tests postfx-render
+cmake --build build-asan -j"$jobs" --target postfx unit_tests gpu_tests stability_tests glm_config_tests \
+    postfx-render
 # halt_on_error: the first report ends the process (the build adds -fno-sanitize-recover=all, which
 # UBSan also needs at run time); detect_leaks: LeakSanitizer at exit, with the drivers' leaks suppressed.
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:abort_on_error=0:exitcode=23"

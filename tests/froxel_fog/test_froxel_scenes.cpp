@@ -34,16 +34,16 @@ protected:
         EXPECT_TRUE(r) << error;
         return r;
     }
-    // GPU against the reference (2048 steps): relative RMSE printed and below `maxRmse`.
+    // GPU against the reference (1024 steps): relative RMSE printed and below `maxRmse`.
     void expectNearReference(const char* name, double maxRmse) {
         const demo::Scene scene = load(name);
         ASSERT_TRUE(scene.froxelFog.enabled);
-        auto r = renderer(64, 36);
+        auto r = renderer(48, 27);
         ASSERT_TRUE(r);
         demo::ImageF gpu, reference;
         std::string error;
         ASSERT_TRUE(r->render(scene, gpu, error)) << error;
-        ASSERT_TRUE(r->renderReference(scene, reference, error, 2048)) << error;
+        ASSERT_TRUE(r->renderReference(scene, reference, error, 1024)) << error;
         const ImageStats stats = compareImages(gpu.rgba, reference.rgba, gpu.width, gpu.height, 0.05, 1.0);
         std::printf("[ froxel_fog ] %s: GPU vs reference %s\n", name, stats.summary().c_str());
         EXPECT_EQ(stats.nonFinite, 0u);
