@@ -23,9 +23,10 @@ namespace {
 constexpr uint32_t kFramesInFlight = demo::Renderer::kFramesInFlight;
 constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
-// Error frames start at a multiple of this (the fog's jitter pattern repeats every 64 frames), so every
-// setting averages the same jitter offsets.
-constexpr uint64_t kJitterPeriod = 64;
+// Error frames start at a multiple of this, so every setting averages the same jitter offsets: the
+// ray-marched fog's IGN pattern repeats every 64 frames, the froxel fog's Halton (2, 3, 5) samples every
+// 1024 (a multiple of 64: the ray-marched fog's frames are those of a period of 64).
+constexpr uint64_t kJitterPeriod = 1024;
 // A pixel is "off" when a channel differs by more than this fraction of the pixel's magnitude
 // max(max_c |reference_c|, kMagnitudeFloor) [radiance; the scenes' values are in the thousands].
 constexpr double kPixelTolerance = 0.01;
@@ -194,7 +195,7 @@ void Runner::Impl::recordReadback(VkCommandBuffer cmd) {
 
 bool Runner::Impl::recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Method method, float stepLength,
                                uint64_t frameIndex, size_t slot, bool withReadback, std::string& error) {
-    if (method == Method::Ours) {
+    if (isPostfx(method)) {
         if (!renderer->recordFrame(cmd, scene, frameIndex, error)) return false;
     } else {
 #if POSTFX_BENCH_BASELINES
@@ -285,7 +286,7 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
         it->second.push_back(ms);
     };
     auto collect = [&](uint64_t frameIndex, size_t slot) -> bool {
-        if (method == Method::Ours) {
+        if (isPostfx(method)) {
             std::vector<postfx::PassTiming> timings;
             const postfx::Status s = context.readPassTimings(frameIndex, timings);
             if (s.code == postfx::Result::Unsupported) return true;  // no timestamps on this queue
@@ -353,6 +354,7 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
     for (uint64_t f = m.nextFrame - kFramesInFlight; f < m.nextFrame; ++f)  // the last frames, oldest first
         if (!retire(f % kFramesInFlight)) return false;
     timing = summarize(totals, passes);
+    if (reference.width == 0) return true;  // timing only
 
     // --- Error: one frame at a time, read back; the reference's pixel (i, j) is the frame's
     // (i·stride, j·stride).
@@ -397,6 +399,48 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
             errors[a] = {s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
         }
     }
+    return true;
+}
+
+bool Runner::copyBandwidth(uint64_t bytes, uint32_t repeats, double& gbPerSecond, std::string& error) {
+    Impl& m = *impl_;
+    gbPerSecond = NAN;
+    if (m.timestampMask == 0) return true;
+    const VkDevice device = m.host->device;
+    demo::GpuBuffer source, target;
+    const VkBufferUsageFlags usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+    bool ok = demo::createBuffer(*m.host, bytes, usage, false, source, error) &&
+              demo::createBuffer(*m.host, bytes, usage, false, target, error);
+    std::vector<double> ms;
+    const size_t slot = 0;
+    for (uint32_t k = 0; ok && k < repeats + 2; ++k) {
+        ok = m.wait(slot, error) &&
+             m.submit(
+                 slot,
+                 [&](VkCommandBuffer cmd) {
+                     vkCmdResetQueryPool(cmd, m.queries, 0, 2);
+                     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, m.queries, 0);
+                     const VkBufferCopy region{0, 0, bytes};
+                     vkCmdCopyBuffer(cmd, source.buffer, target.buffer, 1, &region);
+                     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, m.queries, 1);
+                     return true;
+                 },
+                 error) &&
+             m.wait(slot, error);
+        uint64_t stamps[2] = {0, 0};
+        ok = ok && demo::vkCheck(
+                       vkGetQueryPoolResults(device, m.queries, 0, 2, sizeof stamps, stamps, sizeof(uint64_t),
+                                             VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                       "vkGetQueryPoolResults", error);
+        if (ok && k >= 2)
+            ms.push_back(double((stamps[1] - stamps[0]) & m.timestampMask) * m.timestampPeriodNs * 1e-6);
+    }
+    vkDeviceWaitIdle(device);
+    demo::destroyBuffer(device, source);
+    demo::destroyBuffer(device, target);
+    m.idleSince = true;
+    if (!ok) return false;
+    gbPerSecond = 2.0 * double(bytes) / (percentile(ms, 0.5) * 1e-3) * 1e-9;
     return true;
 }
 
