@@ -105,10 +105,12 @@ struct RunInfo {
     std::vector<std::pair<std::string, double>> referenceSeconds;
 
     // --froxel (bench/froxel_report.h): the device's copy bandwidth measured by the run (bytes read and
-    // written per second, vkCmdCopyBuffer) and the bandwidth the apply pass's floor is computed with
-    // (--bandwidth, else the measured one) [GB/s]; the scene the targets and the light-count sweep are
-    // measured on; the build's FroxelFogSettings::lightListMinLights default.
+    // written per second; Runner::copyBandwidth) by a compute pass and by vkCmdCopyBuffer, and the
+    // bandwidth the apply pass's floor is computed with (--bandwidth, else the larger measured one)
+    // [GB/s]; the scene the targets and the light-count sweep are measured on; the build's
+    // FroxelFogSettings::lightListMinLights default.
     double copyBandwidth = NAN;
+    double transferBandwidth = NAN;
     double bandwidth = NAN;
     bool bandwidthGiven = false;
     std::string froxelTargetScene;

@@ -70,14 +70,14 @@ std::string gridText(const postfx::UVec3& g) {
 }
 
 std::string bandwidthText(const RunInfo& info) {
-    std::string text = "copy measured by this run: " +
-                       (std::isfinite(info.copyBandwidth) ? formatNumber(info.copyBandwidth, 4) + " GB/s"
-                                                          : std::string("– (no timestamps)")) +
-                       " (vkCmdCopyBuffer between device-local buffers, bytes read + written)";
-    text += "; the apply pass's floor uses " +
-            (std::isfinite(info.bandwidth) ? formatNumber(info.bandwidth, 4) + " GB/s" : std::string("–")) +
-            (info.bandwidthGiven ? " (--bandwidth)" : " (the measured copy)");
-    return text;
+    const auto gbps = [](double v) {
+        return std::isfinite(v) ? formatNumber(v, 4) + " GB/s" : std::string("– (no timestamps)");
+    };
+    return "copies measured by this run (device-local buffers, bytes read + written, after a warm-up): " +
+           gbps(info.copyBandwidth) + " by a compute pass (bench/shaders/copy_bandwidth.comp), " +
+           gbps(info.transferBandwidth) + " by vkCmdCopyBuffer; the apply pass's floor uses " +
+           (std::isfinite(info.bandwidth) ? formatNumber(info.bandwidth, 4) + " GB/s" : std::string("–")) +
+           (info.bandwidthGiven ? " (--bandwidth)" : " (the larger measured copy)");
 }
 
 std::string lightsText(uint32_t count) {
@@ -416,8 +416,8 @@ std::string froxelConclusionsMarkdown(const RunInfo& info, const std::vector<Res
             out << "apply " << ms(apply) << " against a floor of " << ms(floorMs) << " ("
                 << formatNumber(double(applyFloorBytes(info.width, info.height)) / 1e6, 4) << " MB at "
                 << formatNumber(info.bandwidth, 4) << " GB/s): " << formatNumber(t.measured, 3)
-                << "×; at the measured copy bandwidth (" << formatNumber(info.copyBandwidth, 4)
-                << " GB/s) the floor is " << ms(copyFloorMs) << ", " << formatNumber(apply / copyFloorMs, 3)
+                << "×; at the compute copy's measured " << formatNumber(info.copyBandwidth, 4)
+                << " GB/s the floor is " << ms(copyFloorMs) << ", " << formatNumber(apply / copyFloorMs, 3)
                 << "×";
         }
         out << " | " << status(t) << " | " << (t.row && t.unit == "ms" ? dominantPass(*t.row) : "") << " |\n";

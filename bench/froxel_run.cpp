@@ -89,10 +89,13 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
     {
         Progress progress(total);
         progress.show("copy bandwidth");
-        if (!runner->copyBandwidth(args.copyBytes, 10, info.copyBandwidth, error))
+        if (!runner->copyBandwidth(args.copyBytes, 20, info.transferBandwidth, info.copyBandwidth, error))
             return fail("copy bandwidth: " + error);
         info.bandwidthGiven = std::isfinite(args.bandwidth);
-        info.bandwidth = info.bandwidthGiven ? args.bandwidth : info.copyBandwidth;
+        info.bandwidth = info.bandwidthGiven ? args.bandwidth
+                         : std::isfinite(info.transferBandwidth)
+                             ? std::max(info.copyBandwidth, info.transferBandwidth)
+                             : info.copyBandwidth;
         progress.advance();
 
         for (const ScenePlan& p : plans) {
@@ -193,9 +196,11 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
     if (!writeFroxelCsv(csv, info, results, error) || !writeFroxelMarkdown(md, info, results, error))
         return fail(error);
 
-    std::printf("postfx-bench --froxel: %s, %ux%u, error stride %u, reference %u steps, copy %s GB/s\n",
-                info.device.c_str(), info.width, info.height, info.errorStride, info.referenceSteps,
-                formatNumber(info.copyBandwidth, 4).c_str());
+    std::printf(
+        "postfx-bench --froxel: %s, %ux%u, error stride %u, reference %u steps, copy %s GB/s "
+        "(compute), %s GB/s (vkCmdCopyBuffer)\n",
+        info.device.c_str(), info.width, info.height, info.errorStride, info.referenceSteps,
+        formatNumber(info.copyBandwidth, 4).c_str(), formatNumber(info.transferBandwidth, 4).c_str());
     std::printf("%-14s %-14s %-52s %9s %9s %9s %9s %9s %6s\n", "scene", "method", "setting", "GPU ms",
                 "scatter", "apply", "RMSE 1", "RMSE 16", "pareto");
     for (const Result& r : results) {

@@ -59,10 +59,13 @@ public:
     bool measure(const demo::Scene& scene, Method method, float stepLength, const demo::ImageF& reference,
                  uint32_t stride, Timing& timing, std::array<ErrorStats, 3>& error, std::string& message);
 
-    // The device's memory bandwidth as one vkCmdCopyBuffer of `bytes` between two device-local buffers
-    // moves it: (bytes read + bytes written) / time, the median of `repeats` timed copies after two
-    // untimed ones [GB/s]. NaN when the queue has no timestamps.
-    bool copyBandwidth(uint64_t bytes, uint32_t repeats, double& gbPerSecond, std::string& error);
+    // The device's memory bandwidth as a copy of `bytes` between two device-local buffers moves it,
+    // (bytes read + bytes written) / time [GB/s], the median of `repeats` timed copies after copies for
+    // RunnerOptions::coldWarmupMs (the clocks ramp up): `transfer` by vkCmdCopyBuffer, `compute` by a
+    // compute pass (bench/shaders/copy_bandwidth.comp, 16-byte words). NaN when the queue has no
+    // timestamps.
+    bool copyBandwidth(uint64_t bytes, uint32_t repeats, double& transfer, double& compute,
+                       std::string& error);
 
     // Validation messages so far (with RunnerOptions::validation).
     std::vector<std::string> validationMessages() const;
