@@ -10,8 +10,14 @@
 
 namespace bench {
 
-enum class Method { Ours, SeedAsWritten, SeedFixedRiemann };
-const char* methodName(Method method);  // "postfx-fog", "seed-as-written", "seed-fixed-riemann"
+// Ours: postfx's ray-marched fog; the seed baselines; Froxel: postfx's froxel fog (postfx-bench --froxel).
+enum class Method { Ours, SeedAsWritten, SeedFixedRiemann, Froxel };
+// "postfx-fog", "seed-as-written", "seed-fixed-riemann", "postfx-froxel"
+const char* methodName(Method method);
+// Whether the method's frames are postfx's own (timed by Context::readPassTimings): Ours and Froxel.
+inline bool isPostfx(Method method) {
+    return method == Method::Ours || method == Method::Froxel;
+}
 
 // One point of the sweep.
 struct Setting {
@@ -26,9 +32,18 @@ struct Setting {
     // Ours: a quality preset as the host selects it ("low", ...; the fields above are what it set);
     // empty for the sweep's own points. Presets are not on the Pareto fronts (they repeat sweep points).
     std::string preset;
+    // Froxel: the grid (FroxelFogSettings::grid), its depth distribution and filter, and the frame's
+    // local lights (non-zero intensity) with whether the light lists ran (lightListMinLights).
+    uint32_t gridX = 0, gridY = 0, gridZ = 0;
+    bool logSlices = false;  // depth_distribution log (else power)
+    bool tricubic = false;   // tricubic B-spline apply (else trilinear)
+    uint32_t lights = 0;
+    bool lightLists = false;  // the light-list pass ran (lights > 0 and lights >= lightListMinLights)
+    bool lightSweep = false;  // a row of the light-count sweep (generated point lights; timed, no error)
 
     // "steps=64 jitter=on scale=0.5 kernel=3 noise=128" (kernel: with a shadow map), "preset=medium
-    // (steps=16 ...)", "step=0.5m jitter=on noise=128"
+    // (steps=16 ...)", "step=0.5m jitter=on noise=128", "grid=160x90x128 dist=power tricubic=off noise=128
+    // lights=64 lists=on" (lights: when the frame has any)
     std::string label() const;
 };
 
@@ -88,6 +103,18 @@ struct RunInfo {
     std::vector<PresetBudget> presetBudgets;  // --preset-budgets
     // CPU time of each reference: scene, noise size, seconds.
     std::vector<std::pair<std::string, double>> referenceSeconds;
+
+    // --froxel (bench/froxel_report.h): the device's copy bandwidth measured by the run (bytes read and
+    // written per second; Runner::copyBandwidth) by a compute pass and by vkCmdCopyBuffer, and the
+    // bandwidth the apply pass's floor is computed with (--bandwidth, else the larger measured one)
+    // [GB/s]; the scene the targets and the light-count sweep are measured on; the build's
+    // FroxelFogSettings::lightListMinLights default.
+    double copyBandwidth = NAN;
+    double transferBandwidth = NAN;
+    double bandwidth = NAN;
+    bool bandwidthGiven = false;
+    std::string froxelTargetScene;
+    uint32_t lightListDefault = 0;
 };
 
 // RunInfo::sceneNoise's entry for `scene`; 0 when it has none.

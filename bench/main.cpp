@@ -3,8 +3,10 @@
 // measures the quality presets, times every postfx pass with timestamp queries and measures the error
 // of 1, 8 and 16 jittered frames against the CPU reference; the two baselines (bench/baseline.h) run
 // on the same frames. Writes results.csv,
-// results.md and plot.svg.
+// results.md and plot.svg. With --froxel: the froxel fog's sweep beside the ray-marched fog instead
+// (bench/froxel_run.h).
 #include "conclusions.h"
+#include "froxel_run.h"
 #include "progress.h"
 #include "report.h"
 #include "runner.h"
@@ -14,6 +16,7 @@
 #include "scene/scene.h"
 
 #include <postfx/fog.h>
+#include <postfx/froxel_fog.h>
 
 #include <algorithm>
 #include <chrono>
@@ -37,6 +40,11 @@ const char* kUsage =
     "                    [--shadow-kernels a,b,...] [--step-lengths a,b,...] [--preset-scene S] "
     "[--preset-budgets l,m,h,u]\n"
     "                    [--no-presets] [--no-baselines] [--quick] [--validation]\n"
+    "       postfx-bench --froxel [--froxel-grids XxY,...] [--froxel-slices a,b,...] "
+    "[--froxel-distributions power,log]\n"
+    "                    [--froxel-tricubic off,on] [--froxel-lights a,b,...] [--froxel-target-scene S] "
+    "[--bandwidth GB/S]\n"
+    "                    [--steps a,b,...] [--scales a,b,...] and the options above but the fog sweep's\n"
     "Sweeps postfx's fog quality knobs on the named scenes, times each postfx pass on the GPU and measures\n"
     "the error against the CPU reference; the seed's shader (as written, and fixed but still a Riemann sum)\n"
     "runs on the same frames. Writes results.csv, results.md and plot.svg to --out.\n"
@@ -67,6 +75,28 @@ const char* kUsage =
     "  --no-presets           do not measure the quality presets (low, medium, high, ultra) as such\n"
     "  --no-baselines         postfx's fog only\n"
     "  --validation           Vulkan validation layer with synchronization validation; any message fails\n"
+    "froxel fog (--froxel; docs/accuracy-cost/README.md, \"Froxel fog\"): each scene with effects.fog runs\n"
+    "as its froxel version (the same medium in effects.froxel_fog) with the ray-marched fog's rows beside "
+    "it\n"
+    "(--steps x --scales, jitter on, shadow kernel 1), a scene with effects.froxel_fog alone; error of 1, 8\n"
+    "and 16 frames against the froxel fog's CPU reference, time of each froxel_fog.* pass; then, on the\n"
+    "target scene, a light-count sweep (generated point lights, light lists on and off, timed only).\n"
+    "Writes results.csv and results.md (targets, light lists, froxel against ray-marched at equal error).\n"
+    "  --froxel               this mode; the defaults below replace the fog sweep's [--scenes fog_default,\n"
+    "                         fog_height,fog_shadowed,fog_valley,froxel_lights; --out\n"
+    "                         docs/accuracy-cost/froxel; --steps 8,16,32,64,128; --scales 1,0.5;\n"
+    "                         quick: --scenes fog_default,froxel_lights, --steps 4,16, --scales 1]\n"
+    "  --froxel-grids LIST    froxels along x and y, XxY each 1..512 [80x45,160x90,240x135; quick: 16x9]\n"
+    "  --froxel-slices LIST   depth slices, each 1..512 [64,128,256; quick: 16,32]\n"
+    "  --froxel-distributions LIST  power and/or log [power,log]\n"
+    "  --froxel-tricubic LIST off and/or on [off,on]\n"
+    "  --froxel-lights LIST   light counts of the light-count sweep, each 0..256; 0: none [0,1,2,4,8,16,\n"
+    "                         32,64,128,256; quick: 0,4,16]\n"
+    "  --froxel-target-scene S  the targets' scene, which the light-count sweep runs on [fog_default if in\n"
+    "                         --scenes, else the first]; quick: the light-count sweep on the first grid\n"
+    "                         and slice count, not postfx's default grid\n"
+    "  --bandwidth G          memory bandwidth [GB/s] for the apply pass's floor [the copy bandwidth the\n"
+    "                         run measures]\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
 
 struct Args {
@@ -87,14 +117,36 @@ struct Args {
     bool presets = true;
     std::string presetScene;  // empty: fog_default if in --scenes, else the first scene
     std::vector<bench::PresetBudget> presetBudgets = bench::defaultPresetBudgets();
+    // --froxel
+    bool froxel = false;
+    bench::FroxelSweepOptions froxelSweep;
+    std::vector<uint32_t> froxelLights = {0, 1, 2, 4, 8, 16, 32, 64, 128, 256};
+    std::string froxelTargetScene;
+    double bandwidth = NAN;
+    bool froxelQuick = false;  // --froxel --quick
 };
+
+// --froxel-distributions / --froxel-tricubic: each item one of two words, at least one.
+std::vector<bool> twoWordList(const std::string& option, const std::string& text, const char* no,
+                              const char* yes) {
+    std::vector<bool> out;
+    for (const std::string& item : cli::splitList(text)) {
+        if (item != no && item != yes)
+            throw cli::UsageError{option + " '" + text + "': expected " + no + " and/or " + yes +
+                                  ", comma-separated"};
+        if (!std::count(out.begin(), out.end(), item == yes)) out.push_back(item == yes);
+    }
+    if (out.empty()) throw cli::UsageError{option + " is empty"};
+    return out;
+}
 
 Args parseArgs(int argc, char** argv) {
     Args args;
     bool quick = false;
     bool sizeGiven = false, warmupGiven = false, warmupMsGiven = false, coldGiven = false,
          framesGiven = false, refGiven = false, stepsGiven = false, noiseGiven = false, lengthsGiven = false,
-         scalesGiven = false;
+         scalesGiven = false, scenesGiven = false, outGiven = false, gridsGiven = false, slicesGiven = false,
+         lightsGiven = false;
     const auto toFloats = [](const std::vector<double>& values) {
         return std::vector<float>(values.begin(), values.end());
     };
@@ -107,6 +159,7 @@ Args parseArgs(int argc, char** argv) {
         } else if (a == "--scenes") {
             args.scenes = cli::splitList(value());
             if (args.scenes.empty()) throw cli::UsageError{"--scenes is empty"};
+            scenesGiven = true;
         } else if (a == "--scene-dir") {
             args.sceneDir = value();
         } else if (a == "--size") {
@@ -138,6 +191,7 @@ Args parseArgs(int argc, char** argv) {
                 a, value(), [](double v) { return v > 0; }, "a number > 0 [GTexel/s]");
         } else if (a == "--out") {
             args.out = value();
+            outGiven = true;
         } else if (a == "--steps") {
             args.steps = cli::uintListOption(a, value(), 1, 4096);
             stepsGiven = true;
@@ -181,9 +235,63 @@ Args parseArgs(int argc, char** argv) {
             quick = true;
         } else if (a == "--validation") {
             args.runner.validation = true;
+        } else if (a == "--froxel") {
+            args.froxel = true;
+        } else if (a == "--froxel-grids") {
+            const std::string text = value();
+            args.froxelSweep.grids.clear();
+            for (const std::string& item : cli::splitList(text)) {
+                const size_t x = item.find('x');
+                uint32_t gx = 0, gy = 0;
+                if (x == std::string::npos ||
+                    !cli::parseUint(std::string_view(item).substr(0, x), 1, postfx::kMaxFroxelGridSize, gx) ||
+                    !cli::parseUint(std::string_view(item).substr(x + 1), 1, postfx::kMaxFroxelGridSize, gy))
+                    throw cli::UsageError{"--froxel-grids '" + text + "': expected XxY, each 1.." +
+                                          std::to_string(postfx::kMaxFroxelGridSize) + ", comma-separated"};
+                args.froxelSweep.grids.emplace_back(gx, gy);
+            }
+            if (args.froxelSweep.grids.empty()) throw cli::UsageError{"--froxel-grids is empty"};
+            gridsGiven = true;
+        } else if (a == "--froxel-slices") {
+            args.froxelSweep.slices = cli::uintListOption(a, value(), 1, postfx::kMaxFroxelGridSize);
+            slicesGiven = true;
+        } else if (a == "--froxel-distributions") {
+            args.froxelSweep.logSlices = twoWordList(a, value(), "power", "log");
+        } else if (a == "--froxel-tricubic") {
+            args.froxelSweep.tricubic = twoWordList(a, value(), "off", "on");
+        } else if (a == "--froxel-lights") {
+            args.froxelLights = cli::uintListOption(a, value(), 0, postfx::kMaxLocalLights);
+            lightsGiven = true;
+        } else if (a == "--froxel-target-scene") {
+            args.froxelTargetScene = value();
+        } else if (a == "--bandwidth") {
+            args.bandwidth = cli::numberOption(
+                a, value(), [](double v) { return v > 0; }, "a number > 0 [GB/s]");
         } else {
             throw cli::UsageError{"unknown argument '" + a + "' (see --help)"};
         }
+    }
+    if (args.froxel) {
+        if (!scenesGiven)
+            args.scenes = quick ? std::vector<std::string>{"fog_default", "froxel_lights"}
+                                : std::vector<std::string>{"fog_default", "fog_height", "fog_shadowed",
+                                                           "fog_valley", "froxel_lights"};
+        if (!outGiven) args.out = "docs/accuracy-cost/froxel";
+        if (!stepsGiven)
+            args.steps = quick ? std::vector<uint32_t>{4, 16} : std::vector<uint32_t>{8, 16, 32, 64, 128};
+        if (!scalesGiven) args.scales = quick ? std::vector<float>{1.0f} : std::vector<float>{1.0f, 0.5f};
+        if (quick && !gridsGiven) args.froxelSweep.grids = {{16, 9}};
+        if (quick && !slicesGiven) args.froxelSweep.slices = {16, 32};
+        if (quick && !lightsGiven) args.froxelLights = {0, 4, 16};
+        stepsGiven = scalesGiven = true;  // not --quick's fog sweep below
+        args.froxelQuick = quick;
+        if (args.froxelTargetScene.empty())
+            args.froxelTargetScene = std::count(args.scenes.begin(), args.scenes.end(), "fog_default")
+                                         ? "fog_default"
+                                         : args.scenes.front();
+        else if (!std::count(args.scenes.begin(), args.scenes.end(), args.froxelTargetScene))
+            throw cli::UsageError{"--froxel-target-scene '" + args.froxelTargetScene +
+                                  "' is not in --scenes"};
     }
     if (quick) {
         if (!sizeGiven) args.runner.width = 64, args.runner.height = 36;
@@ -197,7 +305,9 @@ Args parseArgs(int argc, char** argv) {
         if (!scalesGiven) args.scales = {1.0f, 0.5f};
         if (!lengthsGiven) args.stepLengths = {4.0f, 1.0f};
     }
-    if (args.presetScene.empty())
+    if (args.froxel) {
+        // The fog sweep's preset scene is not used.
+    } else if (args.presetScene.empty())
         args.presetScene = std::count(args.scenes.begin(), args.scenes.end(), "fog_default")
                                ? "fog_default"
                                : args.scenes.front();
@@ -260,7 +370,34 @@ struct ScenePlan {
     }
 };
 
+int runFroxel(const Args& args, const std::string& command) {
+    bench::FroxelRunArgs f;
+    f.scenes = args.scenes;
+    f.sceneDir = args.sceneDir;
+    f.runner = args.runner;
+    f.referenceSteps = args.referenceSteps;
+    f.errorStride = args.errorStride;
+    f.out = args.out;
+    f.sweep = args.froxelSweep;
+    f.fogSteps = args.steps;
+    f.fogScales = args.scales;
+    f.lightCounts = args.froxelLights;
+    f.targetScene = args.froxelTargetScene;
+    f.bandwidth = args.bandwidth;
+    // The copy bandwidth's buffers: 256 MiB (far beyond the caches) on a GPU, 16 MiB at a small size
+    // (lavapipe's device memory is the CI machine's).
+    if (args.runner.width * uint64_t(args.runner.height) < 640 * 360) f.copyBytes = uint64_t(16) << 20;
+    if (args.froxelQuick) {
+        // --quick: the light-count sweep on the sweep's first grid (160×90×128 is slow on lavapipe).
+        f.lightGrid[0] = args.froxelSweep.grids.front().first;
+        f.lightGrid[1] = args.froxelSweep.grids.front().second;
+        f.lightGrid[2] = args.froxelSweep.slices.front();
+    }
+    return bench::runFroxel(f, command, utcNow());
+}
+
 int run(const Args& args, const std::string& command) {
+    if (args.froxel) return runFroxel(args, command);
     std::string error;
     // Plan everything first: a bad scene name fails before the GPU work.
     std::vector<ScenePlan> plans;

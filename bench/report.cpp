@@ -12,7 +12,29 @@
 namespace bench {
 namespace {
 
-bool writeFile(const std::string& path, const std::string& text, std::string& error) {
+// Ours first (sweep by noise size, scale, jitter on before off, steps; then the presets), then each
+// baseline by decreasing step length.
+std::vector<const Result*> sortedRows(const std::vector<Result>& results, const std::string& scene) {
+    std::vector<const Result*> rows;
+    for (const Result& r : results)
+        if (r.setting.scene == scene) rows.push_back(&r);
+    std::stable_sort(rows.begin(), rows.end(), [](const Result* a, const Result* b) {
+        const Setting &x = a->setting, &y = b->setting;
+        if (x.method != y.method) return int(x.method) < int(y.method);
+        if (x.preset.empty() != y.preset.empty()) return x.preset.empty();
+        if (!x.preset.empty()) return false;  // presets in the order measured (low .. ultra)
+        if (x.noiseSize != y.noiseSize) return x.noiseSize < y.noiseSize;
+        if (x.resolutionScale != y.resolutionScale) return x.resolutionScale > y.resolutionScale;
+        if (x.jitter != y.jitter) return x.jitter;
+        if (x.steps != y.steps) return x.steps < y.steps;
+        return x.stepLength > y.stepLength;
+    });
+    return rows;
+}
+
+}  // namespace
+
+bool writeTextFile(const std::string& path, const std::string& text, std::string& error) {
     std::ofstream out(path, std::ios::binary);
     out << text;
     out.close();
@@ -50,28 +72,6 @@ std::string warmupText(const RunInfo& info) {
            formatNumber(info.warmupMs, 4) + " ms per setting (" + formatNumber(info.coldWarmupMs, 4) +
            " ms after a CPU reference)";
 }
-
-// Ours first (sweep by noise size, scale, jitter on before off, steps; then the presets), then each
-// baseline by decreasing step length.
-std::vector<const Result*> sortedRows(const std::vector<Result>& results, const std::string& scene) {
-    std::vector<const Result*> rows;
-    for (const Result& r : results)
-        if (r.setting.scene == scene) rows.push_back(&r);
-    std::stable_sort(rows.begin(), rows.end(), [](const Result* a, const Result* b) {
-        const Setting &x = a->setting, &y = b->setting;
-        if (x.method != y.method) return int(x.method) < int(y.method);
-        if (x.preset.empty() != y.preset.empty()) return x.preset.empty();
-        if (!x.preset.empty()) return false;  // presets in the order measured (low .. ultra)
-        if (x.noiseSize != y.noiseSize) return x.noiseSize < y.noiseSize;
-        if (x.resolutionScale != y.resolutionScale) return x.resolutionScale > y.resolutionScale;
-        if (x.jitter != y.jitter) return x.jitter;
-        if (x.steps != y.steps) return x.steps < y.steps;
-        return x.stepLength > y.stepLength;
-    });
-    return rows;
-}
-
-}  // namespace
 
 std::string percent(double fraction, int digits) {
     return std::isfinite(fraction) ? formatNumber(fraction * 100.0, digits) + "%" : "–";
@@ -190,7 +190,7 @@ bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Re
             out << (i ? "," : "") << row[i];
         out << "\n";
     }
-    return writeFile(path, out.str(), error);
+    return writeTextFile(path, out.str(), error);
 }
 
 bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
@@ -288,7 +288,7 @@ bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vect
         }
         if (header) out << "\n";
     }
-    return writeFile(path, out.str(), error);
+    return writeTextFile(path, out.str(), error);
 }
 
 }  // namespace bench

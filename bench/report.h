@@ -23,6 +23,14 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
 std::string formatNumber(double value, int digits = 4);  // "" for NaN
 std::string percent(double fraction, int digits = 3);    // "1.23%"; "–" when not finite
 std::string xmlEscape(const std::string& text);
+// `text` into `path`; false with "cannot write 'PATH'" otherwise.
+bool writeTextFile(const std::string& path, const std::string& text, std::string& error);
+std::string orDash(const std::string& s);  // "–" for ""
+// The header's "image" line: size, error stride, reference steps.
+std::string referenceSummary(const RunInfo& info);
+// The header's warm-up text.
+std::string warmupText(const RunInfo& info);
+std::string textureRateText(const RunInfo& info);
 // The scenes in the order their first result appears.
 std::vector<std::string> sceneOrder(const std::vector<Result>& results);
 

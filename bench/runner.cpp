@@ -4,6 +4,7 @@
 #include "stats.h"
 
 #include "host/gpu_resources.h"
+#include "postfx-bench_spirv.h"
 
 #include <postfx/context.h>
 
@@ -23,9 +24,10 @@ namespace {
 constexpr uint32_t kFramesInFlight = demo::Renderer::kFramesInFlight;
 constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
-// Error frames start at a multiple of this (the fog's jitter pattern repeats every 64 frames), so every
-// setting averages the same jitter offsets.
-constexpr uint64_t kJitterPeriod = 64;
+// Error frames start at a multiple of this, so every setting averages the same jitter offsets: the
+// ray-marched fog's IGN pattern repeats every 64 frames, the froxel fog's Halton (2, 3, 5) samples every
+// 1024 (a multiple of 64: the ray-marched fog's frames are those of a period of 64).
+constexpr uint64_t kJitterPeriod = 1024;
 // A pixel is "off" when a channel differs by more than this fraction of the pixel's magnitude
 // max(max_c |reference_c|, kMagnitudeFloor) [radiance; the scenes' values are in the thousands].
 constexpr double kPixelTolerance = 0.01;
@@ -194,7 +196,7 @@ void Runner::Impl::recordReadback(VkCommandBuffer cmd) {
 
 bool Runner::Impl::recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Method method, float stepLength,
                                uint64_t frameIndex, size_t slot, bool withReadback, std::string& error) {
-    if (method == Method::Ours) {
+    if (isPostfx(method)) {
         if (!renderer->recordFrame(cmd, scene, frameIndex, error)) return false;
     } else {
 #if POSTFX_BENCH_BASELINES
@@ -285,7 +287,7 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
         it->second.push_back(ms);
     };
     auto collect = [&](uint64_t frameIndex, size_t slot) -> bool {
-        if (method == Method::Ours) {
+        if (isPostfx(method)) {
             std::vector<postfx::PassTiming> timings;
             const postfx::Status s = context.readPassTimings(frameIndex, timings);
             if (s.code == postfx::Result::Unsupported) return true;  // no timestamps on this queue
@@ -353,6 +355,7 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
     for (uint64_t f = m.nextFrame - kFramesInFlight; f < m.nextFrame; ++f)  // the last frames, oldest first
         if (!retire(f % kFramesInFlight)) return false;
     timing = summarize(totals, passes);
+    if (reference.width == 0) return true;  // timing only
 
     // --- Error: one frame at a time, read back; the reference's pixel (i, j) is the frame's
     // (i·stride, j·stride).
@@ -398,6 +401,145 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
         }
     }
     return true;
+}
+
+bool Runner::copyBandwidth(uint64_t bytes, uint32_t repeats, double& transfer, double& compute,
+                           std::string& error) {
+    Impl& m = *impl_;
+    transfer = compute = NAN;
+    if (m.timestampMask == 0) return true;
+    const VkDevice device = m.host->device;
+    bytes &= ~uint64_t(15);  // whole 16-byte words
+    const uint32_t words = uint32_t(std::min<uint64_t>(bytes / 16, UINT32_MAX));
+    demo::GpuBuffer source, target;
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    const VkBufferUsageFlags usage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    bool ok = demo::createBuffer(*m.host, bytes, usage, false, source, error) &&
+              demo::createBuffer(*m.host, bytes, usage, false, target, error);
+    if (ok) {
+        VkDescriptorSetLayoutBinding bindings[2]{};
+        for (uint32_t b = 0; b < 2; ++b)
+            bindings[b] = {b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
+        VkDescriptorSetLayoutCreateInfo dl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+        dl.bindingCount = 2;
+        dl.pBindings = bindings;
+        const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(uint32_t)};
+        VkPipelineLayoutCreateInfo pl{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+        pl.setLayoutCount = 1;
+        pl.pSetLayouts = &setLayout;
+        pl.pushConstantRangeCount = 1;
+        pl.pPushConstantRanges = &push;
+        const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2};
+        VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+        dp.maxSets = 1;
+        dp.poolSizeCount = 1;
+        dp.pPoolSizes = &size;
+        ok = demo::vkCheck(vkCreateDescriptorSetLayout(device, &dl, nullptr, &setLayout),
+                           "vkCreateDescriptorSetLayout", error) &&
+             demo::vkCheck(vkCreatePipelineLayout(device, &pl, nullptr, &layout), "vkCreatePipelineLayout",
+                           error) &&
+             demo::createComputePipeline(device, spirv::bench_shaders_copy_bandwidth_comp, layout,
+                                         "copy_bandwidth.comp", pipeline, error) &&
+             demo::vkCheck(vkCreateDescriptorPool(device, &dp, nullptr, &pool), "vkCreateDescriptorPool",
+                           error);
+        if (ok) {
+            VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+            ai.descriptorPool = pool;
+            ai.descriptorSetCount = 1;
+            ai.pSetLayouts = &setLayout;
+            ok =
+                demo::vkCheck(vkAllocateDescriptorSets(device, &ai, &set), "vkAllocateDescriptorSets", error);
+        }
+        if (ok) {
+            const VkDescriptorBufferInfo infos[2] = {{source.buffer, 0, VK_WHOLE_SIZE},
+                                                     {target.buffer, 0, VK_WHOLE_SIZE}};
+            VkWriteDescriptorSet writes[2]{};
+            for (uint32_t b = 0; b < 2; ++b) {
+                writes[b] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+                writes[b].dstSet = set;
+                writes[b].dstBinding = b;
+                writes[b].descriptorCount = 1;
+                writes[b].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+                writes[b].pBufferInfo = &infos[b];
+            }
+            vkUpdateDescriptorSets(device, 2, writes, 0, nullptr);
+        }
+    }
+    const uint32_t groups =
+        std::max(1u, std::min((words + 255) / 256, m.host->properties.limits.maxComputeWorkGroupCount[0]));
+    // One copy between timestamps; the next waits for this one's writes (its reads of the target).
+    auto timed = [&](bool useCompute, double& ms) -> bool {
+        const size_t slot = 0;
+        const bool recorded =
+            m.wait(slot, error) &&
+            m.submit(
+                slot,
+                [&](VkCommandBuffer cmd) {
+                    vkCmdResetQueryPool(cmd, m.queries, 0, 2);
+                    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+                    barrier.srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT;
+                    barrier.dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+                    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                                         nullptr);
+                    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, m.queries, 0);
+                    if (useCompute) {
+                        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+                        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0,
+                                                nullptr);
+                        vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof words, &words);
+                        vkCmdDispatch(cmd, groups, 1, 1);
+                    } else {
+                        const VkBufferCopy region{0, 0, bytes};
+                        vkCmdCopyBuffer(cmd, source.buffer, target.buffer, 1, &region);
+                    }
+                    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, m.queries, 1);
+                    return true;
+                },
+                error) &&
+            m.wait(slot, error);
+        uint64_t stamps[2] = {0, 0};
+        if (!recorded || !demo::vkCheck(vkGetQueryPoolResults(
+                                            device, m.queries, 0, 2, sizeof stamps, stamps, sizeof(uint64_t),
+                                            VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                                        "vkGetQueryPoolResults", error))
+            return false;
+        ms = double((stamps[1] - stamps[0]) & m.timestampMask) * m.timestampPeriodNs * 1e-6;
+        return true;
+    };
+    for (bool useCompute : {false, true}) {
+        // Warm-up: copies for coldWarmupMs (at least two), then the timed ones.
+        const auto start = std::chrono::steady_clock::now();
+        double ms = 0;
+        for (uint32_t k = 0;
+             ok &&
+             (k < 2 ||
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() <
+                  m.options.coldWarmupMs);
+             ++k)
+            ok = timed(useCompute, ms);
+        std::vector<double> times;
+        for (uint32_t k = 0; ok && k < repeats; ++k) {
+            ok = timed(useCompute, ms);
+            times.push_back(ms);
+        }
+        if (ok)
+            (useCompute ? compute : transfer) = 2.0 * double(bytes) / (percentile(times, 0.5) * 1e-3) * 1e-9;
+    }
+    vkDeviceWaitIdle(device);
+    if (pool) vkDestroyDescriptorPool(device, pool, nullptr);
+    if (pipeline) vkDestroyPipeline(device, pipeline, nullptr);
+    if (layout) vkDestroyPipelineLayout(device, layout, nullptr);
+    if (setLayout) vkDestroyDescriptorSetLayout(device, setLayout, nullptr);
+    demo::destroyBuffer(device, source);
+    demo::destroyBuffer(device, target);
+    m.idleSince = true;
+    return ok;
 }
 
 }  // namespace bench

@@ -50,11 +50,22 @@ public:
                    std::string& error);
 
     // Times `method` on `scene` (warm-up, then the timed frames) and measures the error of one frame and
-    // of the mean of 8 and 16 frames (consecutive frame indices from a multiple of 64: only the jitter
-    // differs) against `reference` (from reference() with the same stride). Ours: postfx's fog with
-    // scene.fog as given. Baselines: `stepLength` [m] over the un-fogged frame with scene.fog's medium.
+    // of the mean of 8 and 16 frames (consecutive frame indices from a multiple of 1024: only the jitter
+    // differs; the ray-marched fog's IGN pattern repeats every 64 frames, the froxel fog's Halton
+    // samples every 1024) against `reference` (from reference() with the same stride); an empty
+    // `reference` (width 0) measures no error (`error` keeps NaN). Ours and Froxel: postfx with
+    // scene.fog and scene.froxelFog as given. Baselines: `stepLength` [m] over the un-fogged frame with
+    // scene.fog's medium.
     bool measure(const demo::Scene& scene, Method method, float stepLength, const demo::ImageF& reference,
                  uint32_t stride, Timing& timing, std::array<ErrorStats, 3>& error, std::string& message);
+
+    // The device's memory bandwidth as a copy of `bytes` between two device-local buffers moves it,
+    // (bytes read + bytes written) / time [GB/s], the median of `repeats` timed copies after copies for
+    // RunnerOptions::coldWarmupMs (the clocks ramp up): `transfer` by vkCmdCopyBuffer, `compute` by a
+    // compute pass (bench/shaders/copy_bandwidth.comp, 16-byte words). NaN when the queue has no
+    // timestamps.
+    bool copyBandwidth(uint64_t bytes, uint32_t repeats, double& transfer, double& compute,
+                       std::string& error);
 
     // Validation messages so far (with RunnerOptions::validation).
     std::vector<std::string> validationMessages() const;

@@ -16,6 +16,8 @@ const char* methodName(Method method) {
             return "seed-as-written";
         case Method::SeedFixedRiemann:
             return "seed-fixed-riemann";
+        case Method::Froxel:
+            return "postfx-froxel";
     }
     return "unknown";
 }
@@ -23,7 +25,13 @@ const char* methodName(Method method) {
 std::string Setting::label() const {
     char text[160];
     std::string noise = noiseSize ? " noise=" + std::to_string(noiseSize) : std::string();
-    if (method == Method::Ours) {
+    if (method == Method::Froxel) {
+        const std::string lightText =
+            lights ? " lights=" + std::to_string(lights) + " lists=" + (lightLists ? "on" : "off")
+                   : std::string();
+        std::snprintf(text, sizeof text, "grid=%ux%ux%u dist=%s tricubic=%s%s%s", gridX, gridY, gridZ,
+                      logSlices ? "log" : "power", tricubic ? "on" : "off", noise.c_str(), lightText.c_str());
+    } else if (method == Method::Ours) {
         const std::string kernel = shadowKernel ? " kernel=" + std::to_string(shadowKernel) : std::string();
         std::snprintf(text, sizeof text, "steps=%u jitter=%s scale=%g%s%s", steps, jitter ? "on" : "off",
                       double(resolutionScale), kernel.c_str(), noise.c_str());

@@ -5,6 +5,8 @@
 // exactly the errors of the sweep point with its knobs, the proposed presets recomputed from the CSV;
 // the markdown and SVG exist. GPU times are not checked (lavapipe's
 // mean nothing).
+// BenchFroxelSmoke does the same for `postfx-bench --froxel --quick` (its CSV's rows and passes, the
+// report's sections). ctest runs the two suites as two tests.
 // usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
 #include <gtest/gtest.h>
 
@@ -278,6 +280,157 @@ TEST_F(BenchSmoke, ProposesThePresetsFromTheCsvRows) {
     EXPECT_NE(md.find("Not 1920×1080"), std::string::npos);
     EXPECT_NE(readFile(gOut + "/plot.svg").find(">lmhu</text>"), std::string::npos)
         << "the four proposals share one point";
+}
+
+// postfx-bench --froxel --quick (64x36, grid 16x9, 16 and 32 slices, power and log, trilinear and
+// tricubic; the ray-marched fog at 4 and 16 steps beside it on fog_default; the light-count sweep at 0, 4
+// and 16 lights) under the validation layer, into OUT_DIR/froxel.
+const std::vector<std::string> kFroxelColumns = {
+    "scene",
+    "method",
+    "grid_x",
+    "grid_y",
+    "grid_z",
+    "distribution",
+    "tricubic",
+    "jitter",
+    "lights",
+    "light_lists",
+    "light_sweep",
+    "steps",
+    "resolution_scale",
+    "shadow_kernel",
+    "noise_size",
+    "width",
+    "height",
+    "warmup",
+    "frames",
+    "gpu_ms_median",
+    "gpu_ms_p10",
+    "gpu_ms_p90",
+    "gpu_ms_min",
+    "gpu_ms_max",
+    "light_lists_ms",
+    "scatter_ms",
+    "integrate_ms",
+    "apply_ms",
+    "pass_ms",
+    "rel_rmse_1",
+    "max_abs_1",
+    "frac_off_1",
+    "rel_rmse_8",
+    "max_abs_8",
+    "frac_off_8",
+    "rel_rmse_16",
+    "max_abs_16",
+    "frac_off_16",
+    "non_finite",
+    "apply_floor_ms",
+    "apply_over_floor",
+    "pareto_1",
+    "pareto_16",
+};
+const std::vector<std::string> kFroxelScenes = {"fog_default", "froxel_lights"};
+const size_t kFroxelSweepRows = 1 * 2 * 2 * 2;  // grids × slices × distributions × tricubic
+const size_t kFroxelFogRows = 2;                // fog_default: steps 4, 16 at scale 1
+const size_t kFroxelLightRows = 1 + 2 + 2;      // 0 lights; 4 and 16 with and without lists
+
+class BenchFroxelSmoke : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        out_ = gOut + "/froxel";
+        std::filesystem::remove_all(out_);
+        const std::string command = "'" + gBench +
+                                    "' --froxel --quick --size 64x36 --validation --scene-dir '" + gSceneDir +
+                                    "' --out '" + out_ + "'";
+        std::printf("running: %s\n", command.c_str());
+        std::fflush(stdout);
+        status_ = std::system(command.c_str());
+    }
+    static int status_;
+    static std::string out_;
+};
+int BenchFroxelSmoke::status_ = -1;
+std::string BenchFroxelSmoke::out_;
+
+TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
+    ASSERT_EQ(status_, 0) << "postfx-bench --froxel failed (its output is above)";
+    std::vector<std::string> header;
+    std::vector<Row> rows;
+    bool sawDevice = false;
+    ASSERT_TRUE(readCsv(out_ + "/results.csv", header, rows, sawDevice)) << out_ << "/results.csv";
+    EXPECT_TRUE(sawDevice);
+    ASSERT_EQ(header, kFroxelColumns);
+    ASSERT_EQ(rows.size(), kFroxelScenes.size() * kFroxelSweepRows + kFroxelFogRows + kFroxelLightRows);
+    // (scene, distribution, tricubic) -> one-frame error by slices.
+    std::map<std::string, std::map<int, double>> bySlices;
+    size_t froxel = 0, fog = 0, light = 0;
+    for (const Row& row : rows) {
+        const std::string what = row.at("scene") + " " + row.at("method") + " grid_z=" + row.at("grid_z") +
+                                 " " + row.at("distribution") + " tricubic=" + row.at("tricubic") +
+                                 " lights=" + row.at("lights") + " lists=" + row.at("light_lists");
+        EXPECT_EQ(row.at("width"), "64");
+        const bool isFroxel = row.at("method") == "postfx-froxel";
+        EXPECT_TRUE(isFroxel || row.at("method") == "postfx-fog") << what;
+        if (isFroxel) {
+            // lavapipe has timestamps: every froxel pass that ran is timed.
+            for (const char* pass : {"scatter_ms", "integrate_ms", "apply_ms"})
+                EXPECT_GT(number(row.at(pass)), 0.0) << what << ": " << pass;
+            EXPECT_EQ(row.at("light_lists_ms").empty(), row.at("light_lists") != "1") << what;
+            EXPECT_TRUE(std::isfinite(number(row.at("apply_over_floor")))) << what;
+        }
+        if (row.at("light_sweep") == "1") {
+            ++light;
+            EXPECT_TRUE(isFroxel) << what;
+            EXPECT_EQ(row.at("scene"), "fog_default") << what;
+            EXPECT_TRUE(row.at("rel_rmse_1").empty()) << what << ": timed only";
+            EXPECT_EQ(row.at("light_lists").empty(), row.at("lights") == "0") << what;
+            continue;
+        }
+        for (const char* column : {"rel_rmse_1", "max_abs_1", "frac_off_1", "rel_rmse_8", "max_abs_8",
+                                   "frac_off_8", "rel_rmse_16", "max_abs_16", "frac_off_16"}) {
+            const double v = number(row.at(column));
+            EXPECT_TRUE(std::isfinite(v) && v >= 0.0)
+                << what << ": " << column << " = '" << row.at(column) << "'";
+        }
+        EXPECT_LT(number(row.at("rel_rmse_1")), 0.5) << what;
+        EXPECT_EQ(row.at("non_finite"), "0") << what;
+        if (!isFroxel) {
+            ++fog;
+            EXPECT_EQ(row.at("scene"), "fog_default") << what;
+            EXPECT_EQ(row.at("shadow_kernel"), "1") << what << ": the froxel fog's shadow tap";
+            continue;
+        }
+        ++froxel;
+        EXPECT_EQ(row.at("grid_x"), "16");
+        EXPECT_EQ(row.at("grid_y"), "9");
+        if (row.at("scene") == "froxel_lights") {
+            EXPECT_EQ(row.at("lights"), "4") << what;
+            EXPECT_EQ(row.at("light_lists"), "0") << what << ": 4 lights are below the default 8";
+        } else {
+            bySlices[row.at("distribution") + " " + row.at("tricubic")][int(number(row.at("grid_z")))] =
+                number(row.at("rel_rmse_1"));
+        }
+    }
+    EXPECT_EQ(froxel, kFroxelScenes.size() * kFroxelSweepRows);
+    EXPECT_EQ(fog, kFroxelFogRows);
+    EXPECT_EQ(light, kFroxelLightRows);
+    // fog_default: twice the slices, a lower one-frame error, for each distribution and filter.
+    ASSERT_EQ(bySlices.size(), 4u);
+    for (const auto& [knobs, errors] : bySlices) {
+        ASSERT_EQ(errors.size(), 2u) << knobs;
+        EXPECT_LT(errors.at(32), errors.at(16)) << knobs;
+    }
+}
+
+TEST_F(BenchFroxelSmoke, MarkdownHasTheTargetsLightListsAndComparison) {
+    ASSERT_EQ(status_, 0);
+    const std::string md = readFile(out_ + "/results.md");
+    for (const char* section : {"## Targets", "Not 1920×1080", "## Light lists", "This run: **",
+                                "## Froxel fog against the ray-marched fog at equal error",
+                                "### fog_default, one frame", "### fog_default, mean of 16 frames",
+                                "## froxel_lights", "## fog_default: light-count sweep", "| device | "})
+        EXPECT_NE(md.find(section), std::string::npos) << section;
 }
 
 }  // namespace

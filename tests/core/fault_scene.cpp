@@ -46,6 +46,8 @@ postfx::FrameInfo faultSceneFrame(const FaultSceneOptions& o, uint64_t frameInde
         static_cast<postfx::FogMedium&>(frame.froxelFog) = fog;
         frame.froxelFog.enabled = true;
         frame.froxelFog.grid = {4, 4, 8};
+        // Light lists from 8 lights (FaultSceneOptions::lights), whatever postfx's default.
+        frame.froxelFog.lightListMinLights = 8;
         fog.enabled = false;
     }
     frame.lights = sceneLights();

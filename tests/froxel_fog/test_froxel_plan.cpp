@@ -129,14 +129,17 @@ TEST_F(FroxelFogPlanTest, WithoutLightsNoLightWork) {
     EXPECT_FALSE(plan.reads("host.shadow_map"));  // no sun
 }
 
-// Below light_list_min_lights the lights' buffer only (zero-intensity lights do not count); at it, the
-// light lists: clusters of 8×8 froxels × 16 slices, one 32-bit word per 32 lights each.
+// Below light_list_min_lights (its default) the lights' buffer only (zero-intensity lights do not count);
+// at it, the light lists: clusters of 8×8 froxels × 16 slices, one 32-bit word per 32 lights each.
 TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
+    const uint32_t threshold = postfx::FroxelFogSettings{}.lightListMinLights;
+    ASSERT_GT(threshold, 1u);
+    ASSERT_LE(threshold, 40u) << "`many` below has 40 lights";
     FroxelCase few = c;
-    for (int k = 0; k < 7; ++k)
+    for (uint32_t k = 0; k + 1 < threshold; ++k)
         few.lights.push_back(light(k));
     few.lights.push_back(light(9.0));
-    few.lights.back().intensity = glm::vec3(0.0f);  // the 8th light adds nothing
+    few.lights.back().intensity = glm::vec3(0.0f);  // the threshold-th light adds nothing
     postfx::FramePlan plan = planAndRun(few, 0);
     EXPECT_EQ(passNames(plan),
               (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate", "froxel_fog.apply"}));

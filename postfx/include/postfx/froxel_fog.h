@@ -57,8 +57,11 @@ struct FroxelFogSettings : FogMedium {
     bool jitter = true;          // the sample inside each froxel moves per frame (Halton 2, 3, 5)
     // Light lists (docs/effects/froxel-fog.md#light-lists): a pass bins the lights into clusters of 8×8
     // froxels × 16 slices when the frame has at least this many lights with a non-zero intensity; with
-    // fewer, every froxel loops over all of them [lights]; in [1, 257] (257: never, 1: always).
-    uint32_t lightListMinLights = 8;
+    // fewer, every froxel loops over all of them [lights]; in [1, 257] (257: never, 1: always). 24: the
+    // fewest lights from which the lists (their pass and the scatter) measured faster than the loop, on
+    // the H100 at 1920×1080 with the default grid (postfx-bench --froxel, docs/effects/froxel-fog.md,
+    // "Benchmark"); below, their pass costs more than the loop it shortens.
+    uint32_t lightListMinLights = 24;
     // volumeCount local fog volumes (may be null when 0), read during record(); count in [0, 64].
     const FogVolume* volumes = nullptr;
     uint32_t volumeCount = 0;
