@@ -324,18 +324,8 @@ const std::vector<std::string>& froxelCsvColumns() {
 bool writeFroxelCsv(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
                     std::string& error) {
     std::ostringstream out;
-    out << "# postfx-bench --froxel results; columns: docs/accuracy-cost/README.md (Froxel fog)\n"
-        << "# device: " << info.device << "\n"
-        << "# vulkan: " << info.vulkanApi << "\n"
-        << "# date: " << info.date << "\n"
-        << "# command: " << info.commandLine << "\n"
-        << "# image: " << referenceSummary(info) << "\n"
-        << "# timing: " << warmupText(info) << ", then " << info.frames << " timed frames\n"
-        << "# bandwidth: " << bandwidthText(info) << "\n";
-    const std::vector<std::string>& columns = froxelCsvColumns();
-    for (size_t i = 0; i < columns.size(); ++i)
-        out << (i ? "," : "") << columns[i];
-    out << "\n";
+    writeCsvPreamble(out, "postfx-bench --froxel results; columns: docs/accuracy-cost/README.md (Froxel fog)",
+                     info, "# bandwidth: " + bandwidthText(info) + "\n", froxelCsvColumns());
     const double floorMs = applyFloorMs(info.width, info.height, info.bandwidth);
     for (const Result& r : results) {
         const Setting& s = r.setting;
@@ -359,34 +349,18 @@ bool writeFroxelCsv(const std::string& path, const RunInfo& info, const std::vec
             froxel ? "" : formatNumber(s.resolutionScale, 4),
             std::to_string(s.shadowKernel),
             std::to_string(s.noiseSize),
-            std::to_string(info.width),
-            std::to_string(info.height),
-            std::to_string(info.warmup),
-            std::to_string(r.timing.frames),
-            formatNumber(r.timing.median, 6),
-            formatNumber(r.timing.p10, 6),
-            formatNumber(r.timing.p90, 6),
-            formatNumber(r.timing.min, 6),
-            formatNumber(r.timing.max, 6),
         };
+        appendTimingCells(row, info, r.timing);
         for (const char* pass : kFroxelPasses)
             row.push_back(froxel ? formatNumber(passMs(r, pass), 6) : "");
         row.push_back(passes);
-        uint64_t nonFinite = 0;
-        for (const ErrorStats& e : r.error) {
-            row.push_back(formatNumber(e.relativeRmse, 6));
-            row.push_back(formatNumber(e.maxAbsError, 6));
-            row.push_back(formatNumber(e.fractionOff, 6));
-            nonFinite = std::max(nonFinite, e.nonFinite);
-        }
+        const uint64_t nonFinite = appendErrorCells(row, r.error);
         row.push_back(std::isfinite(r.error[0].relativeRmse) ? std::to_string(nonFinite) : "");
         row.push_back(froxel ? formatNumber(floorMs, 6) : "");
         row.push_back(froxel ? formatNumber(passMs(r, "froxel_fog.apply") / floorMs, 4) : "");
         row.push_back(s.lightSweep ? "" : (r.pareto1 ? "1" : "0"));
         row.push_back(s.lightSweep ? "" : (r.pareto16 ? "1" : "0"));
-        for (size_t i = 0; i < row.size(); ++i)
-            out << (i ? "," : "") << row[i];
-        out << "\n";
+        writeCsvRow(out, row);
     }
     return writeTextFile(path, out.str(), error);
 }

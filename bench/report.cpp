@@ -129,22 +129,48 @@ const std::vector<std::string>& csvColumns() {
     return columns;
 }
 
-bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
-              std::string& error) {
-    std::ostringstream out;
-    // Metadata as comment lines (pandas: comment='#').
-    out << "# postfx-bench results; columns: docs/accuracy-cost/README.md\n"
+void writeCsvPreamble(std::ostream& out, const std::string& title, const RunInfo& info,
+                      const std::string& extraLines, const std::vector<std::string>& columns) {
+    out << "# " << title << "\n"
         << "# device: " << info.device << "\n"
         << "# vulkan: " << info.vulkanApi << "\n"
         << "# date: " << info.date << "\n"
         << "# command: " << info.commandLine << "\n"
         << "# image: " << referenceSummary(info) << "\n"
         << "# timing: " << warmupText(info) << ", then " << info.frames << " timed frames\n"
-        << "# texture rate: " << textureRateText(info) << "\n";
-    const std::vector<std::string>& columns = csvColumns();
-    for (size_t i = 0; i < columns.size(); ++i)
-        out << (i ? "," : "") << columns[i];
+        << extraLines;
+    writeCsvRow(out, columns);
+}
+
+void appendTimingCells(std::vector<std::string>& row, const RunInfo& info, const Timing& timing) {
+    row.insert(row.end(),
+               {std::to_string(info.width), std::to_string(info.height), std::to_string(info.warmup),
+                std::to_string(timing.frames), formatNumber(timing.median, 6), formatNumber(timing.p10, 6),
+                formatNumber(timing.p90, 6), formatNumber(timing.min, 6), formatNumber(timing.max, 6)});
+}
+
+uint64_t appendErrorCells(std::vector<std::string>& row, const std::array<ErrorStats, 3>& error) {
+    uint64_t nonFinite = 0;
+    for (const ErrorStats& e : error) {
+        row.push_back(formatNumber(e.relativeRmse, 6));
+        row.push_back(formatNumber(e.maxAbsError, 6));
+        row.push_back(formatNumber(e.fractionOff, 6));
+        nonFinite = std::max(nonFinite, e.nonFinite);
+    }
+    return nonFinite;
+}
+
+void writeCsvRow(std::ostream& out, const std::vector<std::string>& row) {
+    for (size_t i = 0; i < row.size(); ++i)
+        out << (i ? "," : "") << row[i];
     out << "\n";
+}
+
+bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
+              std::string& error) {
+    std::ostringstream out;
+    writeCsvPreamble(out, "postfx-bench results; columns: docs/accuracy-cost/README.md", info,
+                     "# texture rate: " + textureRateText(info) + "\n", csvColumns());
     for (const Result& r : results) {
         const Setting& s = r.setting;
         const bool ours = s.method == Method::Ours;
@@ -161,34 +187,17 @@ bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Re
             ours ? formatNumber(s.resolutionScale, 4) : "",
             std::to_string(s.noiseSize),
             std::to_string(s.shadowKernel),
-            std::to_string(info.width),
-            std::to_string(info.height),
-            std::to_string(info.warmup),
-            std::to_string(r.timing.frames),
-            formatNumber(r.timing.median, 6),
-            formatNumber(r.timing.p10, 6),
-            formatNumber(r.timing.p90, 6),
-            formatNumber(r.timing.min, 6),
-            formatNumber(r.timing.max, 6),
-            passes,
         };
-        uint64_t nonFinite = 0;
-        for (const ErrorStats& e : r.error) {
-            row.push_back(formatNumber(e.relativeRmse, 6));
-            row.push_back(formatNumber(e.maxAbsError, 6));
-            row.push_back(formatNumber(e.fractionOff, 6));
-            nonFinite = std::max(nonFinite, e.nonFinite);
-        }
-        row.push_back(std::to_string(nonFinite));
+        appendTimingCells(row, info, r.timing);
+        row.push_back(passes);
+        row.push_back(std::to_string(appendErrorCells(row, r.error)));
         row.push_back(formatNumber(r.fetchesPerPixel, 6));
         row.push_back(formatNumber(r.floorMs, 6));
         row.push_back(formatNumber(r.timing.median / r.floorMs, 4));
         const bool swept = ours && s.preset.empty();
         row.push_back(swept ? (r.pareto1 ? "1" : "0") : "");
         row.push_back(swept ? (r.pareto16 ? "1" : "0") : "");
-        for (size_t i = 0; i < row.size(); ++i)
-            out << (i ? "," : "") << row[i];
-        out << "\n";
+        writeCsvRow(out, row);
     }
     return writeTextFile(path, out.str(), error);
 }

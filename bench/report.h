@@ -4,6 +4,8 @@
 
 #include "bench_types.h"
 
+#include <array>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,17 @@ std::string referenceSummary(const RunInfo& info);
 // The header's warm-up text.
 std::string warmupText(const RunInfo& info);
 std::string textureRateText(const RunInfo& info);
+// CSV files (writeCsv, writeFroxelCsv): the metadata comment lines (pandas: comment='#') starting with
+// `title`, the run's device, API, date, command, image and timing, then `extraLines` (each "# ...\n"), then
+// the header row of `columns`.
+void writeCsvPreamble(std::ostream& out, const std::string& title, const RunInfo& info,
+                      const std::string& extraLines, const std::vector<std::string>& columns);
+// The run columns and the timing columns of a row: width, height, warm-up, frames, median, p10, p90, min,
+// max.
+void appendTimingCells(std::vector<std::string>& row, const RunInfo& info, const Timing& timing);
+// rel_rmse, max_abs, frac_off of each averaged-frames error; returns the largest non-finite count.
+uint64_t appendErrorCells(std::vector<std::string>& row, const std::array<ErrorStats, 3>& error);
+void writeCsvRow(std::ostream& out, const std::vector<std::string>& row);
 // The scenes in the order their first result appears.
 std::vector<std::string> sceneOrder(const std::vector<Result>& results);
 
