@@ -53,21 +53,7 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
     const demo::VulkanHost& host = runner->host();
 
     RunInfo info;
-    info.device = host.deviceDescription();
-    const uint32_t api = host.properties.apiVersion;
-    info.vulkanApi = std::to_string(VK_API_VERSION_MAJOR(api)) + "." +
-                     std::to_string(VK_API_VERSION_MINOR(api)) + "." +
-                     std::to_string(VK_API_VERSION_PATCH(api));
-    info.date = date;
-    info.commandLine = commandLine;
-    info.width = args.runner.width;
-    info.height = args.runner.height;
-    info.errorStride = args.errorStride;
-    info.referenceSteps = args.referenceSteps;
-    info.warmup = args.runner.warmup;
-    info.warmupMs = args.runner.warmupMs;
-    info.coldWarmupMs = args.runner.coldWarmupMs;
-    info.frames = args.runner.frames;
+    fillRunHeader(info, host, args.runner, args.errorStride, args.referenceSteps, date, commandLine);
     info.froxelTargetScene = args.targetScene;
     info.lightListDefault = postfx::FroxelFogSettings{}.lightListMinLights;
     for (const ScenePlan& p : plans)

@@ -427,21 +427,7 @@ int run(const Args& args, const std::string& command) {
     const demo::VulkanHost& host = runner->host();
 
     bench::RunInfo info;
-    info.device = host.deviceDescription();
-    const uint32_t api = host.properties.apiVersion;
-    info.vulkanApi = std::to_string(VK_API_VERSION_MAJOR(api)) + "." +
-                     std::to_string(VK_API_VERSION_MINOR(api)) + "." +
-                     std::to_string(VK_API_VERSION_PATCH(api));
-    info.date = utcNow();
-    info.commandLine = command;
-    info.width = args.runner.width;
-    info.height = args.runner.height;
-    info.errorStride = args.errorStride;
-    info.referenceSteps = args.referenceSteps;
-    info.warmup = args.runner.warmup;
-    info.warmupMs = args.runner.warmupMs;
-    info.coldWarmupMs = args.runner.coldWarmupMs;
-    info.frames = args.runner.frames;
+    fillRunHeader(info, host, args.runner, args.errorStride, args.referenceSteps, utcNow(), command);
     info.textureRate = args.textureRate;
     info.baselines = baselines;
     info.presetScene = args.presetScene;

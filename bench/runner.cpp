@@ -542,4 +542,24 @@ bool Runner::copyBandwidth(uint64_t bytes, uint32_t repeats, double& transfer, d
     return ok;
 }
 
+void fillRunHeader(RunInfo& info, const demo::VulkanHost& host, const RunnerOptions& options,
+                   uint32_t errorStride, uint32_t referenceSteps, const std::string& date,
+                   const std::string& commandLine) {
+    info.device = host.deviceDescription();
+    const uint32_t api = host.properties.apiVersion;
+    info.vulkanApi = std::to_string(VK_API_VERSION_MAJOR(api)) + "." +
+                     std::to_string(VK_API_VERSION_MINOR(api)) + "." +
+                     std::to_string(VK_API_VERSION_PATCH(api));
+    info.date = date;
+    info.commandLine = commandLine;
+    info.width = options.width;
+    info.height = options.height;
+    info.errorStride = errorStride;
+    info.referenceSteps = referenceSteps;
+    info.warmup = options.warmup;
+    info.warmupMs = options.warmupMs;
+    info.coldWarmupMs = options.coldWarmupMs;
+    info.frames = options.frames;
+}
+
 }  // namespace bench

@@ -28,6 +28,12 @@ struct RunnerOptions {
     bool validation = false;  // Khronos validation with synchronization validation
 };
 
+// The report header's run fields common to every mode: device, Vulkan API, date, command, image size,
+// error stride, reference steps, warm-up and timed frames.
+void fillRunHeader(RunInfo& info, const demo::VulkanHost& host, const RunnerOptions& options,
+                   uint32_t errorStride, uint32_t referenceSteps, const std::string& date,
+                   const std::string& commandLine);
+
 class Runner {
 public:
     static std::unique_ptr<Runner> create(const RunnerOptions& options, std::string& error);
