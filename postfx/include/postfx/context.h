@@ -61,6 +61,9 @@ struct FrameInfo {
 
     VkCommandBuffer commandBuffer = VK_NULL_HANDLE;  // recording, outside a render pass
     uint64_t frameIndex = 0;  // increases by one per frame; selects per-frame resources and noise seeds
+    // The view does not continue the previous frame's (a cut, a teleport, a new level): every effect's
+    // temporal history is dropped and this frame starts it anew (docs/temporal.md).
+    bool cameraCut = false;
 
     // HDR scene color, linear radiance [W/(sr·m²) or cd/m², the host's choice, used consistently].
     // Formats: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, usage STORAGE. Effects composite into it.

@@ -7,6 +7,7 @@
 
 #include <postfx/export.h>
 #include <postfx/result.h>
+#include <postfx/temporal.h>
 #include <postfx/types.h>
 
 #include <cstdint>
@@ -100,6 +101,10 @@ struct FogSettings : FogMedium {
     // The march's many samples already soften shafts (what a larger kernel costs and buys:
     // docs/accuracy-cost/README.md).
     uint32_t shadowKernel = 1;
+    // Temporal accumulation of the fog's (in-scattered light, transmittance) before it is composited
+    // (docs/effects/fog.md#temporal): off by default here; the presets turn it on where it measured
+    // better (docs/effects/fog.md#quality-presets).
+    TemporalSettings temporal;
 };
 
 // FogQuality::Auto's measurements for one (color extent, noise on, shadow map present): the median GPU

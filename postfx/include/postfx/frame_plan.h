@@ -29,6 +29,9 @@ struct PlannedResource {
     // Device memory of its data [bytes]: texels × bytes per texel for images, the size of buffers. A
     // driver's allocation may round this up; postfx allocates nothing else per effect.
     uint64_t bytes = 0;
+    // Its contents are carried from one frame to the next (a temporal history, docs/temporal.md): a
+    // host's render graph must keep it, unaliased, between postfx's frames.
+    bool history = false;
 };
 
 struct POSTFX_API FramePlan {

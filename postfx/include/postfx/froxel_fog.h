@@ -65,6 +65,9 @@ struct FroxelFogSettings : FogMedium {
     // volumeCount local fog volumes (may be null when 0), read during record(); count in [0, 64].
     const FogVolume* volumes = nullptr;
     uint32_t volumeCount = 0;
+    // Temporal accumulation of the scattering volume (docs/effects/froxel-fog.md#temporal): on by
+    // default, 5% of each froxel new per frame (as the seed and Wronski 2014).
+    TemporalSettings temporal{true, 0.05f};
 };
 
 // Checks every setting against its documented range (the medium's as FogMedium's, named "froxel_fog.*",

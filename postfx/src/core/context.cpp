@@ -230,6 +230,8 @@ Status Context::record(const FrameInfo& frame) {
         return impl.report(s);
     for (const Impl::AutoUse& m : measuring)
         if (m.preset != ~0u) impl.autoQuality.recorded(frame.frameIndex, m.key, m.preset);
+    for (const auto& effect : impl.effects)
+        effect->recorded(impl.resolved, effect->active(impl.resolved));
     return Status::success();
 }
 

@@ -50,6 +50,11 @@ public:
     // Declares the frame's resources and passes into `builder` (frame validated, preset applied, the
     // effect active). Must not create GPU objects or change the effect: plan() calls it too.
     virtual Status declare(FrameBuilder& builder) const = 0;
+
+    // Called once record() has recorded `frame` (validated, presets applied), for every effect, whether
+    // `active` or not: an effect with a temporal history moves its state on (core/temporal.h). plan()
+    // never calls it.
+    virtual void recorded(const FrameInfo& /*frame*/, bool /*active*/) {}
 };
 
 }  // namespace postfx::core

@@ -34,7 +34,8 @@ bool isImage(const ResourceDecl& r) {
     return r.kind != ResourceDecl::Kind::Uniform;
 }
 bool owned(const ResourceDecl& r) {
-    return r.kind == ResourceDecl::Kind::Transient || r.kind == ResourceDecl::Kind::Persistent;
+    return r.kind == ResourceDecl::Kind::Transient || r.kind == ResourceDecl::Kind::Persistent ||
+           r.kind == ResourceDecl::Kind::History;
 }
 bool sameDesc(const ImageDesc& a, const ImageDesc& b) {
     return a.type == b.type && a.format == b.format && a.extent.width == b.extent.width &&
@@ -160,6 +161,10 @@ ImageRef FrameBuilder::transientImage(const ResourceId& id, const ImageDesc& des
 
 ImageRef FrameBuilder::persistentImage(const ResourceId& id, const ImageDesc& desc, uint64_t buildKey) {
     return ownedImage(id, desc, ResourceDecl::Kind::Persistent, buildKey);
+}
+
+ImageRef FrameBuilder::historyImage(const ResourceId& id, const ImageDesc& desc) {
+    return ownedImage(id, desc, ResourceDecl::Kind::History, 0);
 }
 
 ImageRef FrameBuilder::find(const ResourceId& id) const {
@@ -349,7 +354,7 @@ void FrameGraph::plan(const Frame& f, FramePlan& out) const {
                                    ? slotBytes(r.uniformBytes) * framesInFlight_
                                    : uint64_t(r.desc.extent.width) * r.desc.extent.height *
                                          r.desc.extent.depth * texelBytes(r.desc.format);
-        out.resources.push_back({r.name, effectName(r.effect), bytes});
+        out.resources.push_back({r.name, effectName(r.effect), bytes, r.kind == ResourceDecl::Kind::History});
     }
 }
 

@@ -72,7 +72,7 @@ struct Access {
 };
 
 struct ResourceDecl {
-    enum class Kind : uint8_t { Host, External, Transient, Persistent, Uniform };
+    enum class Kind : uint8_t { Host, External, Transient, Persistent, History, Uniform };
     Kind kind = Kind::Host;
     int effect = -1;  // declaring effect; -1: the context
     const char* name = "";
@@ -138,6 +138,11 @@ public:
     // An image postfx owns whose contents persist: the passes writing it run only when no image built
     // from `buildKey` (and `desc`) is held and something reads it this frame.
     ImageRef persistentImage(const ResourceId& id, const ImageDesc& desc, uint64_t buildKey);
+    // An image postfx owns whose contents are carried to the next frame (a temporal history): kept while
+    // declared (recreated, contents undefined, when `desc` changes), released in the first frame that
+    // does not declare it. Passes writing it are live when a later pass reads it, like a transient's;
+    // whether its contents are valid is the declaring effect's to know (core/temporal.h).
+    ImageRef historyImage(const ResourceId& id, const ImageDesc& desc);
     // An image another effect declared earlier this frame (invalid if it did not).
     ImageRef find(const ResourceId& id) const;
     // Uniform data for this frame: `bytes` copied into a ring of framesInFlight slots.

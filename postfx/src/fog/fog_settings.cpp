@@ -79,6 +79,13 @@ Status validateMedium(const FogMedium& m, const std::string& p) {
     return Status::success();
 }
 
+Status validateTemporal(const TemporalSettings& t, const std::string& p) {
+    const std::string key = p + ".temporal.blend_weight";
+    if (Status r = checkRange(key.c_str(), t.blendWeight, 0.0, 1.0); !r) return r;
+    if (t.blendWeight <= 0.0f) return bad(key, text(t.blendWeight) + " must be > 0");
+    return Status::success();
+}
+
 Status validateSettings(const FogSettings& s) {
     if (uint32_t(s.quality) > uint32_t(FogQuality::Auto))
         return bad("fog.quality", std::to_string(uint32_t(s.quality)) +
@@ -92,6 +99,7 @@ Status validateSettings(const FogSettings& s) {
     if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
         return bad("fog.shadow_kernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
+    if (Status r = validateTemporal(s.temporal, "fog"); !r) return r;
     return validateMedium(s, "fog");
 }
 

@@ -18,6 +18,10 @@ constexpr float kMaxHeightExponent = gpu::kMaxHeightExponent;  // -height_fallof
 // noise's settings are checked when the noise is enabled.
 Status validateMedium(const FogMedium& medium, const std::string& prefix);
 
+// The temporal settings' checks (TemporalSettings), named with the effect's `prefix`
+// ("fog.temporal.blend_weight: 0 must be > 0").
+Status validateTemporal(const TemporalSettings& temporal, const std::string& prefix);
+
 // InvalidArgument naming the field ("fog.density: -1 is negative") for any value out of range or NaN.
 Status validateSettings(const FogSettings& settings);
 

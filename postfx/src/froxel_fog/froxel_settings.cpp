@@ -39,6 +39,7 @@ Status checkVolume(const FogVolume& v, uint32_t index) {
 
 Status validateFroxelFogSettings(const FroxelFogSettings& s) {
     if (Status r = fog::validateMedium(s, "froxel_fog"); !r) return r;
+    if (Status r = fog::validateTemporal(s.temporal, "froxel_fog"); !r) return r;
     for (int a = 0; a < 3; ++a)
         if (s.grid[a] < 1 || s.grid[a] > kMaxFroxelGridSize)
             return invalid("froxel_fog.grid[" + std::to_string(a) + "]: " + std::to_string(s.grid[a]) +
