@@ -105,6 +105,8 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     postfx::FrameInfo frame;
     frame.commandBuffer = cmd;
     frame.frameIndex = frameIndex;
+    // render() starts every call at frame 0: a new sequence, which no temporal history may continue.
+    frame.cameraCut = frameIndex == 0;
     frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL, hdr.usage};
     frame.depth = {gbuffer.depth.image,
                    gbuffer.depth.view,

@@ -35,7 +35,20 @@ PFX_CONST(uint, kNoiseWorleyBasePeriod, 4u);  // cells per tile of the first Wor
 // Perlin–Worley values below this map to 0 (stretches the used range to mean ~0.5; noise.glsl).
 PFX_CONST(float, kNoiseRangeLow, 0.3f);
 
+// ---- temporal accumulation, both fogs (docs/temporal.md; postfx/src/core/temporal.h) ----
+PFX_CONST(uint, kTemporalMaxSpheres, 64u);  // postfx::kTemporalMaxRejectedSpheres
+
+struct TemporalUniforms {
+    mat4 previousClip;  // current camera-relative position -> the previous frame's clip space
+    vec4 cameraDelta;   // xyz: current camera position - previous [m]; w: the current frame's weight [1]
+    vec4 previous;      // froxel fog: x: the previous grid's near [m], y: history radiance factor
+                        // (current storage scale / previous)
+    uvec4 state;        // x: 1 when the history is valid, y: rejected spheres
+    vec4 spheres[64];   // rejected spheres: xyz: camera-relative centre [m], w: radius [m]
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(TemporalUniforms) == 64 + 3 * 16 + 64 * 16, "TemporalUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

@@ -19,6 +19,17 @@ PFX_CONST(uint, kFogBindingNoise, 4);      // sampler3D: noise, trilinear, repea
 PFX_CONST(uint, kFogBindingUniforms, 5);   // uniform buffer: FogUniforms
 // storage image: the reduced-resolution march (rgb: in-scattered radiance, a: transmittance), postfx's own
 PFX_CONST(uint, kFogBindingScatter, 6);
+// Temporal accumulation (shaders/fog/temporal.comp, docs/effects/fog.md#temporal): the previous frame's
+// accumulated (L, T) and the distance each texel's ray ended at (postfx's own, at the march's size), the
+// ones this frame writes, and the TemporalUniforms.
+PFX_CONST(uint, kFogBindingHistoryIn, 7);     // storage image, color format: previous (L, T)
+PFX_CONST(uint, kFogBindingHistoryOut, 8);    // storage image, color format: accumulated (L, T)
+PFX_CONST(uint, kFogBindingDistanceIn, 9);    // storage image r32f: previous ray-end distance [m]
+PFX_CONST(uint, kFogBindingDistanceOut, 10);  // storage image r32f: this frame's ray-end distance [m]
+PFX_CONST(uint, kFogBindingTemporal, 11);     // uniform buffer: TemporalUniforms
+// A history texel is used for a pixel when the distance its ray ended at (min(surface, max distance))
+// is within this fraction of the distance from the previous camera to the pixel's point (disocclusion).
+PFX_CONST(float, kFogTemporalDistanceTolerance, 0.1f);
 
 // Upsampling of a reduced-resolution march (shaders/fog/upsample.comp): a low-resolution sample
 // is used for a pixel when its surface distance is within this fraction of the pixel's [1].

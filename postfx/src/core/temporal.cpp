@@ -51,7 +51,8 @@ bool lightChanged(const LocalLight& then, const LocalLight& now) {
     if (!lit(now)) return false;  // off before and after
     if (then.type != now.type) return true;
     const double range = std::max(then.range, now.range);
-    if (glm::length(glm::dvec3(now.position) - glm::dvec3(then.position)) > kTemporalLightMoveFraction * range)
+    if (glm::length(glm::dvec3(now.position) - glm::dvec3(then.position)) >
+        kTemporalLightMoveFraction * range)
         return true;
     if (relativeChange(then.intensity, now.intensity) > kTemporalLightRelativeChange) return true;
     if (relativeChange(then.range, now.range) > kTemporalLightRelativeChange) return true;
@@ -92,6 +93,17 @@ uint64_t hashBytes(uint64_t hash, const void* bytes, size_t size) {
     return hash;
 }
 
+gpu::TemporalUniforms temporalUniforms(const TemporalFrame& t) {
+    gpu::TemporalUniforms u{};
+    u.previousClip = t.previousClipFromCurrent;
+    u.cameraDelta = glm::vec4(t.cameraDelta, t.currentWeight);
+    u.previous = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+    u.state = glm::uvec4(t.historyValid ? 1u : 0u, uint32_t(t.rejected.size()), 0u, 0u);
+    for (size_t i = 0; i < t.rejected.size() && i < gpu::kTemporalMaxSpheres; ++i)
+        u.spheres[i] = glm::vec4(t.rejected[i].center, t.rejected[i].radius);
+    return u;
+}
+
 TemporalFrame TemporalHistory::decide(const FrameInfo& frame, const TemporalSettings& settings, uint64_t key,
                                       bool localLights) const {
     return evaluate(frame, settings, key, localLights, nullptr);
@@ -122,7 +134,8 @@ TemporalFrame TemporalHistory::evaluate(const FrameInfo& frame, const TemporalSe
         t.resetReason = "sun changed";
     else if (relativeChange(ambient_, frame.ambient) > kTemporalLightRelativeChange)
         t.resetReason = "ambient changed";
-    else if (shadowMap != shadowMap_ || (shadowMap && matrixChanged(shadowMatrix_, frame.shadowMap.worldToClip)))
+    else if (shadowMap != shadowMap_ ||
+             (shadowMap && matrixChanged(shadowMatrix_, frame.shadowMap.worldToClip)))
         t.resetReason = "shadow map's matrix changed";
     else
         t.resetReason = "";
@@ -158,8 +171,7 @@ TemporalFrame TemporalHistory::evaluate(const FrameInfo& frame, const TemporalSe
 
     t.historyValid = !reset;
     t.framesSinceReset = reset ? 0u : std::min(frames_, 1u << 20);
-    t.currentWeight =
-        reset ? 1.0f : std::max(settings.blendWeight, 1.0f / float(t.framesSinceReset + 1u));
+    t.currentWeight = reset ? 1.0f : std::max(settings.blendWeight, 1.0f / float(t.framesSinceReset + 1u));
     if (t.historyValid) {
         // previous clip = P' · R' · (x + camera - camera'), composed in double.
         const glm::dvec3 delta = camera - glm::dvec3(camera_.position);

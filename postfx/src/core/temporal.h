@@ -9,6 +9,8 @@
 
 #include <postfx/context.h>
 
+#include "common/shared.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -32,8 +34,8 @@ struct TemporalFrame {
     uint32_t readSlot = 1, writeSlot = 0;  // which of the effect's two history images is read / written
     // Current camera-relative position -> the previous frame's clip space (Vulkan, its DepthConvention).
     glm::mat4 previousClipFromCurrent{1.0f};
-    glm::vec3 cameraDelta{0.0f};  // current camera position - previous [m]
-    CameraInput previousCamera;   // the previous recorded frame's camera
+    glm::vec3 cameraDelta{0.0f};           // current camera position - previous [m]
+    CameraInput previousCamera;            // the previous recorded frame's camera
     std::vector<TemporalSphere> rejected;  // changed local lights' spheres (old and new place)
 };
 
@@ -65,6 +67,9 @@ private:
     DMat4 shadowMatrix_{1.0};
     std::vector<LocalLight> lights_;
 };
+
+// The TemporalUniforms of a frame (shaders/common/shared.h); the froxel fog fills `previous` itself.
+gpu::TemporalUniforms temporalUniforms(const TemporalFrame& frame);
 
 // FNV-1a over `bytes`, continuing `hash` (keys of settings).
 uint64_t hashBytes(uint64_t hash, const void* bytes, size_t size);

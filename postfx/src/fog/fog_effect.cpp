@@ -26,6 +26,15 @@ constexpr core::Binding kRaymarchBindings[] = {kColorIn,   kColorOut,     kDepth
 constexpr core::Binding kReducedBindings[] = {kDepth, kShadowMap, kNoiseTexture, kUniformBuffer,
                                               kScatterImage};
 constexpr core::Binding kUpsampleBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kScatterImage};
+constexpr core::Binding kTemporalBindings[] = {
+    kDepth,
+    kUniformBuffer,
+    kScatterImage,
+    {gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    {gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    {gpu::kFogBindingDistanceIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    {gpu::kFogBindingDistanceOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    {gpu::kFogBindingTemporal, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 
 // Each color-writing kernel has an RGBA16F and an RGBA32F variant (the color format).
@@ -38,11 +47,34 @@ const core::ComputePipelineDesc kRaymarchReduced[2] = {
 const core::ComputePipelineDesc kUpsample[2] = {
     {"fog.upsample", spirv::fog_upsample_comp, kUpsampleBindings},
     {"fog.upsample", spirv::fog_upsample_comp_COLOR_RGBA32F, kUpsampleBindings}};
+const core::ComputePipelineDesc kTemporal[2] = {
+    {"fog.temporal", spirv::fog_temporal_comp, kTemporalBindings},
+    {"fog.temporal", spirv::fog_temporal_comp_COLOR_RGBA32F, kTemporalBindings}};
+// The temporal accumulation composited at full size: upsample.comp's one-texel-per-pixel path.
+const core::ComputePipelineDesc kComposite[2] = {
+    {"fog.composite", spirv::fog_upsample_comp, kUpsampleBindings},
+    {"fog.composite", spirv::fog_upsample_comp_COLOR_RGBA32F, kUpsampleBindings}};
 const core::ComputePipelineDesc kNoiseGenerate{"fog.noise", spirv::fog_noise_generate_comp, kNoiseBindings,
                                                sizeof(gpu::NoisePush)};
 
 uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kFogGroupSize - 1) / gpu::kFogGroupSize;
+}
+
+// Everything the accumulated (L, T) depends on besides the camera and the light (core/temporal.h).
+uint64_t temporalKey(const FrameInfo& frame) {
+    using core::hashValue;
+    const FogSettings& s = frame.fog;
+    uint64_t h = mediumKey(s);
+    h = hashValue(h, frame.color.extent.width);
+    h = hashValue(h, frame.color.extent.height);
+    h = hashValue(h, frame.color.format);
+    h = hashValue(h, s.steps);
+    h = hashValue(h, s.jitter);
+    h = hashValue(h, s.resolutionScale);
+    h = hashValue(h, s.transmittanceCutoff);
+    h = hashValue(h, s.skipEmptySpace);
+    return hashValue(h, s.shadowKernel);
 }
 
 }  // namespace
@@ -91,15 +123,13 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const glm::uvec2 march = fogMarchExtent(full.x, full.y, frame.fog.resolutionScale);
     const bool reduced = march != full;
 
+    const bool temporal = frame.fog.temporal.enabled;
+
     const core::ImageRef noiseImage = declareNoise(b, noise, {kNoise, kNoNoise, kNoiseGenerate});
-    core::ImageRef scatter;
-    if (reduced) {
-        core::ImageDesc desc;
-        desc.format = frame.color.format;
-        desc.extent = {march.x, march.y, 1};
-        desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-        scatter = b.transientImage(kScatter, desc);
-    }
+    core::ImageDesc marchDesc;
+    marchDesc.format = frame.color.format;
+    marchDesc.extent = {march.x, march.y, 1};
+    marchDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
     const gpu::FogUniforms u = buildUniforms(frame, b.depthConvention(), noise.enabled, shadowRead);
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
 
@@ -108,9 +138,8 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const core::ImageRef shadow = shadowRead ? b.host(HostImage::ShadowMap) : depth;
     const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = noise.enabled ? Use::Sampled : Use::BoundOnly;
-    // Resolution scale: march into the scatter image at the reduced size, then upsample into color; at
-    // full size one pass marches and composites.
-    if (!reduced) {
+    // Full size without temporal: one pass marches and composites.
+    if (!reduced && !temporal) {
         const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
         b.pass(kRaymarch[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
             .bind(gpu::kFogBindingColorIn, source, Use::StorageRead)
@@ -121,20 +150,53 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);
         return Status::success();
     }
+    // Otherwise: march into the scatter image at the march's size, accumulate it (temporal), then
+    // upsample (or composite, at full size) into color.
+    const core::ImageRef scatter = b.transientImage(kScatter, marchDesc);
     b.pass(kRaymarchReduced[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
         .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
         .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFogBindingUniforms, uniforms)
         .bind(gpu::kFogBindingScatter, scatter, Use::StorageWrite);
+    core::ImageRef result = scatter;
+    if (temporal) {
+        const core::TemporalFrame t = history_.decide(frame, frame.fog.temporal, temporalKey(frame), false);
+        const gpu::TemporalUniforms tu = core::temporalUniforms(t);
+        const core::BufferRef temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
+        core::ImageRef history[2], distance[2];
+        core::ImageDesc distanceDesc = marchDesc;
+        distanceDesc.format = VK_FORMAT_R32_SFLOAT;
+        for (int i = 0; i < 2; ++i) {
+            history[i] = b.historyImage(kHistory[i], marchDesc);
+            distance[i] = b.historyImage(kHistoryDistance[i], distanceDesc);
+        }
+        b.pass(kTemporal[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
+            .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
+            .bind(gpu::kFogBindingUniforms, uniforms)
+            .bind(gpu::kFogBindingScatter, scatter, Use::StorageRead)
+            .bind(gpu::kFogBindingHistoryIn, history[t.readSlot], Use::StorageRead)
+            .bind(gpu::kFogBindingDistanceIn, distance[t.readSlot], Use::StorageRead)
+            .bind(gpu::kFogBindingTemporal, temporalUniforms)
+            .bind(gpu::kFogBindingHistoryOut, history[t.writeSlot], Use::StorageWrite)
+            .bind(gpu::kFogBindingDistanceOut, distance[t.writeSlot], Use::StorageWrite);
+        result = history[t.writeSlot];
+    }
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-    b.pass(kUpsample[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
+    b.pass(reduced ? kUpsample[rgba32] : kComposite[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
         .bind(gpu::kFogBindingColorIn, source, Use::StorageRead)
         .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
-        .bind(gpu::kFogBindingScatter, scatter, Use::StorageRead)
+        .bind(gpu::kFogBindingScatter, result, Use::StorageRead)
         .bind(gpu::kFogBindingUniforms, uniforms)
         .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);
     return Status::success();
+}
+
+void FogEffect::recorded(const FrameInfo& frame, bool active) {
+    if (active && frame.fog.temporal.enabled)
+        history_.recorded(frame, frame.fog.temporal, temporalKey(frame), false);
+    else
+        history_.dropped();
 }
 
 }  // namespace postfx::fog

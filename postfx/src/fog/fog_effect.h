@@ -1,12 +1,13 @@
 // The ray-marched fog behind the effect boundary (docs/effects/fog.md): its settings' checks, its
 // quality presets, and its declaration of a frame: the noise texture (generated, the host's, or a
 // stand-in), the scatter image of a reduced-resolution march, the uniforms, and the passes
-// fog.noise, fog.raymarch and fog.upsample.
+// fog.noise, fog.raymarch, fog.temporal and fog.upsample (fog.composite at full size with temporal).
 #pragma once
 
 #include "core/effect.h"
 #include "core/frame_graph.h"
 #include "core/gpu.h"
+#include "core/temporal.h"
 
 namespace postfx::fog {
 
@@ -15,6 +16,12 @@ inline constexpr core::ResourceId kNoise{"fog.noise"};        // generated noise
 inline constexpr core::ResourceId kNoNoise{"fog.no_noise"};   // 1-texel stand-in when noise is off
 inline constexpr core::ResourceId kScatter{"fog.scatter"};    // reduced-resolution march (L, T)
 inline constexpr core::ResourceId kUniforms{"fog.uniforms"};  // FogUniforms
+// Temporal accumulation (fog.md#temporal): two (L, T) histories and two ray-end distance images at the
+// march's size, read and written in turn, and the TemporalUniforms.
+inline constexpr core::ResourceId kHistory[2] = {{"fog.history_a"}, {"fog.history_b"}};
+inline constexpr core::ResourceId kHistoryDistance[2] = {{"fog.history_distance_a"},
+                                                         {"fog.history_distance_b"}};
+inline constexpr core::ResourceId kTemporalUniforms{"fog.temporal_uniforms"};
 
 class FogEffect final : public core::Effect {
 public:
@@ -33,9 +40,11 @@ public:
     uint32_t autoFeatures(const FrameInfo& frame) const override;
 
     Status declare(core::FrameBuilder& builder) const override;
+    void recorded(const FrameInfo& frame, bool active) override;
 
 private:
     bool noiseFormatSupported_ = false;
+    core::TemporalHistory history_;
 };
 
 }  // namespace postfx::fog

@@ -1,6 +1,7 @@
 #include "fog/fog_settings.h"
 
 #include "core/checks.h"
+#include "core/temporal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +45,32 @@ bool isPowerOfTwo(uint32_t v) {
 }
 
 }  // namespace
+
+uint64_t mediumKey(const FogMedium& m) {
+    using core::hashValue;
+    uint64_t h = core::kHashSeed;
+    h = hashValue(h, m.density);
+    for (int c = 0; c < 3; ++c)
+        h = hashValue(h, m.albedo[c]);
+    h = hashValue(h, m.anisotropy);
+    h = hashValue(h, m.heightFalloff);
+    h = hashValue(h, m.baseHeight);
+    h = hashValue(h, m.maxDistance);
+    h = hashValue(h, m.selfShadow);
+    h = hashValue(h, m.analyticTail);
+    const FogNoiseSettings& n = m.noise;
+    h = hashValue(h, n.enabled);
+    if (!n.enabled) return h;
+    h = hashValue(h, n.textureSize);
+    h = hashValue(h, n.seed);
+    h = hashValue(h, n.tiling);
+    h = hashValue(h, n.threshold);
+    h = hashValue(h, n.multiplier);
+    for (int c = 0; c < 3; ++c)
+        h = hashValue(h, n.wind[c]);
+    h = hashValue(h, n.hostTexture);
+    return hashValue(h, n.hostTextureLayout);
+}
 
 float clampedAnisotropy(float g) {
     return std::clamp(g, -kMaxAnisotropy, kMaxAnisotropy);

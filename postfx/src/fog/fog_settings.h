@@ -41,6 +41,9 @@ constexpr double kNegligibleOpticalDepth = 1e-4;
 // +Inf when the height term does not fall (height_falloff 0), -Inf for an empty medium.
 double fogMediumTop(const FogMedium& s, bool noiseEnabled);
 
+// A hash of every FogMedium field (the noise's included): a change resets the temporal history.
+uint64_t mediumKey(const FogMedium& medium);
+
 // g clamped to [-kMaxAnisotropy, kMaxAnisotropy].
 float clampedAnisotropy(float g);
 

@@ -1,0 +1,101 @@
+#version 450
+// Temporal accumulation of the ray-marched fog (docs/effects/fog.md#temporal): one invocation per texel
+// of the march blends this frame's (L, T) with the previous frames' accumulated (L, T), reprojected.
+//   1. The texel's ray ends at p = dir · min(surface, max distance); the previous camera saw p at
+//      previousClip · p. Off the previous image, or behind the previous camera: no history.
+//   2. Of the 2×2 history texels around it, those whose own ray ended within
+//      kFogTemporalDistanceTolerance of |p - previous camera| are blended bilinearly (disocclusion:
+//      none matches, no history); non-finite history (a host's bad pixel once) never matches.
+//   3. The history is clamped to the min/max box of this frame's 3×3 neighbourhood (Karis 2014), so
+//      what no longer belongs (moving shadows, a changed medium) cannot stay.
+//   4. result = history + w·(current - history), w = cameraDelta.w (1 without history).
+// The result is what upsample.comp composites; scene color is never in it.
+// Variants: COLOR_RGBA32F selects the storage format of the scatter and history images.
+#extension GL_GOOGLE_include_directive : require
+
+#include "fog/fog_shared.h"
+
+layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
+
+#include "fog/bindings.glsl"
+#include "fog/scatter_image.glsl"
+
+#ifdef COLOR_RGBA32F
+layout(binding = kFogBindingHistoryIn, rgba32f) uniform readonly image2D historyIn;
+layout(binding = kFogBindingHistoryOut, rgba32f) uniform writeonly image2D historyOut;
+#else
+layout(binding = kFogBindingHistoryIn, rgba16f) uniform readonly image2D historyIn;
+layout(binding = kFogBindingHistoryOut, rgba16f) uniform writeonly image2D historyOut;
+#endif
+layout(binding = kFogBindingDistanceIn, r32f) uniform readonly image2D distanceIn;
+layout(binding = kFogBindingDistanceOut, r32f) uniform writeonly image2D distanceOut;
+layout(binding = kFogBindingTemporal, std140) uniform Temporal {
+    TemporalUniforms temporal;
+};
+
+#include "fog/ray.glsl"
+
+bool finite(vec4 v) {
+    return !any(isnan(v)) && !any(isinf(v));
+}
+
+// The history at the previous frame's view of `point` (camera-relative), bilinear over the texels whose
+// ray ended at the same distance; false when there is none.
+bool reprojectedHistory(vec3 point, float maxDistance, out vec4 history) {
+    history = vec4(0.0);
+    vec4 clip = temporal.previousClip * vec4(point, 1.0);
+    if (!(clip.w > 0.0)) return false;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0)))) return false;
+    float expected = min(length(point + temporal.cameraDelta.xyz), maxDistance);
+
+    ivec2 size = ivec2(fog.scatterExtent.xy);
+    vec2 p = uv * vec2(size) - 0.5;
+    ivec2 p0 = ivec2(floor(p));
+    vec2 f = p - vec2(p0);
+    vec4 sum = vec4(0.0);
+    float weight = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 o = ivec2(k & 1, k >> 1);
+        ivec2 q = clamp(p0 + o, ivec2(0), size - 1);
+        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        vec4 h = imageLoad(historyIn, q);
+        float d = imageLoad(distanceIn, q).r;
+        if (w > 0.0 && finite(h) && abs(d - expected) <= kFogTemporalDistanceTolerance * expected) {
+            sum += w * h;
+            weight += w;
+        }
+    }
+    if (!(weight > 0.0)) return false;
+    history = sum / weight;
+    return true;
+}
+
+void main() {
+    uvec2 texel = gl_GlobalInvocationID.xy;
+    ivec2 size = ivec2(fog.scatterExtent.xy);
+    if (any(greaterThanEqual(texel, uvec2(size)))) return;
+    vec4 current = imageLoad(scatterImage, ivec2(texel));
+    FogRay ray = fogRay(fogSourcePixel(texel));
+    float maxDistance = fog.medium.w;
+    // NaN (a host's bad depth) stores as no distance any reprojection matches.
+    float distance = isnan(ray.surfaceDistance) ? -1.0 : min(ray.surfaceDistance, maxDistance);
+    imageStore(distanceOut, ivec2(texel), vec4(distance));
+
+    vec4 result = current;
+    vec4 history;
+    if (temporal.state.x != 0u && finite(current) && distance >= 0.0 &&
+        reprojectedHistory(ray.dir * distance, maxDistance, history)) {
+        vec4 lo = current, hi = current;
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x) {
+                vec4 n = imageLoad(scatterImage, clamp(ivec2(texel) + ivec2(x, y), ivec2(0), size - 1));
+                if (finite(n)) {
+                    lo = min(lo, n);
+                    hi = max(hi, n);
+                }
+            }
+        result = mix(clamp(history, lo, hi), current, temporal.cameraDelta.w);
+    }
+    imageStore(historyOut, ivec2(texel), result);
+}
