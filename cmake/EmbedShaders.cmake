@@ -2,7 +2,8 @@
 #                      INCLUDE_DIRS <dirs...>)
 # Compiles each shader at build time and adds a generated source to <target> that defines
 #   std::span<const uint32_t> <namespace>::<name>   (name: relative path with '/' and '.' as '_')
-# A variant is written `path@DEFINE`: compiled with -DDEFINE, named <name>_<DEFINE>.
+# A variant is written `path@DEFINE`: compiled with -DDEFINE, named <name>_<DEFINE>; `path@A+B` is
+# compiled with -DA -DB, named <name>_A_B.
 # declared in the generated header <target>_spirv.h. No shader file is read at run time.
 # glslangValidator is the one build-time tool postfx needs beyond the compiler (Debian: glslang-tools).
 find_program(POSTFX_GLSLANG_VALIDATOR glslangValidator REQUIRED)
@@ -18,13 +19,14 @@ function(postfx_embed_shaders target)
     foreach(entry IN LISTS ARG_SHADERS)
         set(define "")
         set(rel "${entry}")
-        if(entry MATCHES "^(.*)@([A-Za-z0-9_]+)$")
+        if(entry MATCHES "^(.*)@([A-Za-z0-9_+]+)$")
             set(rel "${CMAKE_MATCH_1}")
             set(define "${CMAKE_MATCH_2}")
         endif()
         string(REGEX REPLACE "[/.]" "_" name "${rel}")
         if(define)
-            string(APPEND name "_${define}")
+            string(REPLACE "+" "_" suffix "${define}")
+            string(APPEND name "_${suffix}")
         endif()
         set(src "${ARG_SOURCE_DIR}/${rel}")
         set(out "${gen_dir}/${name}.h")

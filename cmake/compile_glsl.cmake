@@ -1,12 +1,15 @@
 # Compiles one GLSL shader to SPIR-V as a C array header; any glslang warning fails the build.
 # Invoked by postfx_embed_shaders() with -DGLSLANG=... -DSRC=... -DOUT=... -DVAR=... -DINCLUDES=a;b -DDEPFILE=...
-# and optionally -DDEFINE=NAME (a variant compiled with -DNAME).
+# and optionally -DDEFINE=NAME (a variant compiled with -DNAME; NAME+OTHER: -DNAME -DOTHER).
 set(include_args "")
 foreach(dir IN LISTS INCLUDES)
     list(APPEND include_args "-I${dir}")
 endforeach()
 if(DEFINE)
-    list(APPEND include_args "-D${DEFINE}")
+    string(REPLACE "+" ";" defines "${DEFINE}")
+    foreach(d IN LISTS defines)
+        list(APPEND include_args "-D${d}")
+    endforeach()
 endif()
 execute_process(
     COMMAND "${GLSLANG}" -V --target-env vulkan1.1 ${include_args} --depfile "${DEPFILE}"

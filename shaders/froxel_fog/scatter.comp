@@ -3,7 +3,8 @@
 // the medium and its light at the froxel's sample (jittered per frame) and stores
 // (albedo · light · storage scale, σt), light = sun · phase · visibility + ambient + Σ local lights.
 // Variants: LOCAL_LIGHTS loops over every light; LIGHT_LISTS over those its cluster's list holds
-// (light_lists.comp); without either the frame has no local light.
+// (light_lists.comp); without either the frame has no local light. TEMPORAL (with any of them) blends
+// the result with the previous frames' volume reprojected to the sample (froxel-fog.md#temporal).
 #extension GL_GOOGLE_include_directive : require
 
 #include "froxel_fog/froxel_shared.h"
@@ -22,6 +23,83 @@ layout(binding = kFroxelBindingScatter, rgba16f) uniform writeonly image3D scatt
 #include "fog/medium.glsl"
 #include "froxel_fog/grid.glsl"
 #include "froxel_fog/lights.glsl"
+
+#ifdef TEMPORAL
+layout(binding = kFroxelBindingHistory) uniform sampler3D historyVolume;
+layout(binding = kFroxelBindingTemporal, std140) uniform Temporal {
+    TemporalUniforms temporal;
+};
+
+// Where the previous frame's grid held camera-relative `x`, as texture coordinates of its volume
+// (x, y: the previous view's uv; z: the slice coordinate of the distance from the previous camera with
+// the previous near plane; far and the distribution are unchanged, or the history was reset). False off
+// the previous frustum (beside or behind the view, beyond max distance).
+bool previousGridCoordinate(vec3 x, out vec3 uvw) {
+    uvw = vec3(0.0);
+    vec4 clip = temporal.previousClip * vec4(x, 1.0);
+    if (!(clip.w > 0.0)) return false;
+    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    float t = length(x + temporal.cameraDelta.xyz);
+    if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0))) || t > froxel.slices.y)
+        return false;
+    float near = temporal.previous.x, far = froxel.slices.y;
+    float d = clamp(t, near, far);
+    float z = (froxel.counts.y & kFroxelFlagLogSlices) != 0u
+                  ? log(d / near) / log(far / near)
+                  : pow((d - near) / (far - near), 1.0 / froxel.slices.z);
+    uvw = vec3(uv, z);
+    return true;
+}
+
+// Whether `x` is near a local light that changed (its old or new sphere, widened by `margin`, the
+// froxel's size, since the history is filtered over neighbouring froxels).
+bool inRejectedSphere(vec3 x, float margin) {
+    for (uint i = 0u; i < temporal.state.y; ++i) {
+        vec4 s = temporal.spheres[i];
+        if (distance(x, s.xyz) <= s.w + margin) return true;
+    }
+    return false;
+}
+
+bool finiteVec(vec4 v) {
+    return !any(isnan(v)) && !any(isinf(v));
+}
+
+// Blends two (albedo·light, σt) of a slice of length `dt` so that what the integration makes of the
+// result is the blend of what it makes of each: the slice's opacity a = 1 - e^{-σt·dt} and its
+// in-scattered light albedo·light·a (integrate.comp) are blended, and σt and light solved back from
+// them. Blending σt itself would give e^{-mean σt·dt}, not the mean transmittance (Jensen's
+// inequality): with noise in the medium the accumulated image would miss the mean of its frames.
+vec4 blendSlices(vec4 history, vec4 current, float w, float dt) {
+    float aHistory = oneMinusExp(history.a * dt), aCurrent = oneMinusExp(current.a * dt);
+    float a = mix(aHistory, aCurrent, w);
+    vec3 light = a > 0.0 ? mix(history.rgb * aHistory, current.rgb * aCurrent, w) / a
+                         : mix(history.rgb, current.rgb, w);
+    // σt = -ln(1 - a)/dt; for small a by its series a + a²/2 + a³/3 (1 - a loses a's digits).
+    float opticalDepth = a < 1e-3 ? a * (1.0 + a * (0.5 + a / 3.0)) : -log(1.0 - a);
+    return vec4(light, dt > 0.0 ? opticalDepth / dt : mix(history.a, current.a, w));
+}
+
+// This frame's (albedo·light·scale, σt) blended with the history (docs/temporal.md). The history is read
+// where the previous grid held this froxel's centre (not its jittered sample): a still view reads each
+// froxel's own texel, so the accumulation averages the jittered samples without blurring the volume.
+vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 dir, float start, float end) {
+    if (temporal.state.x == 0u) return current;
+    vec3 centreDir = gridRayDirection((vec2(id.xy) + 0.5) / vec2(froxel.grid.xy));
+    vec3 centre = centreDir * sliceDepth((float(id.z) + 0.5) / float(froxel.grid.z));
+    if (temporal.state.y > 0u) {
+        vec3 side = gridRayDirection((vec2(id.xy) + 1.5) / vec2(froxel.grid.xy));
+        float margin = 2.0 * max(end - start, length(side - centreDir) * end);
+        if (inRejectedSphere(x, margin)) return current;
+    }
+    vec3 uvw;
+    if (!previousGridCoordinate(centre, uvw)) return current;
+    vec4 history = textureLod(historyVolume, uvw, 0.0);
+    history.rgb *= temporal.previous.y;       // the previous frame's storage scale -> this one's
+    if (!finiteVec(history)) return current;  // a host's NaN once in the volume: not kept
+    return blendSlices(history, current, temporal.cameraDelta.w, end - start);
+}
+#endif
 
 #ifdef LOCAL_LIGHTS
 // Σ over the lights the froxel's cluster lists (LIGHT_LISTS), or over all of them.
@@ -67,6 +145,9 @@ void main() {
         light += localLightsScatter(id, x, dir);
 #endif
     }
-    vec3 stored = min(fog.albedo.rgb * light * froxel.jitter.w, vec3(kFroxelHalfMax));
-    imageStore(scatterVolume, ivec3(id), vec4(stored, min(sigmaT, kFroxelHalfMax)));
+    vec4 stored = min(vec4(fog.albedo.rgb * light * froxel.jitter.w, sigmaT), vec4(kFroxelHalfMax));
+#ifdef TEMPORAL
+    stored = min(accumulate(stored, x, id, dir, start, end), vec4(kFroxelHalfMax));
+#endif
+    imageStore(scatterVolume, ivec3(id), stored);
 }

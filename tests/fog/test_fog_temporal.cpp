@@ -62,7 +62,9 @@ TEST_F(FogTemporalTest, StillCameraConvergesTowardTheReference) {
         "[ fog ] temporal, still camera: 1 frame %.3g%%, 32 frames accumulated %.3g%%, frame 32 alone "
         "%.3g%%\n",
         single * 100, accumulated * 100, still * 100);
-    EXPECT_LT(accumulated, 0.5 * single);
+    // Measured on lavapipe: 3.9% after 32 frames, 24% for one frame.
+    EXPECT_LT(accumulated, 6e-2);
+    EXPECT_LT(accumulated, 0.3 * still);
 }
 
 }  // namespace

@@ -37,6 +37,16 @@ constexpr core::Binding kScatterLightBindings[] = {kShadowMap, kNoiseTexture, kU
                                                    kScatterImage};
 constexpr core::Binding kScatterListBindings[] = {kShadowMap,   kNoiseTexture,   kUniformBuffer,
                                                   kLightBuffer, kLightListImage, kScatterImage};
+// With temporal accumulation: the history volume and the temporal uniforms too.
+constexpr core::Binding kHistorySampled{gpu::kFroxelBindingHistory, kSampled};
+constexpr core::Binding kTemporalBuffer{gpu::kFroxelBindingTemporal, kUniform};
+constexpr core::Binding kScatterTemporalBindings[] = {kShadowMap,    kNoiseTexture,   kUniformBuffer,
+                                                      kScatterImage, kHistorySampled, kTemporalBuffer};
+constexpr core::Binding kScatterLightTemporalBindings[] = {
+    kShadowMap, kNoiseTexture, kUniformBuffer, kLightBuffer, kScatterImage, kHistorySampled, kTemporalBuffer};
+constexpr core::Binding kScatterListTemporalBindings[] = {kShadowMap,      kNoiseTexture,   kUniformBuffer,
+                                                          kLightBuffer,    kLightListImage, kScatterImage,
+                                                          kHistorySampled, kTemporalBuffer};
 constexpr core::Binding kIntegrateBindings[] = {kUniformBuffer, kScatterImage, kIntegratedImage};
 constexpr core::Binding kApplyBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kIntegratedSampled};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
@@ -48,6 +58,13 @@ const core::ComputePipelineDesc kScatterPass[3] = {
     {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp, kScatterBindings},
     {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LOCAL_LIGHTS, kScatterLightBindings},
     {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS, kScatterListBindings}};
+// The same, accumulating temporally.
+const core::ComputePipelineDesc kScatterTemporalPass[3] = {
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_TEMPORAL, kScatterTemporalBindings},
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LOCAL_LIGHTS_TEMPORAL,
+     kScatterLightTemporalBindings},
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS_TEMPORAL,
+     kScatterListTemporalBindings}};
 const core::ComputePipelineDesc kIntegratePass{"froxel_fog.integrate", spirv::froxel_fog_integrate_comp,
                                                kIntegrateBindings};
 // The apply pass in the color format: RGBA16F and RGBA32F.
@@ -70,6 +87,33 @@ bool volumesHoldDensity(const FroxelFogSettings& s) {
         if (v.density > 0.0f && sized) return true;
     }
     return false;
+}
+
+// Everything the accumulated volume depends on besides the camera and the lights (core/temporal.h): the
+// medium, the grid, the fog volumes.
+uint64_t temporalKey(const FrameInfo& frame) {
+    using core::hashValue;
+    const FroxelFogSettings& s = frame.froxelFog;
+    uint64_t h = fog::mediumKey(s);
+    const UVec3 grid = froxelGridSize(s, frame.color.extent.width, frame.color.extent.height);
+    for (int a = 0; a < 3; ++a)
+        h = hashValue(h, grid[a]);
+    h = hashValue(h, s.depthDistribution);
+    h = hashValue(h, s.depthExponent);
+    h = hashValue(h, s.jitter);
+    h = hashValue(h, s.volumeCount);
+    for (uint32_t i = 0; i < s.volumeCount; ++i) {
+        const FogVolume& v = s.volumes[i];
+        h = hashValue(h, v.shape);
+        for (int a = 0; a < 3; ++a) {
+            h = hashValue(h, v.center[a]);
+            h = hashValue(h, v.halfSize[a]);
+        }
+        h = hashValue(h, v.radius);
+        h = hashValue(h, v.density);
+        h = hashValue(h, v.edgeFalloff);
+    }
+    return h;
 }
 
 }  // namespace
@@ -118,9 +162,26 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     volume.type = VK_IMAGE_TYPE_3D;
     volume.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     volume.extent = {grid.x, grid.y, grid.z};
-    volume.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-    const core::ImageRef scatter = b.transientImage(kScatter, volume);
     volume.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    // The scatter volume: this frame's alone, or (temporal) the accumulated one of two histories.
+    const bool temporal = s.temporal.enabled;
+    core::ImageRef scatter, history;
+    core::BufferRef temporalUniforms;
+    if (temporal) {
+        const core::TemporalFrame t = history_.decide(frame, s.temporal, temporalKey(frame), true);
+        gpu::TemporalUniforms tu = core::temporalUniforms(t);
+        FrameInfo previous = frame;
+        previous.camera = t.previousCamera;
+        tu.previous.x = float(gridNear(previous, b.depthConvention()));
+        tu.previous.y = storageScale(frame) / previousStorageScale_;
+        temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
+        scatter = b.historyImage(kHistory[t.writeSlot], volume);
+        history = b.historyImage(kHistory[t.readSlot], volume);
+    } else {
+        core::ImageDesc storageOnly = volume;
+        storageOnly.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+        scatter = b.transientImage(kScatter, storageOnly);
+    }
     const core::ImageRef integrated = b.transientImage(kIntegrated, volume);
 
     const core::ImageRef depth = b.host(HostImage::Depth);
@@ -147,15 +208,17 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageWrite);
     }
 
-    b.pass(kScatterPass[lists            ? 2
-                        : lightCount > 0 ? 1
-                                         : 0],
-           groupsFor(grid.x), groupsFor(grid.y), grid.z)
+    const uint32_t variant = lists ? 2 : lightCount > 0 ? 1 : 0;
+    b.pass(temporal ? kScatterTemporalPass[variant] : kScatterPass[variant], groupsFor(grid.x),
+           groupsFor(grid.y), grid.z)
         .bind(gpu::kFroxelBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFroxelBindingNoise, noise, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFroxelBindingUniforms, uniforms);
     if (lightCount > 0) b.bind(gpu::kFroxelBindingLights, lightBuffer);
     if (lists) b.bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageRead);
+    if (temporal)
+        b.bind(gpu::kFroxelBindingHistory, history, Use::Sampled, SamplerKind::LinearClamp)
+            .bind(gpu::kFroxelBindingTemporal, temporalUniforms);
     b.bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
 
     b.pass(kIntegratePass, groupsFor(grid.x), groupsFor(grid.y), 1)
@@ -171,6 +234,15 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFroxelBindingIntegrated, integrated, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kFroxelBindingColorOut, target, Use::StorageWrite);
     return Status::success();
+}
+
+void FroxelFogEffect::recorded(const FrameInfo& frame, bool active) {
+    if (active && frame.froxelFog.temporal.enabled) {
+        history_.recorded(frame, frame.froxelFog.temporal, temporalKey(frame), true);
+        previousStorageScale_ = storageScale(frame);
+    } else {
+        history_.dropped();
+    }
 }
 
 }  // namespace postfx::froxel_fog

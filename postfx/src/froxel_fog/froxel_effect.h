@@ -1,12 +1,14 @@
 // The froxel fog behind the effect boundary (docs/effects/froxel-fog.md): its settings' checks and its
 // declaration of a frame: the noise texture (the shared medium's), the uniforms and local lights, and
 // the passes froxel_fog.noise, froxel_fog.light_lists (with many lights), froxel_fog.scatter,
-// froxel_fog.integrate and froxel_fog.apply over the grid's two volumes.
+// froxel_fog.integrate and froxel_fog.apply over the grid's two volumes (the scatter volume's two
+// histories with temporal accumulation).
 #pragma once
 
 #include "core/effect.h"
 #include "core/frame_graph.h"
 #include "core/gpu.h"
+#include "core/temporal.h"
 
 namespace postfx::froxel_fog {
 
@@ -18,6 +20,10 @@ inline constexpr core::ResourceId kLights{"froxel_fog.lights"};           // Fro
 inline constexpr core::ResourceId kLightLists{"froxel_fog.light_lists"};  // r32ui cluster light bits
 inline constexpr core::ResourceId kScatter{"froxel_fog.scatter"};         // rgba16f (albedo·light, σt)
 inline constexpr core::ResourceId kIntegrated{"froxel_fog.integrated"};   // rgba16f (L, T) per slice end
+// Temporal accumulation (froxel-fog.md#temporal): the scatter volume becomes two, read and written in
+// turn (the accumulated one replaces froxel_fog.scatter), and the TemporalUniforms.
+inline constexpr core::ResourceId kHistory[2] = {{"froxel_fog.history_a"}, {"froxel_fog.history_b"}};
+inline constexpr core::ResourceId kTemporalUniforms{"froxel_fog.temporal_uniforms"};
 
 class FroxelFogEffect final : public core::Effect {
 public:
@@ -28,9 +34,12 @@ public:
     // Enabled, with a shared medium that is not empty or a fog volume that holds some density.
     bool active(const FrameInfo& frame) const override;
     Status declare(core::FrameBuilder& builder) const override;
+    void recorded(const FrameInfo& frame, bool active) override;
 
 private:
     bool noiseFormatSupported_ = false;
+    core::TemporalHistory history_;
+    float previousStorageScale_ = 1.0f;  // the last recorded frame's storageScale
 };
 
 }  // namespace postfx::froxel_fog
