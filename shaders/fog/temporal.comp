@@ -66,7 +66,9 @@ bool reprojectedHistory(vec3 point, float maxDistance, out vec4 history) {
             weight += w;
         }
     }
-    if (!(weight > 0.0)) return false;
+    // Matching taps that carry almost none of the bilinear weight are rounding (a texel centre that
+    // reprojects a hair beside itself), not a surface seen last frame.
+    if (!(weight > 1e-3)) return false;
     history = sum / weight;
     return true;
 }

@@ -42,12 +42,14 @@ postfx::FrameInfo faultSceneFrame(const FaultSceneOptions& o, uint64_t frameInde
     fog.noise.enabled = o.noise;
     fog.noise.textureSize = o.noiseSize;
     if (o.autoQuality) fog.quality = postfx::FogQuality::Auto;
+    fog.temporal.enabled = o.temporal;
     if (o.froxel) {
         static_cast<postfx::FogMedium&>(frame.froxelFog) = fog;
         frame.froxelFog.enabled = true;
         frame.froxelFog.grid = {4, 4, 8};
         // Light lists from 8 lights (FaultSceneOptions::lights), whatever postfx's default.
         frame.froxelFog.lightListMinLights = 8;
+        frame.froxelFog.temporal.enabled = o.temporal;
         fog.enabled = false;
     }
     frame.lights = sceneLights();

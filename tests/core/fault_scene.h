@@ -18,6 +18,7 @@ struct FaultSceneOptions {
     bool autoQuality = false;  // fog quality Auto (presets measured in turn, timings read in record())
     bool froxel = false;       // the froxel fog (a 4×4×8 grid) with the same medium instead of the fog
     uint32_t lights = 0;       // local lights in view (at most 16; 8 or more: light lists)
+    bool temporal = false;     // temporal accumulation (either fog): history images carried across frames
 };
 
 // The frame (fog on; the harness fills in the command buffer and images) and the host's images.

@@ -122,9 +122,10 @@ protected:
             EXPECT_FALSE(firedHere) << at << "frame " << f << ": record() succeeded despite " << faultText();
             if (fillBaseline)
                 baseline.push_back(out);
-            else if (sc.scene.autoQuality && expectClean)
-                // Auto measures its presets in turn, so a failed frame moves the turns: the reference is a
-                // context without faults recording the frames this one recorded.
+            else if ((sc.scene.autoQuality || sc.scene.temporal) && expectClean)
+                // Auto measures its presets in turn, so a failed frame moves the turns, and a temporal
+                // history holds only the frames recorded: the reference is a context without faults
+                // recording the frames this one recorded.
                 EXPECT_TRUE(out == replay(info, recorded, f)) << at << "frame " << f
                                                               << " differs from a run without faults of the "
                                                                  "same frames, after "
@@ -221,7 +222,12 @@ const FaultScenario kScenarios[] = {
     {"auto_quality", {.noise = true, .autoQuality = true}, 2},
     {"resize_every_frame", {.noise = true, .resolutionScale = 0.5f}, 2, true, true},
     {"everything", {.noise = true, .shadowMap = true, .resolutionScale = 0.5f, .separateOutput = true}, 3},
-    {"froxel_fog_light_lists", {.noise = true, .shadowMap = true, .froxel = true, .lights = 12}, 2},
+    {"froxel_fog_light_lists",
+     {.noise = true, .shadowMap = true, .froxel = true, .lights = 12, .temporal = true},
+     2},
+    {"temporal_half_resolution",
+     {.noise = true, .shadowMap = true, .resolutionScale = 0.5f, .temporal = true},
+     2},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, CoreFaultInjectionTest, ::testing::ValuesIn(kScenarios), scenarioName);

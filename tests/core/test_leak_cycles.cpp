@@ -37,7 +37,8 @@ const CycleConfig kConfigs[] = {
     {{.shadowMap = true}},
     {{.noise = true, .noiseSize = 32, .shadowMap = true, .resolutionScale = 0.5f, .separateOutput = true}},
     {{.froxel = true}},
-    {{.noise = true, .noiseSize = 16, .shadowMap = true, .froxel = true, .lights = 12}},  // light lists
+    {{.noise = true, .noiseSize = 16, .shadowMap = true, .froxel = true, .lights = 12, .temporal = true}},
+    {{.resolutionScale = 0.5f, .temporal = true}},  // the fog's histories
     {{.format = VK_FORMAT_R32G32B32A32_SFLOAT, .separateOutput = true, .froxel = true, .lights = 3}},
     {{.separateOutput = true}, false},  // fog off: only postfx.copy
     {{}, false},                        // fog off, in place: nothing

@@ -25,7 +25,7 @@ FrameInfo still() {
     return f;
 }
 
-class TemporalRules : public ::testing::Test {
+class CoreTemporalRules : public ::testing::Test {
 protected:
     TemporalSettings settings{true, 0.1f};
     TemporalHistory history;
@@ -37,7 +37,7 @@ protected:
     }
 };
 
-TEST_F(TemporalRules, FirstFrameStartsAndLaterFramesBlendWithARunningMeanThenTheWeight) {
+TEST_F(CoreTemporalRules, FirstFrameStartsAndLaterFramesBlendWithARunningMeanThenTheWeight) {
     const FrameInfo f = still();
     TemporalFrame t = step(f);
     EXPECT_FALSE(t.historyValid);
@@ -51,7 +51,7 @@ TEST_F(TemporalRules, FirstFrameStartsAndLaterFramesBlendWithARunningMeanThenThe
     }
 }
 
-TEST_F(TemporalRules, SlotsAlternateSoEachFrameReadsWhatThePreviousWrote) {
+TEST_F(CoreTemporalRules, SlotsAlternateSoEachFrameReadsWhatThePreviousWrote) {
     const FrameInfo f = still();
     uint32_t written = step(f).writeSlot;
     for (int i = 0; i < 4; ++i) {
@@ -61,7 +61,7 @@ TEST_F(TemporalRules, SlotsAlternateSoEachFrameReadsWhatThePreviousWrote) {
     }
 }
 
-TEST_F(TemporalRules, CameraCutKeyAndDroppedFramesReset) {
+TEST_F(CoreTemporalRules, CameraCutKeyAndDroppedFramesReset) {
     FrameInfo f = still();
     step(f);
     step(f);
@@ -75,7 +75,7 @@ TEST_F(TemporalRules, CameraCutKeyAndDroppedFramesReset) {
     EXPECT_FALSE(step(f, kKey + 1).historyValid);
 }
 
-TEST_F(TemporalRules, SunChangesBeyondTheThresholdsReset) {
+TEST_F(CoreTemporalRules, SunChangesBeyondTheThresholdsReset) {
     FrameInfo f = still();
     step(f);
     // 0.3° of turn per frame: each below kTemporalLightAngle (0.5°), the second beyond it in total.
@@ -100,7 +100,7 @@ TEST_F(TemporalRules, SunChangesBeyondTheThresholdsReset) {
     EXPECT_FALSE(step(g).historyValid);
 }
 
-TEST_F(TemporalRules, ShadowMapMatrixChangeResets) {
+TEST_F(CoreTemporalRules, ShadowMapMatrixChangeResets) {
     FrameInfo f = still();
     f.shadowMap.image.image = reinterpret_cast<VkImage>(uintptr_t(1));
     f.shadowMap.worldToClip = glm::orthoRH_ZO(-50.0, 50.0, -50.0, 50.0, 0.0, 200.0);
@@ -114,7 +114,7 @@ TEST_F(TemporalRules, ShadowMapMatrixChangeResets) {
     EXPECT_FALSE(step(f).historyValid);
 }
 
-TEST_F(TemporalRules, ChangedLocalLightsRejectTheirOldAndNewSpheres) {
+TEST_F(CoreTemporalRules, ChangedLocalLightsRejectTheirOldAndNewSpheres) {
     FrameInfo f = still();
     std::vector<LocalLight> lights(3);
     for (size_t i = 0; i < lights.size(); ++i) {
@@ -160,7 +160,7 @@ TEST_F(TemporalRules, ChangedLocalLightsRejectTheirOldAndNewSpheres) {
     EXPECT_TRUE(history.decide(f, settings, kKey, false).historyValid);
 }
 
-TEST_F(TemporalRules, TooManyChangedLightsResetTheWholeHistory) {
+TEST_F(CoreTemporalRules, TooManyChangedLightsResetTheWholeHistory) {
     FrameInfo f = still();
     std::vector<LocalLight> lights(kTemporalMaxRejectedSpheres / 2 + 1);
     for (LocalLight& l : lights)
@@ -175,7 +175,7 @@ TEST_F(TemporalRules, TooManyChangedLightsResetTheWholeHistory) {
     EXPECT_TRUE(t.rejected.empty());
 }
 
-TEST_F(TemporalRules, ReprojectionMapsAPointToWhereThePreviousCameraSawIt) {
+TEST_F(CoreTemporalRules, ReprojectionMapsAPointToWhereThePreviousCameraSawIt) {
     FrameInfo f = still();
     f.camera.view = glm::lookAtRH(glm::vec3(0.0f), glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
     step(f);

@@ -1,5 +1,6 @@
 // The ray-marched fog's temporal accumulation (docs/effects/fog.md#temporal) on the device: a still
 // camera converges toward the reference, a camera cut starts over, history exists only with temporal on.
+#include "fog_harness.h"
 #include "gpu_test.h"
 #include "host/renderer.h"
 #include "image_compare.h"
@@ -7,7 +8,10 @@
 
 #include <postfx/frame_plan.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 namespace test {
 namespace {
@@ -65,6 +69,174 @@ TEST_F(FogTemporalTest, StillCameraConvergesTowardTheReference) {
     // Measured on lavapipe: 3.9% after 32 frames, 24% for one frame.
     EXPECT_LT(accumulated, 6e-2);
     EXPECT_LT(accumulated, 0.3 * still);
+}
+
+// Frame by frame on the fog harness: one context that accumulates, and one that shows each frame alone
+// through the same passes (temporal on, a camera cut every frame; the same jitter: the frame index).
+class FogTemporalFrames : public GpuTest {
+protected:
+    static constexpr uint32_t kW = 32, kH = 18;
+    void SetUp() override {
+        GpuTest::SetUp();
+        ASSERT_TRUE(host);
+        ASSERT_TRUE(gpu.init(hostHandles()).ok());
+        postfx::ContextCreateInfo info;
+        info.depth.reversedZ = true;
+        ASSERT_TRUE(createContext(accumulating, info).ok());
+        ASSERT_TRUE(createContext(alone, info).ok());
+        frame.camera = testCamera({0.0, 1.0, 0.0}, 60.0f, float(kW) / float(kH), 0.1f, 1000.0f, true);
+        frame.sun.toSun = glm::normalize(glm::vec3(0.2f, 0.3f, -1.0f));
+        frame.sun.illuminance = glm::vec3(2000.0f);
+        frame.ambient = glm::vec3(50.0f);
+        postfx::FogSettings& f = frame.fog;
+        f.enabled = true;
+        f.density = 0.05f;
+        f.heightFalloff = 0.3f;  // not homogeneous: each jittered frame's march differs
+        f.maxDistance = 60.0f;
+        f.steps = 4;  // few steps: each jittered frame differs visibly
+        f.temporal.enabled = true;
+        images.width = kW;
+        images.height = kH;
+        images.color.assign(size_t(kW) * kH * 4, 0.5f);
+        setWall(20.0);
+    }
+    // Every pixel sees a wall at `distance` metres; columns [first, last) see an object at `near`.
+    void setWall(double distance, uint32_t first = 0, uint32_t last = 0, double near = 0.0) {
+        images.depth.resize(size_t(kW) * kH);
+        for (uint32_t j = 0; j < kH; ++j)
+            for (uint32_t i = 0; i < kW; ++i) {
+                const glm::dvec3 d = pixelDirection(frame.camera, i, j, kW, kH);
+                images.depth[size_t(j) * kW + i] =
+                    depthAtDistance(frame.camera, d, i >= first && i < last ? near : distance);
+            }
+    }
+    std::vector<float> render(postfx::Context& context, uint64_t frameIndex, bool temporal,
+                              bool cut = false) {
+        postfx::FrameInfo f = frame;
+        f.frameIndex = frameIndex;
+        f.cameraCut = cut;
+        f.fog.temporal.enabled = temporal;
+        std::vector<float> out;
+        FogHarness harness(*host, gpu);
+        const postfx::Status s = harness.run(context, images, f, out);
+        EXPECT_TRUE(s.ok()) << s.message;
+        return out;
+    }
+    // Σ|a - b| over RGB of the columns [first, last).
+    static double sumDifference(const std::vector<float>& a, const std::vector<float>& b, uint32_t first = 0,
+                                uint32_t last = kW) {
+        double sum = 0.0;
+        for (uint32_t j = 0; j < kH; ++j)
+            for (uint32_t i = first; i < last; ++i)
+                for (int c = 0; c < 3; ++c) {
+                    const size_t k = (size_t(j) * kW + i) * 4 + c;
+                    sum += std::abs(double(a[k]) - double(b[k]));
+                }
+        return sum;
+    }
+    postfx::core::Gpu gpu;
+    std::unique_ptr<postfx::Context> accumulating, alone;
+    postfx::FrameInfo frame;
+    FogHarnessImages images;
+};
+
+TEST_F(FogTemporalFrames, AccumulatedFramesDifferFromSingleOnesAndCameraCutResetsAtOnce) {
+    std::vector<float> a, b;
+    for (uint64_t n = 0; n < 6; ++n)
+        a = render(*accumulating, n, true);
+    b = render(*alone, 5, true, true);
+    EXPECT_GT(sumDifference(a, b), 1e-3 * sumDifference(b, std::vector<float>(b.size(), 0.0f)));
+    a = render(*accumulating, 6, true, true);  // the cut: this frame alone, exactly
+    b = render(*alone, 6, true, true);
+    EXPECT_EQ(sumDifference(a, b), 0.0);
+}
+
+// An object 3 m in front of the camera over columns [8, 16) moves away: the wall behind it (20 m) is
+// disoccluded. Its pixels take the new frame alone at once (documented: no trail, 0 frames), while the
+// rest of the image keeps its history.
+TEST_F(FogTemporalFrames, DisocclusionLeavesNoTrail) {
+    setWall(20.0, 8, 16, 3.0);
+    for (uint64_t n = 0; n < 8; ++n)
+        render(*accumulating, n, true);
+    setWall(20.0);
+    const std::vector<float> a = render(*accumulating, 8, true);
+    const std::vector<float> b = render(*alone, 8, true, true);
+    EXPECT_EQ(sumDifference(a, b, 8, 16), 0.0);
+    EXPECT_GT(sumDifference(a, b, 16, kW), 0.0);  // elsewhere the history was kept
+}
+
+// A host's NaN depth in one frame: the frames after it are finite everywhere, and those pixels start
+// over from the new frame.
+TEST_F(FogTemporalFrames, NanInOneFrameDoesNotStayInTheHistory) {
+    for (uint64_t n = 0; n < 4; ++n)
+        render(*accumulating, n, true);
+    for (uint32_t j = 0; j < kH; ++j)
+        for (uint32_t i = 4; i < 12; ++i)
+            images.depth[size_t(j) * kW + i] = std::numeric_limits<float>::quiet_NaN();
+    render(*accumulating, 4, true);
+    setWall(20.0);
+    for (uint64_t n = 5; n < 8; ++n) {
+        const std::vector<float> a = render(*accumulating, n, true);
+        for (float v : a)
+            ASSERT_TRUE(std::isfinite(v)) << "frame " << n;
+        if (n == 5) {
+            const std::vector<float> b = render(*alone, n, true, true);
+            EXPECT_EQ(sumDifference(a, b, 4, 12), 0.0);
+        }
+    }
+}
+
+TEST_F(FogTemporalFrames, HistoryIsHeldOnlyWithTemporalOn) {
+    // The plan of each frame as record() gets it (with its images).
+    auto planOf = [&](const postfx::FrameInfo& f, uint64_t frameIndex) {
+        postfx::FramePlan plan;
+        FogHarness harness(*host, gpu);
+        harness.onBeforeRecord = [&](const postfx::FrameInfo& g) {
+            EXPECT_TRUE(accumulating->plan(g, plan).ok());
+        };
+        postfx::FrameInfo g = f;
+        g.frameIndex = frameIndex;
+        std::vector<float> out;
+        EXPECT_TRUE(harness.run(*accumulating, images, g, out).ok());
+        return plan;
+    };
+    auto names = [](const postfx::FramePlan& plan, bool history) {
+        std::vector<std::string> out;
+        if (history) {
+            for (const postfx::PlannedResource& r : plan.resources)
+                if (r.history) out.push_back(r.name);
+        } else {
+            for (const postfx::PlannedPass& p : plan.passes)
+                out.push_back(p.name);
+        }
+        return out;
+    };
+    postfx::FrameInfo f = frame;
+    postfx::FramePlan plan = planOf(f, 0);
+    EXPECT_EQ(names(plan, true), (std::vector<std::string>{"fog.history_a", "fog.history_distance_a",
+                                                           "fog.history_b", "fog.history_distance_b"}));
+    EXPECT_EQ(names(plan, false),
+              (std::vector<std::string>{"fog.raymarch", "fog.temporal", "fog.composite"}));
+    // 32×18: RGBA16F histories and R32F distances, the temporal uniforms' 1280-byte slots.
+    const postfx::PlannedPass* temporal = plan.pass("fog.temporal");
+    ASSERT_TRUE(temporal);
+    EXPECT_EQ(temporal->writes, (std::vector<std::string>{"fog.history_a", "fog.history_distance_a"}));
+    plan = planOf(f, 1);
+    EXPECT_EQ(plan.pass("fog.temporal")->writes,
+              (std::vector<std::string>{"fog.history_b", "fog.history_distance_b"}));
+    uint64_t historyBytes = 0;
+    for (const postfx::PlannedResource& r : plan.resources)
+        if (r.history) historyBytes += r.bytes;
+    EXPECT_EQ(historyBytes, 2u * kW * kH * (8 + 4));
+    f.fog.resolutionScale = 0.5f;
+    EXPECT_EQ(names(planOf(f, 2), false),
+              (std::vector<std::string>{"fog.raymarch", "fog.temporal", "fog.upsample"}));
+    f.fog.temporal.enabled = false;
+    plan = planOf(f, 3);
+    EXPECT_TRUE(names(plan, true).empty());
+    EXPECT_EQ(names(plan, false), (std::vector<std::string>{"fog.raymarch", "fog.upsample"}));
+    f.fog.resolutionScale = 1.0f;
+    EXPECT_EQ(names(planOf(f, 4), false), (std::vector<std::string>{"fog.raymarch"}));
 }
 
 }  // namespace

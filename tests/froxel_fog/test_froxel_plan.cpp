@@ -38,6 +38,7 @@ protected:
         ASSERT_TRUE(createContext(context, info).ok());
         c = froxelCase(40, 24, 1.0, 20, 10.0);
         c.frame.froxelFog.grid = {20, 12, 40};
+        c.frame.froxelFog.temporal.enabled = false;  // the single-frame layout (TemporalHistories: on)
     }
 
     // Plans and records `fc` at `frameIndex`; the recorded passes (timings) must be the plan's.
@@ -163,6 +164,37 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
     many.frame.froxelFog.lightListMinLights = postfx::kMaxLocalLights + 1;  // never
     plan = planAndRun(many, 2);
     EXPECT_FALSE(plan.pass("froxel_fog.light_lists"));
+}
+
+// Temporal accumulation (on by default): the scatter volume is two histories, the one written last
+// frame read (sampled) by the scatter pass and the other written, then integrated; froxel_fog.scatter is
+// not held; the temporal uniforms (1136 bytes, a 1280-byte slot per frame in flight).
+TEST_F(FroxelFogPlanTest, TemporalHistories) {
+    FroxelCase fc = c;
+    fc.frame.froxelFog.temporal.enabled = true;
+    const uint64_t volume = 20 * 12 * 40 * 8;
+    for (uint64_t frameIndex = 0; frameIndex < 3; ++frameIndex) {
+        const postfx::FramePlan plan = planAndRun(fc, frameIndex);
+        EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.scatter", "froxel_fog.integrate",
+                                                             "froxel_fog.apply"}));
+        const std::string written = frameIndex % 2 == 0 ? "froxel_fog.history_a" : "froxel_fog.history_b";
+        const std::string read = frameIndex % 2 == 0 ? "froxel_fog.history_b" : "froxel_fog.history_a";
+        const postfx::PlannedPass* scatter = plan.pass("froxel_fog.scatter");
+        ASSERT_TRUE(scatter);
+        EXPECT_EQ(scatter->reads, (std::vector<std::string>{"froxel_fog.uniforms",
+                                                            read, "froxel_fog.temporal_uniforms"}));
+        EXPECT_EQ(scatter->writes, (std::vector<std::string>{written}));
+        EXPECT_EQ(plan.pass("froxel_fog.integrate")->reads,
+                  (std::vector<std::string>{"froxel_fog.uniforms", written}));
+        EXPECT_EQ(resourceBytes(plan, "froxel_fog.history_a"), volume);
+        EXPECT_EQ(resourceBytes(plan, "froxel_fog.history_b"), volume);
+        EXPECT_EQ(resourceBytes(plan, "froxel_fog.temporal_uniforms"), 2u * 1280);
+        EXPECT_EQ(plan.totalBytes(), 3 * volume + 1 + 2 * kUniformSlot + 2 * 1280);
+        EXPECT_EQ(plan.resources.size(), 6u);
+        for (const postfx::PlannedResource& r : plan.resources)
+            EXPECT_EQ(r.history, r.name == "froxel_fog.history_a" || r.name == "froxel_fog.history_b")
+                << r.name;
+    }
 }
 
 // The sun with a shadow map: scatter reads it; generated noise: froxel_fog.noise in the first frame only.
