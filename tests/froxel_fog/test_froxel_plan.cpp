@@ -181,8 +181,8 @@ TEST_F(FroxelFogPlanTest, TemporalHistories) {
         const std::string read = frameIndex % 2 == 0 ? "froxel_fog.history_b" : "froxel_fog.history_a";
         const postfx::PlannedPass* scatter = plan.pass("froxel_fog.scatter");
         ASSERT_TRUE(scatter);
-        EXPECT_EQ(scatter->reads, (std::vector<std::string>{"froxel_fog.uniforms",
-                                                            read, "froxel_fog.temporal_uniforms"}));
+        EXPECT_EQ(scatter->reads,
+                  (std::vector<std::string>{"froxel_fog.uniforms", read, "froxel_fog.temporal_uniforms"}));
         EXPECT_EQ(scatter->writes, (std::vector<std::string>{written}));
         EXPECT_EQ(plan.pass("froxel_fog.integrate")->reads,
                   (std::vector<std::string>{"froxel_fog.uniforms", written}));
