@@ -3,9 +3,9 @@
 // of the march blends this frame's (L, T) with the previous frames' accumulated (L, T), reprojected.
 //   1. The texel's ray ends at p = dir · min(surface, max distance); the previous camera saw p at
 //      previousClip · p. Off the previous image, or behind the previous camera: no history.
-//   2. Of the 2×2 history texels around it, those whose own ray ended within
-//      kFogTemporalDistanceTolerance of |p - previous camera| are blended bilinearly (disocclusion:
-//      none matches, no history); non-finite history (a host's bad pixel once) never matches.
+//   2. Of the 2×2 history texels around it (this texel moved by the point's screen motion), those
+//      whose own ray ended within kFogTemporalDistanceTolerance of |p - previous camera| are blended
+//      bilinearly (disocclusion: none matches, no history); non-finite history never matches.
 //   3. The history is clamped to the min/max box of this frame's 3×3 neighbourhood (Karis 2014), so
 //      what no longer belongs (moving shadows, a changed medium) cannot stay.
 //   4. result = history + w·(current - history), w = cameraDelta.w (1 without history).
@@ -39,9 +39,10 @@ bool finite(vec4 v) {
     return !any(isnan(v)) && !any(isinf(v));
 }
 
-// The history at the previous frame's view of `point` (camera-relative), bilinear over the texels whose
-// ray ended at the same distance; false when there is none.
-bool reprojectedHistory(vec3 point, float maxDistance, out vec4 history) {
+// The history at the previous frame's view of `point` (camera-relative), the end of texel `texel`'s ray
+// through its source pixel's centre `uvSource`, bilinear over the texels whose ray ended at the same
+// distance; false when there is none.
+bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistance, out vec4 history) {
     history = vec4(0.0);
     vec4 clip = temporal.previousClip * vec4(point, 1.0);
     if (!(clip.w > 0.0)) return false;
@@ -49,8 +50,11 @@ bool reprojectedHistory(vec3 point, float maxDistance, out vec4 history) {
     if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0)))) return false;
     float expected = min(length(point + temporal.cameraDelta.xyz), maxDistance);
 
+    // Where the history holds it, in texels: this texel moved by the point's motion on screen. (Each texel
+    // holds its source pixel's ray, which at a reduced resolution is not at the texel's centre; mapping
+    // uv to texels directly would read a still view a fraction of a texel beside itself, and blur.)
     ivec2 size = ivec2(fog.scatterExtent.xy);
-    vec2 p = uv * vec2(size) - 0.5;
+    vec2 p = vec2(texel) + (uv - uvSource) * vec2(size);
     ivec2 p0 = ivec2(floor(p));
     vec2 f = p - vec2(p0);
     vec4 sum = vec4(0.0);
@@ -78,7 +82,8 @@ void main() {
     ivec2 size = ivec2(fog.scatterExtent.xy);
     if (any(greaterThanEqual(texel, uvec2(size)))) return;
     vec4 current = imageLoad(scatterImage, ivec2(texel));
-    FogRay ray = fogRay(fogSourcePixel(texel));
+    uvec2 source = fogSourcePixel(texel);
+    FogRay ray = fogRay(source);
     float maxDistance = fog.medium.w;
     // NaN (a host's bad depth) stores as no distance any reprojection matches.
     float distance = isnan(ray.surfaceDistance) ? -1.0 : min(ray.surfaceDistance, maxDistance);
@@ -87,7 +92,8 @@ void main() {
     vec4 result = current;
     vec4 history;
     if (temporal.state.x != 0u && finite(current) && distance >= 0.0 &&
-        reprojectedHistory(ray.dir * distance, maxDistance, history)) {
+        reprojectedHistory(ray.dir * distance, texel, (vec2(source) + 0.5) / vec2(fog.extent.xy), maxDistance,
+                           history)) {
         vec4 lo = current, hi = current;
         for (int y = -1; y <= 1; ++y)
             for (int x = -1; x <= 1; ++x) {
