@@ -14,9 +14,15 @@ using namespace json_read;
 
 constexpr const char* kEffectsKeys[] = {"fog", "froxel_fog"};
 // The ray-marched fog's own keys (besides "enabled" and the medium's).
-constexpr const char* kFogKeys[] = {
-    "steps",         "jitter",  "resolution_scale", "transmittance_cutoff", "skip_empty_space",
-    "shadow_kernel", "quality", "auto_budget_ms"};
+constexpr const char* kFogKeys[] = {"steps",
+                                    "jitter",
+                                    "resolution_scale",
+                                    "transmittance_cutoff",
+                                    "skip_empty_space",
+                                    "shadow_kernel",
+                                    "quality",
+                                    "auto_budget_ms",
+                                    "temporal"};
 
 struct QualityName {
     postfx::FogQuality quality;
@@ -55,6 +61,8 @@ postfx::FogSettings readFog(const json& j, const std::string& path) {
     if (const json* v = find(j, "quality")) s.quality = readQuality(*v, child(path, "quality"));
     if (const json* v = find(j, "auto_budget_ms"))
         s.autoBudgetMs = readNumber(*v, child(path, "auto_budget_ms"));
+    if (const json* v = find(j, "temporal"))
+        medium_json::readTemporal(*v, child(path, "temporal"), s.temporal);
 
     // Ranges: postfx's own check, so that the file accepts exactly what Context::record does. The
     // noise keys are checked even when the noise is off, so that turning it on cannot make a file
@@ -74,7 +82,8 @@ json fogToJson(const postfx::FogSettings& s) {
                 {"skip_empty_space", s.skipEmptySpace},
                 {"shadow_kernel", s.shadowKernel},
                 {"quality", fogQualityName(s.quality)},
-                {"auto_budget_ms", number(s.autoBudgetMs)}};
+                {"auto_budget_ms", number(s.autoBudgetMs)},
+                {"temporal", medium_json::temporalToJson(s.temporal)}};
     medium_json::writeMedium(s, fog);
     return fog;
 }

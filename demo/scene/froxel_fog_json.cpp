@@ -13,7 +13,8 @@ using namespace json_read;
 
 // The froxel fog's own keys (besides "enabled" and the medium's).
 constexpr const char* kFroxelKeys[] = {"grid",     "tile_size_px", "depth_distribution",    "depth_exponent",
-                                       "tricubic", "jitter",       "light_list_min_lights", "volumes"};
+                                       "tricubic", "jitter",       "light_list_min_lights", "volumes",
+                                       "temporal"};
 constexpr const char* kBoxVolumeKeys[] = {"shape", "center", "half_size", "density", "edge_falloff"};
 constexpr const char* kSphereVolumeKeys[] = {"shape", "center", "radius", "density", "edge_falloff"};
 
@@ -111,6 +112,8 @@ void readFroxelFog(const json& j, const std::string& path, postfx::FroxelFogSett
     if (const json* v = find(j, "jitter")) s.jitter = readBool(*v, child(path, "jitter"));
     if (const json* v = find(j, "light_list_min_lights"))
         s.lightListMinLights = readUint32(*v, child(path, "light_list_min_lights"));
+    if (const json* v = find(j, "temporal"))
+        medium_json::readTemporal(*v, child(path, "temporal"), s.temporal);
     std::vector<postfx::FogVolume> vs;
     if (const json* v = find(j, "volumes")) vs = readVolumes(*v, child(path, "volumes"));
 
@@ -137,6 +140,7 @@ json froxelFogToJson(const postfx::FroxelFogSettings& s, const std::vector<postf
               {"tricubic", s.tricubic},
               {"jitter", s.jitter},
               {"light_list_min_lights", s.lightListMinLights},
+              {"temporal", medium_json::temporalToJson(s.temporal)},
               {"volumes", std::move(vs)}};
     medium_json::writeMedium(s, j);
     return j;

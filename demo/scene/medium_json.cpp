@@ -1,4 +1,5 @@
-// Scene files: the medium keys both fogs share <-> postfx::FogMedium. Keep docs/scene-format.md in sync.
+// Scene files: the keys both fogs share: the medium <-> postfx::FogMedium, `temporal` <->
+// postfx::TemporalSettings. Keep docs/scene-format.md in sync.
 #include "scene/medium_json.h"
 
 #include "scene/json_read.h"
@@ -11,6 +12,7 @@ using namespace json_read;
 
 constexpr const char* kNoiseKeys[] = {"enabled",   "texture_size", "seed", "tiling",
                                       "threshold", "multiplier",   "wind"};
+constexpr const char* kTemporalKeys[] = {"enabled", "blend_weight"};
 
 void readNoise(const json& j, const std::string& path, postfx::FogNoiseSettings& n) {
     expectObject(j, path);
@@ -64,6 +66,17 @@ void writeMedium(const postfx::FogMedium& m, json& effect) {
                        {"threshold", number(n.threshold)},
                        {"multiplier", number(n.multiplier)},
                        {"wind", vec3(n.wind)}};
+}
+
+void readTemporal(const json& j, const std::string& path, postfx::TemporalSettings& t) {
+    expectObject(j, path);
+    checkKeys(j, path, kTemporalKeys);
+    if (const json* v = find(j, "enabled")) t.enabled = readBool(*v, child(path, "enabled"));
+    if (const json* v = find(j, "blend_weight")) t.blendWeight = readNumber(*v, child(path, "blend_weight"));
+}
+
+json temporalToJson(const postfx::TemporalSettings& t) {
+    return {{"enabled", t.enabled}, {"blend_weight", number(t.blendWeight)}};
 }
 
 void throwIfInvalid(const postfx::Status& status, const std::string& prefix, const std::string& path) {

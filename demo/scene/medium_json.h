@@ -1,10 +1,11 @@
 // The keys both fogs of scene files share (`effects.fog` and `effects.froxel_fog`): the participating
-// medium, postfx::FogMedium (docs/scene-format.md#effectsfog), read and written by one function each;
-// internal to demo_scene.
+// medium, postfx::FogMedium (docs/scene-format.md#effectsfog), and the temporal accumulation,
+// postfx::TemporalSettings, read and written by one function each; internal to demo_scene.
 #pragma once
 
 #include <postfx/fog.h>
 #include <postfx/result.h>
+#include <postfx/temporal.h>
 #include <nlohmann/json.hpp>
 
 #include <span>
@@ -29,6 +30,15 @@ void readMedium(const nlohmann::json& j, const std::string& path, postfx::FogMed
 
 // The medium's keys with their values, in the form readMedium reads back exactly, added to `effect`.
 void writeMedium(const postfx::FogMedium& medium, nlohmann::json& effect);
+
+// The `temporal` object of either fog (postfx::TemporalSettings, docs/scene-format.md#effectsfog): its keys
+// `enabled` and `blend_weight`, both optional; absent keys keep the value in `temporal` (the fog's default:
+// unlike `noise`, the object's presence does not turn it on). Types are checked here, the range by the
+// effect's postfx check.
+void readTemporal(const nlohmann::json& j, const std::string& path, postfx::TemporalSettings& temporal);
+
+// The `temporal` object with both keys, in the form readTemporal reads back exactly.
+nlohmann::json temporalToJson(const postfx::TemporalSettings& temporal);
 
 // A failed postfx check of an effect's settings as a ReadError: postfx names the field by its key with
 // the effect's prefix ("froxel_fog.volumes[2].radius: ..."), which becomes the key path in the file

@@ -89,6 +89,7 @@ json everyKey() {
     j["tricubic"] = true;
     j["jitter"] = false;
     j["light_list_min_lights"] = 257;
+    j["temporal"] = {{"enabled", false}, {"blend_weight", 0.5}};
     json b = box();
     b["density"] = 0.5;
     b["edge_falloff"] = 0.25;
@@ -139,6 +140,8 @@ void expectSameFroxel(const Scene& a, const Scene& b) {
     EXPECT_EQ(x.tricubic, y.tricubic);
     EXPECT_EQ(x.jitter, y.jitter);
     EXPECT_EQ(x.lightListMinLights, y.lightListMinLights);
+    EXPECT_EQ(x.temporal.enabled, y.temporal.enabled);
+    EXPECT_EQ(x.temporal.blendWeight, y.temporal.blendWeight);
     ASSERT_EQ(a.froxelVolumes.size(), b.froxelVolumes.size());
     for (size_t i = 0; i < a.froxelVolumes.size(); ++i)
         expectSameVolume(a.froxelVolumes[i], b.froxelVolumes[i]);
@@ -478,7 +481,7 @@ std::vector<FroxelRejection> froxelRejections() {
          "height_falloff, "
          "base_height, max_distance, self_shadow, analytic_tail, noise, grid, tile_size_px, "
          "depth_distribution, "
-         "depth_exponent, tricubic, jitter, light_list_min_lights or volumes)"},
+         "depth_exponent, tricubic, jitter, light_list_min_lights, volumes or temporal)"},
         {"UnknownNoiseKey", froxel("/noise/octaves", 4),
          "effects.froxel_fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, "
          "threshold, multiplier or wind)"},

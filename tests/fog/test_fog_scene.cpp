@@ -65,6 +65,7 @@ json everyKey() {
       "shadow_kernel": 5,
       "quality": "auto",
       "auto_budget_ms": 1.25,
+      "temporal": {"enabled": true, "blend_weight": 0.25},
       "noise": {
         "enabled": true,
         "texture_size": 64,
@@ -100,6 +101,8 @@ void expectSameFog(const postfx::FogSettings& a, const postfx::FogSettings& b) {
     EXPECT_EQ(a.noise.threshold, b.noise.threshold);
     EXPECT_EQ(a.noise.multiplier, b.noise.multiplier);
     EXPECT_EQ(a.noise.wind, b.noise.wind);
+    EXPECT_EQ(a.temporal.enabled, b.temporal.enabled);
+    EXPECT_EQ(a.temporal.blendWeight, b.temporal.blendWeight);
 }
 
 // ---- defaults ------------------------------------------------------------------------------------
@@ -327,7 +330,7 @@ std::vector<FogRejection> fogRejections() {
         {"UnknownFogKey", fog("/colour", {1, 1, 1}),
          "effects.fog.colour: unknown key (expected enabled, density, albedo, anisotropy, height_falloff, "
          "base_height, max_distance, self_shadow, analytic_tail, noise, steps, jitter, resolution_scale, "
-         "transmittance_cutoff, skip_empty_space, shadow_kernel, quality or auto_budget_ms)"},
+         "transmittance_cutoff, skip_empty_space, shadow_kernel, quality, auto_budget_ms or temporal)"},
         {"FroxelKeyInFog", fog("/grid", {8, 8, 8}), "effects.fog.grid: unknown key"},
         {"UnknownNoiseKey", fog("/noise/octaves", 4),
          "effects.fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, threshold, "
