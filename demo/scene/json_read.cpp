@@ -118,6 +118,16 @@ glm::vec3 readVec3(const json& j, const std::string& path, const Interval& inter
     return v;
 }
 
+double readDouble(const json& j, const std::string& path, const Interval& interval) {
+    if (!j.is_number()) fail(path, "expected a number" + got(j));
+    const double d = j.get<double>();
+    if (!std::isfinite(d)) fail(path, "expected a finite number" + got(j));
+    const bool aboveLo = interval.openLo ? d > interval.lo : d >= interval.lo;
+    if (!aboveLo || d > interval.hi)
+        fail(path, std::string("expected a number in ") + interval.text + got(j));
+    return d;
+}
+
 glm::vec3 readDirection(const json& j, const std::string& path) {
     // Computed in double, so tiny vectors are fine too.
     const glm::vec3 f = readVec3(j, path);
@@ -157,6 +167,10 @@ uint32_t readUint32(const json& j, const std::string& path) {
 
 json number(float f) {
     return json(json_text::roundTripDouble(f));
+}
+
+json doubleNumber(double d) {
+    return json(d);  // nlohmann writes a double in its shortest round-trip form
 }
 
 json vec3(const glm::vec3& v) {

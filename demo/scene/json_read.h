@@ -51,6 +51,8 @@ glm::vec3 readVec3(const json& j, const std::string& path, Range range = Range::
 // The same in `interval`: "<path>: expected a number in <interval.text>, got <value>".
 float readNumber(const json& j, const std::string& path, const Interval& interval);
 glm::vec3 readVec3(const json& j, const std::string& path, const Interval& interval);
+// A finite number in `interval` kept in double (as written, not rounded to a float).
+double readDouble(const json& j, const std::string& path, const Interval& interval);
 // A non-zero vector, returned normalised (as it is when its length is already within 1e-6 of 1, so
 // that a scene written by sceneToJson reads back exactly).
 glm::vec3 readDirection(const json& j, const std::string& path);
@@ -61,5 +63,7 @@ uint32_t readUint32(const json& j, const std::string& path);
 // Writers, in the form the readers accept back exactly.
 json number(float f);
 json vec3(const glm::vec3& v);
+// A double in its shortest form that reads back as the same double (readDouble).
+json doubleNumber(double d);
 
 }  // namespace demo::json_read

@@ -14,15 +14,29 @@ namespace {
 using json = nlohmann::json;
 using namespace json_read;
 
-constexpr const char* kPointKeys[] = {"type", "position", "intensity", "radius", "range"};
-constexpr const char* kSpotKeys[] = {"type",   "position", "direction",       "intensity",
-                                     "radius", "range",    "inner_angle_deg", "outer_angle_deg"};
+constexpr const char* kPointKeys[] = {"type",  "position", "intensity",       "radius",
+                                      "range", "velocity", "intensity_change"};
+constexpr const char* kSpotKeys[] = {"type",     "position",        "direction",       "intensity",
+                                     "radius",   "range",           "inner_angle_deg", "outer_angle_deg",
+                                     "velocity", "intensity_change"};
+constexpr const char* kIntensityChangeKeys[] = {"frame", "intensity"};
 
 constexpr Interval kCoordinate{-limits::kMaxCoordinate, limits::kMaxCoordinate, "[-1e7, 1e7]"};
 constexpr Interval kIntensity{0.0, 1e9, "[0, 1e9]"};
 constexpr Interval kRange{0.0, 1e9, "(0, 1e9]", true};
 // postfx accepts outer cone angles up to π/2 (exclusive in practice): 89.9° keeps the cone usable.
 constexpr Interval kOuterAngle{0.0, 89.9, "[0, 89.9]"};
+constexpr Interval kVelocity{-limits::kMaxSpeed, limits::kMaxSpeed, "[-1e4, 1e4]"};
+
+// `intensity_change`: both keys required.
+IntensityChange readIntensityChange(const json& j, const std::string& path) {
+    expectObject(j, path);
+    checkKeys(j, path, kIntensityChangeKeys);
+    IntensityChange c;
+    c.frame = readUint32(require(j, path, "frame"), child(path, "frame"));
+    c.intensity = readVec3(require(j, path, "intensity"), child(path, "intensity"), kIntensity);
+    return c;
+}
 
 Light readLight(const json& j, const std::string& path) {
     expectObject(j, path);
@@ -60,6 +74,9 @@ Light readLight(const json& j, const std::string& path) {
             l.innerAngleDeg = readNumber(*a, child(path, "inner_angle_deg"), inner);
         }
     }
+    if (const json* v = find(j, "velocity")) l.velocity = readVec3(*v, child(path, "velocity"), kVelocity);
+    if (const json* c = find(j, "intensity_change"))
+        l.intensityChange = readIntensityChange(*c, child(path, "intensity_change"));
     return l;
 }
 
@@ -99,7 +116,12 @@ json lightsToJson(const std::vector<Light>& lights) {
                   {"position", vec3(l.position)},
                   {"intensity", vec3(l.intensity)},
                   {"radius", number(l.radius)},
-                  {"range", number(l.range)}};
+                  {"range", number(l.range)},
+                  {"velocity", vec3(l.velocity)}};
+        if (l.intensityChange) {
+            j["intensity_change"] = {{"frame", l.intensityChange->frame},
+                                     {"intensity", vec3(l.intensityChange->intensity)}};
+        }
         if (l.kind == LightKind::Spot) {
             j["direction"] = vec3(l.direction);
             j["inner_angle_deg"] = number(l.innerAngleDeg);

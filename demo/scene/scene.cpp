@@ -138,8 +138,10 @@ private:
 
 // ---- scene -----------------------------------------------------------------------------------------
 
-constexpr const char* kTopKeys[] = {"camera", "sun", "ambient", "sky", "objects", "lights", "effects"};
-constexpr const char* kCameraKeys[] = {"position", "look_at", "up", "fov_y_deg", "near", "far", "ev100"};
+constexpr const char* kTopKeys[] = {"camera",  "sun",        "ambient",         "sky", "objects", "lights",
+                                    "effects", "frame_time", "camera_cut_frame"};
+constexpr const char* kCameraKeys[] = {"position", "look_at", "up",       "fov_y_deg", "near",
+                                       "far",      "ev100",   "velocity", "yaw_rate"};
 constexpr const char* kSunKeys[] = {"direction", "illuminance", "shadows"};
 constexpr const char* kPlaneKeys[] = {"type", "point", "normal", "albedo"};
 constexpr const char* kBoxKeys[] = {"type", "center", "half_size", "albedo"};
@@ -157,6 +159,9 @@ constexpr Interval kFovYDeg{limits::kMinFovYDeg, limits::kMaxFovYDeg, "[0.01, 17
 constexpr Interval kNear{limits::kMinNear, limits::kMaxNear, "[1e-6, 1e6]"};
 constexpr Interval kEv100{limits::kMinEv100, limits::kMaxEv100, "[-30, 30]"};
 constexpr Interval kLight{0.0, limits::kMaxLight, "[0, 1e7]"};
+constexpr Interval kVelocity{-limits::kMaxSpeed, limits::kMaxSpeed, "[-1e4, 1e4]"};
+constexpr Interval kYawRate{-limits::kMaxYawRateDeg, limits::kMaxYawRateDeg, "[-36000, 36000]"};
+constexpr Interval kFrameTime{0.0, limits::kMaxFrameTime, "(0, 1]", true};
 
 Camera readCamera(const json& j, const std::string& path) {
     expectObject(j, path);
@@ -176,6 +181,8 @@ Camera readCamera(const json& j, const std::string& path) {
                                      json_text::formatFloat(c.nearPlane) + got(far));
     }
     if (const json* ev = find(j, "ev100")) c.ev100 = readNumber(*ev, child(path, "ev100"), kEv100);
+    if (const json* v = find(j, "velocity")) c.velocity = readVec3(*v, child(path, "velocity"), kVelocity);
+    if (const json* y = find(j, "yaw_rate")) c.yawRateDeg = readNumber(*y, child(path, "yaw_rate"), kYawRate);
 
     const glm::dvec3 view = glm::dvec3(c.lookAt) - glm::dvec3(c.position);
     const double distance = glm::length(view);
@@ -262,6 +269,9 @@ Scene readScene(const json& root) {
 
     if (const json* lights = find(root, "lights")) scene.lights = readLights(*lights, "lights");
     if (const json* effects = find(root, "effects")) readEffects(*effects, "effects", scene);
+    if (const json* t = find(root, "frame_time")) scene.frameTime = readDouble(*t, "frame_time", kFrameTime);
+    if (const json* c = find(root, "camera_cut_frame"))
+        scene.cameraCutFrame = readUint32(*c, "camera_cut_frame");
     return scene;
 }
 
@@ -329,9 +339,9 @@ nlohmann::json sceneToJson(const Scene& scene) {
     json j = json::object();
     const Camera& c = scene.camera;
     j["camera"] = {
-        {"position", vec3(c.position)},   {"look_at", vec3(c.lookAt)},   {"up", vec3(c.up)},
-        {"fov_y_deg", number(c.fovYDeg)}, {"near", number(c.nearPlane)}, {"far", number(c.farPlane)},
-        {"ev100", number(c.ev100)}};
+        {"position", vec3(c.position)},   {"look_at", vec3(c.lookAt)},    {"up", vec3(c.up)},
+        {"fov_y_deg", number(c.fovYDeg)}, {"near", number(c.nearPlane)},  {"far", number(c.farPlane)},
+        {"ev100", number(c.ev100)},       {"velocity", vec3(c.velocity)}, {"yaw_rate", number(c.yawRateDeg)}};
     j["sun"] = {{"direction", vec3(scene.sun.direction)},
                 {"illuminance", vec3(scene.sun.illuminance)},
                 {"shadows", scene.sun.shadows}};
@@ -363,6 +373,8 @@ nlohmann::json sceneToJson(const Scene& scene) {
     j["objects"] = std::move(objects);
     j["lights"] = lightsToJson(scene.lights);
     j["effects"] = effectsToJson(scene);
+    j["frame_time"] = doubleNumber(scene.frameTime);
+    if (scene.cameraCutFrame) j["camera_cut_frame"] = *scene.cameraCutFrame;
     return j;
 }
 

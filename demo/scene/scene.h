@@ -9,6 +9,8 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,7 +32,15 @@ constexpr double kMinEv100 = -30.0;  // camera.ev100
 constexpr double kMaxEv100 = 30.0;
 constexpr double kMaxLight = 1e7;          // sun illuminance [lux], ambient and sky [cd/m²]: postfx's bound
 constexpr std::size_t kMaxObjects = 4096;  // entries of `objects`
+// Motion (docs/scene-format.md#motion; scene/motion.h). Positions that motion would carry beyond
+// kMaxCoordinate stop there, so every frame's state is within the limits above.
+constexpr double kMaxSpeed = 1e4;         // [m/s] each component of camera.velocity and lights[i].velocity
+constexpr double kMaxYawRateDeg = 36000;  // [deg/s] camera.yaw_rate: 100 turns per second
+constexpr double kMaxFrameTime = 1.0;     // [s] frame_time, in (0, 1]
 }  // namespace limits
+
+// The time between two frames when the file has no `frame_time` [s]: frame n is at n / 60 s.
+constexpr double kDefaultFrameTime = 1.0 / 60.0;
 
 // The exposure of tonemapped output (PNG, the window) for camera.ev100: radiance is multiplied by
 // 1 / (1.2 · 2^ev100) (saturation-based, Lagarde & de Rousiers 2014).
@@ -44,6 +54,11 @@ struct Camera {
     float nearPlane = 0.1f;                 // [m], [1e-6, 1e6]
     float farPlane = 1000.0f;               // [m], (near, 1e9]
     float ev100 = 15.0f;                    // exposure for tonemapped output only [EV at ISO 100], [-30, 30]
+    // Motion (scene/motion.h): the fields above are the camera at frame 0.
+    glm::vec3 velocity{0.0f};  // [m/s] world, each in [-1e4, 1e4]
+    // [deg/s] turning about world +y (view direction and up together), positive to the right: from -z
+    // toward +x, clockwise seen from above (the window's fly camera's yaw); [-36000, 36000].
+    float yawRateDeg = 0.0f;
 };
 
 struct Sun {
@@ -81,6 +96,12 @@ struct Scene {
     postfx::FroxelFogSettings froxelFog;
     // effects.froxel_fog.volumes: its local fog volumes, at most postfx::kMaxFogVolumes.
     std::vector<postfx::FogVolume> froxelVolumes;
+    // `frame_time`: frame n is at time n · frameTime [s], for the motion of the camera and lights and for
+    // postfx (FrameInfo::timeSeconds); (0, 1]. Kept in double, so that the default is exactly 1/60 s.
+    double frameTime = kDefaultFrameTime;
+    // `camera_cut_frame`: the renderer sets FrameInfo::cameraCut on this frame (postfx drops its temporal
+    // history); none when absent.
+    std::optional<uint32_t> cameraCutFrame;
 };
 
 // scene.froxelFog with its volumes pointing into scene.froxelVolumes (volumeCount their number), as the

@@ -407,7 +407,7 @@ std::vector<Rejection> rejections() {
     addText("RootNumber", "42", "(root): expected a JSON object, got 42");
     addText("RootNull", "null", "(root): expected a JSON object, got null");
     add("UnknownTopLevelKey", with("/fog", json::object()), "fog: unknown key",
-        "(expected camera, sun, ambient, sky, objects, lights or effects)");
+        "(expected camera, sun, ambient, sky, objects, lights, effects, frame_time or camera_cut_frame)");
     add("UnknownTopLevelKeyNotIdentifier", with("/my key\n", 1), R"(["my key\n"]: unknown key)");
 
     // missing keys
@@ -567,7 +567,7 @@ std::vector<Rejection> rejections() {
     add("TypeIsCaseSensitive", with("/objects/2/type", "Sphere"),
         R"(objects[2].type: unknown object type "Sphere")");
     add("UnknownCameraKey", with("/camera/fov", 60), "camera.fov: unknown key",
-        "(expected position, look_at, up, fov_y_deg, near, far or ev100)");
+        "(expected position, look_at, up, fov_y_deg, near, far, ev100, velocity or yaw_rate)");
     add("UnknownSunKey", with("/sun/color", {1, 1, 1}), "sun.color: unknown key");
     add("SphereWithHalfSize", with("/objects/2/half_size", {1, 1, 1}),
         "objects[2].half_size: unknown key for a sphere");

@@ -3,6 +3,7 @@
 #include "core/checks.h"
 #include "host/camera_math.h"
 #include "host/scene_mesh.h"
+#include "scene/motion.h"
 
 #include "shaders/demo_shared.h"
 
@@ -42,8 +43,8 @@ std::string meshProblem(const Scene& scene, bool infiniteFar) {
     return "";
 }
 
-std::string frameProblem(const Scene& scene, VkExtent2D extent, bool reversedZ, bool infiniteFar,
-                         const ShadowFit& fit) {
+std::string frameProblem(const Scene& scene, double timeSeconds, VkExtent2D extent, bool reversedZ,
+                         bool infiniteFar, const ShadowFit& fit) {
     const Camera& cam = scene.camera;
     const float aspect = float(extent.width) / float(extent.height);
     const glm::mat4 proj = perspectiveProjection(glm::radians(cam.fovYDeg), aspect, cam.nearPlane,
@@ -57,6 +58,7 @@ std::string frameProblem(const Scene& scene, VkExtent2D extent, bool reversedZ, 
         return "camera: a matrix or the inverse of viewProj is not finite";
 
     postfx::FrameInfo frame;
+    frame.timeSeconds = timeSeconds;  // as renderer_frame.cpp gives it (frameTimeSeconds)
     frame.color = image(0x10, VK_FORMAT_R16G16B16A16_SFLOAT, extent, VK_IMAGE_LAYOUT_GENERAL,
                         VK_IMAGE_USAGE_STORAGE_BIT);
     frame.depth = image(0x20, VK_FORMAT_D32_SFLOAT, extent, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
@@ -88,16 +90,8 @@ std::string frameProblem(const Scene& scene, VkExtent2D extent, bool reversedZ, 
     return "";
 }
 
-}  // namespace
-
-std::string renderProblem(const Scene& scene) {
-    // PNG: radiance (at most the largest half float, the HDR image's format) times the exposure goes
-    // through the ACES curve, which squares it.
-    const float exposure = exposureFromEv100(scene.camera.ev100);
-    const float brightest = 65504.0f * exposure;
-    if (!(exposure > 0.0f) || !std::isfinite(brightest * brightest * 2.51f))
-        return "exposure: " + std::to_string(exposure) + " overflows the tonemap";
-
+// What depends on the frame's state (the camera and lights, moved by the scene's motion) and time.
+std::string stateProblem(const Scene& scene, double timeSeconds) {
     for (bool infiniteFar : {false, true})
         if (std::string p = meshProblem(scene, infiniteFar); !p.empty()) return p;
 
@@ -127,8 +121,42 @@ std::string renderProblem(const Scene& scene) {
     for (VkExtent2D extent : {VkExtent2D{64, 64}, VkExtent2D{1, 16384}, VkExtent2D{16384, 1}})
         for (bool reversedZ : {true, false})
             for (bool infiniteFar : {false, true})
-                if (std::string p = frameProblem(scene, extent, reversedZ, infiniteFar, fit); !p.empty())
+                if (std::string p = frameProblem(scene, timeSeconds, extent, reversedZ, infiniteFar, fit);
+                    !p.empty())
                     return p;
+    return "";
+}
+
+// The frames whose state is checked besides frame 0: the next one, the camera cut, each intensity
+// change, postfx-render's last possible frame and the last a 32-bit frame number names (positions have
+// reached their limits long before).
+std::vector<uint64_t> framesToCheck(const Scene& scene) {
+    std::vector<uint64_t> frames{1, 99999, std::numeric_limits<uint32_t>::max()};
+    if (scene.cameraCutFrame) frames.push_back(*scene.cameraCutFrame);
+    for (const Light& l : scene.lights)
+        if (l.intensityChange) frames.push_back(l.intensityChange->frame);
+    return frames;
+}
+
+}  // namespace
+
+std::string renderProblem(const Scene& scene) {
+    // PNG: radiance (at most the largest half float, the HDR image's format) times the exposure goes
+    // through the ACES curve, which squares it.
+    const float exposure = exposureFromEv100(scene.camera.ev100);
+    const float brightest = 65504.0f * exposure;
+    if (!(exposure > 0.0f) || !std::isfinite(brightest * brightest * 2.51f))
+        return "exposure: " + std::to_string(exposure) + " overflows the tonemap";
+
+    if (std::string p = stateProblem(scene, 0.0); !p.empty()) return p;
+    // Every frame of a moving scene renders too (scene/motion.h keeps its positions within the limits).
+    if (hasMotion(scene) || scene.cameraCutFrame) {
+        for (uint64_t frame : framesToCheck(scene)) {
+            const Scene state = sceneAtFrame(scene, frame);
+            if (std::string p = stateProblem(state, frameTimeSeconds(scene, frame)); !p.empty())
+                return "frame " + std::to_string(frame) + ": " + p;
+        }
+    }
 
     // The fog as postfx checks it at record time (FogEffect::validate, the same check as
     // validateFogSettings): after the preset replaced its knobs; Auto may pick any preset.

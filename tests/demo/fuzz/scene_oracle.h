@@ -16,6 +16,8 @@ namespace demo::fuzz {
 // stand-in image handles, the fog's settings under every quality preset, the froxel fog's settings with
 // the scene's volumes, never both fogs at once) for the extreme image shapes
 // postfx-render allows (1x16384, 16384x1, 64x64), both depth conventions, with and without a far plane.
+// A scene with motion (scene/motion.h) is checked in the state of several frames besides frame 0 (the
+// next, the camera cut, each light's intensity change, 99999 and 2^32 - 1), at each frame's time.
 std::string renderProblem(const Scene& scene);
 
 }  // namespace demo::fuzz
