@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
+#include "scene/motion.h"
 #include "scene/scene.h"
 
 #include <algorithm>
@@ -34,7 +35,9 @@ const char* kUsage =
     "  -o, --output PATH  output image (required)\n"
     "  --size WxH         image size in pixels (default 1280x720), each side 1..16384, at most\n"
     "                     67108864 pixels (8192x8192: about 128 bytes per pixel within 8 GiB)\n"
-    "  --frames N         frames rendered before the last is written (default 1)\n"
+    "  --frames N         render frames 0..N-1, each in its state of the scene's motion (camera\n"
+    "                     and light velocities, intensity changes, camera cut; docs/scene-format.md),\n"
+    "                     and write the last (default 1)\n"
     "  --standard-z       standard depth (near 0, far 1) instead of reversed Z\n"
     "  --infinite-far     projection without a far plane\n"
     "  --validation       Vulkan validation layer with synchronization validation (also\n"
@@ -42,7 +45,7 @@ const char* kUsage =
     "                     at the device's destruction (an object left alive) included\n"
     "  --reference        the fog (ray-marched or froxel) from postfx's CPU reference (double\n"
     "                     precision, no jitter, all CPU threads) instead of the GPU pass, over the\n"
-    "                     same GPU frame (the last)\n"
+    "                     same GPU frame (the last, N-1, in its state: a single frame, no history)\n"
     "  --reference-steps N  march steps per pixel of --reference (default 4096), 1..1048576\n"
     "  --print-plan       print postfx's frame plan of the last frame (docs/frame-plan.md) as JSON on\n"
     "                     stdout instead of writing an image: the frames before it are rendered\n"
@@ -136,7 +139,7 @@ int printPlan(demo::VulkanHost& host, const Args& args, const demo::Scene& scene
     demo::ImageF unused;
     if (before > 0 && !renderer->render(scene, unused, error)) return fail(error);
     postfx::FramePlan plan;
-    if (!renderer->plan(scene, before, plan, error)) return fail(error);
+    if (!renderer->plan(demo::sceneAtFrame(scene, before), before, plan, error)) return fail(error);
     std::printf("%s\n", planJson(plan).dump(2).c_str());
     return 0;
 }

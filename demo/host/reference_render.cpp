@@ -62,14 +62,15 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         error = "renderReference: stride " + std::to_string(stride) + " needs fog.resolution_scale 1";
         return false;
     }
-    if (!setScene(scene, error)) return false;  // also waits for the device to be idle
-
     const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns
-    const bool froxel = scene.froxelFog.enabled;
-    const Scene& gpuScene = scene;
+    // Its state: the camera and lights moved to that frame (as render() draws it).
+    const Scene gpuScene = sceneAtFrame(scene, frameIndex);
+    if (!setScene(gpuScene, error)) return false;  // also waits for the device to be idle
+
+    const bool froxel = gpuScene.froxelFog.enabled;
     const ShadowFit fit = r.shadowFit(gpuScene);
     const bool shadows = r.drawsShadows(gpuScene, fit, frameIndex);
-    const PostfxInputs in = r.postfxInputs(scene, frameIndex, fit, shadows);
+    const PostfxInputs in = r.postfxInputs(gpuScene, frameIndex, fit, shadows);
     const bool fog = in.fog.enabled || froxel;  // a fog reference to evaluate
     const postfx::FogNoiseSettings& noiseSettings = froxel ? in.froxelFog.noise : in.fog.noise;
     const bool noise = fog && noiseSettings.enabled && !noiseSettings.hostTexture;
@@ -118,6 +119,8 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
             imageBarrier(cmd, r.fogScratch, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kCompute, 0,
                          kCompute, VK_ACCESS_SHADER_WRITE_BIT);
         }
+        // A single frame: nothing before it belongs to its history.
+        r.cameraCutRequested = true;
         if (!r.recordFrame(cmd, gpuScene, frameIndex, fogOutput, error)) return false;
         r.recordReadback(cmd);  // the HDR image: postfx only read it
         recordDepthCopy(cmd, r.gbuffer.depth, buffer, depthOffset);
@@ -237,9 +240,9 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     if (froxel) {
         postfx::reference::FroxelFogInputs fi;
         fill(fi);
-        fi.settings = in.froxelFog;              // its volumes point into scene.froxelVolumes
+        fi.settings = in.froxelFog;              // its volumes point into gpuScene.froxelVolumes
         std::vector<postfx::LocalLight> lights;  // as the GPU frame gives them (Impl::frameInfo)
-        for (const Light& l : scene.lights)
+        for (const Light& l : gpuScene.lights)
             lights.push_back(toLocalLight(l));
         fi.lights = lights;
         if (const postfx::Status s = postfx::reference::renderFroxelFog(fi, out.rgba); !s.ok()) {

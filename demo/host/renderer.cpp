@@ -7,6 +7,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 
@@ -249,11 +250,27 @@ bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
         error = "the renderer is unusable after a failed submission";
         return false;
     }
+    // Frame f shows `state`: the scene moved to frame f (a copy of the camera and lights only when the
+    // scene has motion). Plane quads are centred under the camera at setScene (scene_mesh.h).
+    const bool motion = hasMotion(scene);
+    Scene moving = motion ? scene : Scene{};
+    const Scene& state = motion ? moving : scene;
     if (!setScene(scene, error)) return false;
+    glm::vec3 meshCentre = scene.camera.position;
+    const float replanDistance = 0.25f * std::min(scene.camera.farPlane, 1e4f);
     for (uint32_t f = 0; f < r.options.frames; ++f) {
         // Every call renders frames 0..frames-1 (renderReference() shows frame frames-1). The previous
         // call waited for all its frames, so restarting the indices reuses nothing still in flight.
         const uint64_t frameIndex = f;
+        if (motion) {
+            moveToFrame(scene, frameIndex, moving);
+            const float moved = glm::length(moving.camera.position - meshCentre);
+            const bool last = f + 1 == r.options.frames;
+            if (moved > replanDistance || (last && moved > 0.0f)) {
+                if (!setScene(moving, error)) return false;  // waits for the frames in flight
+                meshCentre = moving.camera.position;
+            }
+        }
         const size_t slot = frameIndex % kFramesInFlight;
         VkCommandBuffer cmd = r.commandBuffers[slot];
         // The command buffer and postfx's per-frame resources of frame (index - kFramesInFlight) are free.
@@ -264,7 +281,7 @@ bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
         VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
         bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
         vkBeginCommandBuffer(cmd, &bi);
-        const bool recorded = recordFrame(cmd, scene, frameIndex, error);
+        const bool recorded = recordFrame(cmd, state, frameIndex, error);
         if (recorded && f + 1 == r.options.frames) r.recordReadback(cmd);
         if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
         vkResetFences(device, 1, &r.fences[slot]);

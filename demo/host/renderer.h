@@ -9,6 +9,7 @@
 #pragma once
 
 #include "host/vulkan_host.h"
+#include "scene/motion.h"
 #include "scene/scene.h"
 
 #include <glm/glm.hpp>
@@ -27,11 +28,14 @@ struct RenderOptions {
     uint32_t width = 1280;
     uint32_t height = 720;
     // Frames rendered by render(), indices 0..frames-1; the last one is returned (later effects
-    // accumulate). The frame index sets postfx's time (index / 60 s) and the fog's jitter pattern, so
-    // render() and renderReference() show the same frame (index frames - 1).
+    // accumulate). Frame k shows the scene's state at frame k (sceneAtFrame: its camera and lights
+    // moved, scene/motion.h); the index also sets postfx's time (k · scene.frameTime, 1/60 s by default)
+    // and the fog's jitter pattern, so render() and renderReference() show the same frame (index
+    // frames - 1).
     uint32_t frames = 1;
     // When set, every frame is at this time [s] for postfx (the noise's wind offset), so that frames
-    // differ only in their index (the fog's jitter pattern); otherwise frame k is at k · kFrameSeconds.
+    // differ only in their index (the fog's jitter pattern, and the scene's motion if it has any);
+    // otherwise frame k is at k · scene.frameTime (frameTimeSeconds).
     std::optional<double> fixedTimeSeconds;
     bool reversedZ = true;     // depth convention of the G-buffer (and of the postfx context)
     bool infiniteFar = false;  // projection without a far plane
@@ -70,7 +74,6 @@ struct ShadowMapInfo {
 class Renderer {
 public:
     static constexpr uint32_t kFramesInFlight = 2;  // render()'s command buffers; postfx is created with it
-    static constexpr double kFrameSeconds = 1.0 / 60.0;  // frame k is at time k · kFrameSeconds [s]
 
     static std::unique_ptr<Renderer> create(VulkanHost& host, const RenderOptions& options,
                                             std::string& error);
@@ -78,8 +81,12 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    // Renders `scene` options.frames times (frame indices 0..frames-1, every call) and reads back the
-    // last frame's HDR radiance (after postfx). Calls setScene(scene) first.
+    // Renders frames 0..options.frames-1 of `scene` (every call), frame k showing sceneAtFrame(scene, k),
+    // and reads back the last frame's HDR radiance (after postfx). Frame 0 is a camera cut
+    // (FrameInfo::cameraCut: no temporal history of an earlier call is kept), and so is the frame
+    // scene.cameraCutFrame names. Calls setScene first, and again (waiting for the device) when the camera
+    // has moved a quarter of its far distance (at most 2.5 km) from where the planes were centred, and for
+    // the last frame when it moved at all, so that its planes are those renderReference() draws.
     bool render(const Scene& scene, ImageF& out, std::string& error);
 
     // The same frame as render() (index options.frames - 1) with postfx's fog replaced by its CPU
@@ -90,9 +97,11 @@ public:
     // un-fogged scene (postfx::kFogNoiseTexture or kFroxelFogNoiseTexture). Read back: HDR color, depth,
     // shadow map (when drawn), noise (when on); the camera, sun, ambient, lights, shadow and time inputs are
     // those of the GPU frame. Without fog the result is the un-fogged scene. `out` has render()'s layout.
-    // Calls setScene(scene) first. `stride` > 1 evaluates the reference only at the pixels (x, y) with x and
-    // y multiples of `stride` (CPU time / stride²): `out` is then ceil(W / stride) x ceil(H / stride), its
-    // pixel (i, j) being the frame's pixel (i · stride, j · stride).
+    // The frame shows sceneAtFrame(scene, options.frames - 1), the state of render()'s last frame (the
+    // reference itself is of that one frame: it has no history); its postfx frame is a camera cut.
+    // Calls setScene(that state) first. `stride` > 1 evaluates the reference only at the pixels (x, y) with x
+    // and y multiples of `stride` (CPU time / stride²): `out` is then ceil(W / stride) x ceil(H / stride),
+    // its pixel (i, j) being the frame's pixel (i · stride, j · stride).
     bool renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel = 4096,
                          uint32_t stride = 1);
 
@@ -102,8 +111,10 @@ public:
 
     // Records one frame into `cmd` (recording, outside a render pass): frame uniforms, shadow map
     // (when scene.sun.shadows), G-buffer, lighting, then postfx (scene.fog, scene.froxelFog; time
-    // frameIndex / 60 s).
-    // Geometry comes from the last setScene(); camera, sun, ambient, sky and fog from `scene`.
+    // frameTimeSeconds(scene, frameIndex); FrameInfo::cameraCut on frame 0, when scene.cameraCutFrame is
+    // frameIndex, and when requestCameraCut() was called since the last recorded frame).
+    // Geometry comes from the last setScene(); camera, sun, ambient, sky, lights and fog from `scene` as
+    // given: `scene` is the frame's state, its motion is not applied here (sceneAtFrame does that).
     // Frames execute in recording order on host.queue; before recording frame k the caller waits
     // for frame k - kFramesInFlight. After it, hdrImage() is in GENERAL with COMPUTE_SHADER writes
     // to make visible to its reader. A caller may read it (blit, tonemap, sample) in TRANSFER,
@@ -123,6 +134,10 @@ public:
     // `scene` lives and its froxelVolumes is unchanged, froxelFogSettings). For a host pass that wants
     // exactly postfx's inputs after recordFrame (the benchmark's baselines). Records nothing.
     postfx::FrameInfo frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const;
+
+    // The next recorded frame tells postfx FrameInfo::cameraCut: the view does not continue the previous
+    // frame's (the window demo's view reset), so every temporal history is dropped.
+    void requestCameraCut();
 
     // postfx's plan (docs/frame-plan.md) for frame `frameIndex` of `scene` as recordFrame(cmd, scene,
     // frameIndex) would record it now (given what postfx already holds, e.g. a generated noise texture).

@@ -75,7 +75,7 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
                                           bool shadows) const {
     PostfxInputs in;
     in.timeSeconds =
-        options.fixedTimeSeconds ? *options.fixedTimeSeconds : double(frameIndex) * kFrameSeconds;
+        options.fixedTimeSeconds ? *options.fixedTimeSeconds : frameTimeSeconds(scene, frameIndex);
     in.camera.position = glm::dvec3(scene.camera.position);
     in.camera.view = cameraView(scene.camera);  // postfx uses its rotation; position is given above
     in.camera.projection = projection(scene);
@@ -106,7 +106,8 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     frame.commandBuffer = cmd;
     frame.frameIndex = frameIndex;
     // render() starts every call at frame 0: a new sequence, which no temporal history may continue.
-    frame.cameraCut = frameIndex == 0;
+    // Also the scene's cut frame and a cut the host asked for (requestCameraCut: the window's view reset).
+    frame.cameraCut = frameIndex == 0 || cameraCutRequested || isCameraCut(scene, frameIndex);
     frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL, hdr.usage};
     frame.depth = {gbuffer.depth.image,
                    gbuffer.depth.view,
@@ -221,7 +222,12 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
         error = "postfx record: " + s.message;
         return false;
     }
+    cameraCutRequested = false;  // told to postfx
     return true;
+}
+
+void Renderer::requestCameraCut() {
+    impl_->cameraCutRequested = true;
 }
 
 // After recordFrame: HDR image (GENERAL, compute writes) -> readback buffer -> host. The image is left in

@@ -62,6 +62,8 @@ struct Renderer::Impl {
     std::array<VkFence, kFramesInFlight> fences{};
     GpuBuffer readback;
     bool broken = false;  // a submission failed: the fences can no longer be trusted
+    // requestCameraCut(): the next recorded frame is a camera cut (FrameInfo::cameraCut).
+    bool cameraCutRequested = false;
 
     // renderReference(): where postfx writes the fogged frame so that the HDR image keeps the
     // un-fogged scene (FrameInfo::output); created on first use.
