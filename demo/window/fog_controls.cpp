@@ -90,6 +90,7 @@ bool buildFog(postfx::FogSettings& f) {
     changed |= buildQuality(f);
     changed |= ImGui::SliderFloat("transmittance cutoff", &f.transmittanceCutoff, 0.0f, 0.1f, "%.4f", kClamp);
     tooltip("stop marching below this transmittance; 0: never early");
+    changed |= buildTemporalControls(f.temporal);
     return changed;
 }
 
@@ -132,6 +133,7 @@ glm::vec3 FogControls::sunIlluminance() const {
 
 void FogControls::sanitize(postfx::FogSettings& f) {
     sanitizeMedium(f);
+    sanitizeTemporal(f.temporal);
     f.steps = std::clamp<uint32_t>(f.steps, 1, 4096);
     if (int(f.quality) < 0 || int(f.quality) >= kQualityCount) f.quality = postfx::FogQuality::Custom;
     if (!(f.autoBudgetMs > 0.0f)) f.autoBudgetMs = 0.05f;  // also NaN

@@ -29,7 +29,8 @@ public:
 
     // Brings every field into the range postfx accepts: NaN or out-of-range values are clamped (NaN to
     // the lower end, steps >= 1, shadow kernel to the next odd size, texture size to the nearest power of
-    // two in [16, 256], max distance, tiling and the auto budget to > 0, an unknown quality to Custom).
+    // two in [16, 256], max distance, tiling and the auto budget to > 0, an unknown quality to Custom, the
+    // temporal blend weight to (0, 1]).
     // Valid values are left exactly as they are.
     static void sanitize(postfx::FogSettings& fog);
 

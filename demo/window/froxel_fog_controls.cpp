@@ -126,6 +126,7 @@ bool buildVolumes(std::vector<postfx::FogVolume>& volumes, const Camera& camera)
 
 void FroxelFogControls::sanitize(postfx::FroxelFogSettings& f, std::vector<postfx::FogVolume>& volumes) {
     sanitizeMedium(f);
+    sanitizeTemporal(f.temporal);
     for (int a = 0; a < 3; ++a)
         f.grid[a] = std::clamp<uint32_t>(f.grid[a], 1, postfx::kMaxFroxelGridSize);
     f.tileSizePx = std::min(f.tileSizePx, kMaxTileSize);
@@ -159,6 +160,7 @@ bool FroxelFogControls::build(Scene& scene) {
         tooltip("the froxel fog; turning it on turns the ray-marched fog off (postfx draws one of them)");
         edits |= buildMediumControls(edited);  // the same widgets as the ray-marched fog's
         edits |= buildGrid(edited);
+        edits |= buildTemporalControls(edited.temporal);
         if (ImGui::TreeNode("Volumes")) {
             edits |= buildVolumes(volumes, scene.camera);
             ImGui::TreePop();

@@ -100,6 +100,25 @@ bool buildMediumControls(postfx::FogMedium& m) {
     return changed;
 }
 
+bool buildTemporalControls(postfx::TemporalSettings& t) {
+    bool changed = ImGui::Checkbox("temporal", &t.enabled);
+    tooltip(
+        "blend each frame with the previous frames' result, reprojected into this view: the jitter's noise "
+        "averages out; history that no longer fits (disocclusion, a light that changed) is dropped");
+    if (!t.enabled) ImGui::BeginDisabled();
+    changed |= ImGui::SliderFloat("blend weight", &t.blendWeight, kMinBlendWeight, 1.0f, "%.3f", kLog);
+    tooltip(
+        "weight of the current frame: lower is smoother and slower to follow changes (the history "
+        "decays as (1 - weight)^frames); 1 keeps no history");
+    if (!t.enabled) ImGui::EndDisabled();
+    return changed;
+}
+
+void sanitizeTemporal(postfx::TemporalSettings& t) {
+    if (!(t.blendWeight > 0.0f)) t.blendWeight = kMinBlendWeight;  // also NaN
+    t.blendWeight = std::min(t.blendWeight, 1.0f);
+}
+
 void sanitizeMedium(postfx::FogMedium& m) {
     m.density = clampOrLow(m.density, 0.0f, 1e6f);
     for (int c = 0; c < 3; ++c)

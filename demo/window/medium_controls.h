@@ -1,9 +1,11 @@
 // The ImGui controls both fog panels share (the "Fog" and "Froxel fog" sections of the windowed demo):
 // the participating medium (postfx::FogMedium: density, albedo, anisotropy, height falloff, base height,
-// max distance, self shadow, analytic tail and its "Noise" subsection), and the small widgets they use.
+// max distance, self shadow, analytic tail and its "Noise" subsection), the temporal accumulation
+// (postfx::TemporalSettings), and the small widgets they use.
 #pragma once
 
 #include <postfx/fog.h>
+#include <postfx/temporal.h>
 
 #include <cstdint>
 
@@ -19,6 +21,16 @@ bool buildMediumControls(postfx::FogMedium& medium);
 // tiling to > 0, the texture size to the nearest power of two in [16, 256]). Valid values are left
 // exactly as they are.
 void sanitizeMedium(postfx::FogMedium& medium);
+
+// The temporal accumulation's widgets of either fog panel (postfx::TemporalSettings): a "temporal"
+// checkbox and a "blend weight" slider. Returns true if anything changed this frame; the weight may then be
+// out of range until sanitizeTemporal.
+bool buildTemporalControls(postfx::TemporalSettings& temporal);
+
+// Brings the blend weight into (0, 1], postfx's range (validateTemporal): NaN and values <= 0 become
+// kMinBlendWeight, values above 1 become 1. Valid values are left exactly as they are.
+void sanitizeTemporal(postfx::TemporalSettings& temporal);
+inline constexpr float kMinBlendWeight = 0.01f;  // the slider's low end
 
 namespace widgets {
 // v clamped to [lo, hi]; NaN becomes lo.

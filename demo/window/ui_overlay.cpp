@@ -239,7 +239,7 @@ void UiOverlay::build(const OverlayStats& s, const std::function<void()>& sectio
         if (lines < timingLines_)
             ImGui::Dummy(ImVec2(0.0f, float(timingLines_ - lines) * ImGui::GetTextLineHeightWithSpacing()));
         ImGui::Separator();
-        ImGui::TextDisabled("WASD, Q/E: move (Shift: fast)  right drag: look  Esc: quit");
+        ImGui::TextDisabled("WASD, Q/E: move (Shift: fast)  right drag: look  R: reset view  Esc: quit");
         if (sections) {
             ImGui::Separator();
             sections();

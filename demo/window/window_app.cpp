@@ -3,6 +3,7 @@
 #include "host/gpu_resources.h"
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
+#include "scene/motion.h"
 #include "window/fly_camera.h"
 #include "window/fog_controls.h"
 #include "window/froxel_fog_controls.h"
@@ -40,7 +41,7 @@ bool sameExtent(VkExtent2D a, VkExtent2D b) {
 class App {
 public:
     explicit App(const AppOptions& options, const Scene& scene)
-        : options_(options), scene_(scene), fogControls_(scene) {}
+        : options_(options), scene_(scene), fileCamera_(scene.camera), fogControls_(scene) {}
     ~App() { destroy(); }
 
     bool init(std::string& error);
@@ -56,6 +57,12 @@ private:
     bool drawFrame(Frame& outcome, std::string& error);
     void recordCommands(VkCommandBuffer cmd, uint32_t imageIndex);
     void readTimings();
+    // The scene frame frameIndex_ shows: scene_ with its lights moved as the scene file says (velocity,
+    // intensity change: sceneAtFrame); the camera is the fly camera's (the file's camera motion is not
+    // applied in the window). scene_ itself when nothing moves.
+    const Scene& frameScene();
+    // R: the view back to the scene file's camera, told to postfx as a camera cut.
+    void resetView();
     std::string fogQualityText() const;  // OverlayStats::fogQuality
     void hold();
 
@@ -65,6 +72,8 @@ private:
 
     AppOptions options_;
     Scene scene_;
+    Camera fileCamera_;  // the scene file's camera (R resets the view to it)
+    Scene movedScene_;   // frameScene()'s copy when the scene has motion
     GLFWwindow* window_ = nullptr;
     std::unique_ptr<VulkanHost> host_;
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
@@ -81,6 +90,7 @@ private:
     std::array<VkSemaphore, kFramesInFlight> imageAvailable_{};  // acquire -> the slot's submission
     bool swapchainDirty_ = false;
     bool minimised_ = false;
+    bool resetKeyDown_ = false;  // R was down at the last poll (a reset per press)
 
     FlyCamera camera_;
     glm::vec3 meshCentre_{0.0f};  // camera position at the last setScene (plane quads are centred there)
@@ -207,6 +217,21 @@ void App::readTimings() {
     }
 }
 
+const Scene& App::frameScene() {
+    if (!hasMotion(scene_)) return scene_;
+    movedScene_ = scene_;  // this frame's edits of the panel included
+    moveToFrame(scene_, frameIndex_, movedScene_);
+    movedScene_.camera = scene_.camera;
+    return movedScene_;
+}
+
+void App::resetView() {
+    scene_.camera = fileCamera_;
+    camera_.reset(scene_.camera);
+    // The view jumps: postfx must not blend the old view's history into it (FrameInfo::cameraCut).
+    renderer_->requestCameraCut();
+}
+
 std::string App::fogQualityText() const {
     if (!scene_.fog.enabled) return "";
     const std::string name = fogQualityName(scene_.fog.quality);
@@ -300,7 +325,7 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     vkBeginCommandBuffer(cmd, &bi);
-    const bool recorded = renderer_->recordFrame(cmd, scene_, frameIndex_, error);
+    const bool recorded = renderer_->recordFrame(cmd, frameScene(), frameIndex_, error);
     if (recorded) recordCommands(cmd, imageIndex);
     if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
 
@@ -365,8 +390,14 @@ bool App::run(std::string& error) {
         const bool uiMouse = ui_ && ui_->wantsMouse();
         const bool uiKeyboard = ui_ && ui_->wantsKeyboard();
         const auto moveSeconds = float(std::min(frameSeconds, 0.25));  // no big jump after a stall
-        if (camera_.update(window_, moveSeconds, uiMouse, uiKeyboard, scene_.camera) &&
-            glm::length(scene_.camera.position - meshCentre_) > replanDistance) {
+        bool moved = camera_.update(window_, moveSeconds, uiMouse, uiKeyboard, scene_.camera);
+        const bool resetKey = glfwGetKey(window_, GLFW_KEY_R) == GLFW_PRESS;
+        if (resetKey && !resetKeyDown_ && !uiKeyboard) {
+            resetView();
+            moved = true;
+        }
+        resetKeyDown_ = resetKey;
+        if (moved && glm::length(scene_.camera.position - meshCentre_) > replanDistance) {
             // Plane quads are centred under the camera at setScene (which waits for the device).
             if (!renderer_->setScene(scene_, error)) return false;
             meshCentre_ = scene_.camera.position;
