@@ -31,8 +31,8 @@ PFX_CONST(uint, kFroxelBindingScatter, 8);     // storage image rgba16f: per fro
 PFX_CONST(uint, kFroxelBindingIntegrated,
           9);  // storage image / sampler3D rgba16f: (L, T) to each slice's end
 // Temporal accumulation (docs/effects/froxel-fog.md#temporal): the previous frame's accumulated scatter
-// volume (trilinear, clamped; the one the scatter pass writes is the other of two) and TemporalUniforms.
-PFX_CONST(uint, kFroxelBindingHistory, 10);   // sampler3D rgba16f: previous accumulated scatter volume
+// volume (RGBA32F, fetched texel by texel; the scatter pass writes the other of two) and TemporalUniforms.
+PFX_CONST(uint, kFroxelBindingHistory, 10);   // sampler3D rgba32f: previous accumulated scatter volume
 PFX_CONST(uint, kFroxelBindingTemporal, 11);  // uniform buffer: TemporalUniforms
 
 // Flags in FroxelUniforms.counts.y

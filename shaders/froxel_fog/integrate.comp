@@ -13,7 +13,11 @@
 layout(local_size_x = kFroxelGroupSize, local_size_y = kFroxelGroupSize) in;
 
 #include "froxel_fog/bindings.glsl"
+#ifdef SCATTER_RGBA32F  // the temporal history (scatter.comp's TEMPORAL variants)
+layout(binding = kFroxelBindingScatter, rgba32f) uniform readonly image3D scatterVolume;
+#else
 layout(binding = kFroxelBindingScatter, rgba16f) uniform readonly image3D scatterVolume;
+#endif
 layout(binding = kFroxelBindingIntegrated, rgba16f) uniform writeonly image3D integratedVolume;
 
 #include "common/integrate.glsl"

@@ -222,7 +222,7 @@ TEST_F(FogTemporalFrames, HistoryIsHeldOnlyWithTemporalOn) {
                                                            "fog.history_b", "fog.history_distance_b"}));
     EXPECT_EQ(names(plan, false),
               (std::vector<std::string>{"fog.raymarch", "fog.temporal", "fog.composite"}));
-    // 32×18: RGBA16F histories and R32F distances, the temporal uniforms' 1280-byte slots.
+    // 32×18: RGBA32F histories and R32F distances.
     const postfx::PlannedPass* temporal = plan.pass("fog.temporal");
     ASSERT_TRUE(temporal);
     EXPECT_EQ(temporal->writes, (std::vector<std::string>{"fog.history_a", "fog.history_distance_a"}));
@@ -232,7 +232,7 @@ TEST_F(FogTemporalFrames, HistoryIsHeldOnlyWithTemporalOn) {
     uint64_t historyBytes = 0;
     for (const postfx::PlannedResource& r : plan.resources)
         if (r.history) historyBytes += r.bytes;
-    EXPECT_EQ(historyBytes, 2u * kW * kH * (8 + 4));
+    EXPECT_EQ(historyBytes, 2u * kW * kH * (16 + 4));
     f.fog.resolutionScale = 0.5f;
     EXPECT_EQ(names(planOf(f, 2), false),
               (std::vector<std::string>{"fog.raymarch", "fog.temporal", "fog.upsample"}));

@@ -166,7 +166,7 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
     EXPECT_FALSE(plan.pass("froxel_fog.light_lists"));
 }
 
-// Temporal accumulation (on by default): the scatter volume is two histories, the one written last
+// Temporal accumulation (on by default): the scatter volume is two RGBA32F histories, the one written last
 // frame read (sampled) by the scatter pass and the other written, then integrated; froxel_fog.scatter is
 // not held; the temporal uniforms (1136 bytes, a 1280-byte slot per frame in flight).
 TEST_F(FroxelFogPlanTest, TemporalHistories) {
@@ -186,10 +186,10 @@ TEST_F(FroxelFogPlanTest, TemporalHistories) {
         EXPECT_EQ(scatter->writes, (std::vector<std::string>{written}));
         EXPECT_EQ(plan.pass("froxel_fog.integrate")->reads,
                   (std::vector<std::string>{"froxel_fog.uniforms", written}));
-        EXPECT_EQ(resourceBytes(plan, "froxel_fog.history_a"), volume);
-        EXPECT_EQ(resourceBytes(plan, "froxel_fog.history_b"), volume);
+        EXPECT_EQ(resourceBytes(plan, "froxel_fog.history_a"), 2 * volume);  // RGBA32F
+        EXPECT_EQ(resourceBytes(plan, "froxel_fog.history_b"), 2 * volume);
         EXPECT_EQ(resourceBytes(plan, "froxel_fog.temporal_uniforms"), 2u * 1280);
-        EXPECT_EQ(plan.totalBytes(), 3 * volume + 1 + 2 * kUniformSlot + 2 * 1280);
+        EXPECT_EQ(plan.totalBytes(), 5 * volume + 1 + 2 * kUniformSlot + 2 * 1280);
         EXPECT_EQ(plan.resources.size(), 6u);
         for (const postfx::PlannedResource& r : plan.resources)
             EXPECT_EQ(r.history, r.name == "froxel_fog.history_a" || r.name == "froxel_fog.history_b")

@@ -44,15 +44,18 @@ const core::ComputePipelineDesc kRaymarch[2] = {
 const core::ComputePipelineDesc kRaymarchReduced[2] = {
     {"fog.raymarch", spirv::fog_raymarch_reduced_comp, kReducedBindings},
     {"fog.raymarch", spirv::fog_raymarch_reduced_comp_COLOR_RGBA32F, kReducedBindings}};
-const core::ComputePipelineDesc kUpsample[2] = {
+// [0]: RGBA16F color, [1]: RGBA32F color, [2]: RGBA16F color from an RGBA32F temporal history.
+const core::ComputePipelineDesc kUpsample[3] = {
     {"fog.upsample", spirv::fog_upsample_comp, kUpsampleBindings},
-    {"fog.upsample", spirv::fog_upsample_comp_COLOR_RGBA32F, kUpsampleBindings}};
+    {"fog.upsample", spirv::fog_upsample_comp_COLOR_RGBA32F, kUpsampleBindings},
+    {"fog.upsample", spirv::fog_upsample_comp_SCATTER_RGBA32F, kUpsampleBindings}};
 const core::ComputePipelineDesc kTemporal[2] = {
     {"fog.temporal", spirv::fog_temporal_comp, kTemporalBindings},
     {"fog.temporal", spirv::fog_temporal_comp_COLOR_RGBA32F, kTemporalBindings}};
 // The temporal accumulation composited at full size: upsample.comp's one-texel-per-pixel path.
+// The history is RGBA32F whatever the color format: [0] RGBA16F color, [1] RGBA32F color.
 const core::ComputePipelineDesc kComposite[2] = {
-    {"fog.composite", spirv::fog_upsample_comp, kUpsampleBindings},
+    {"fog.composite", spirv::fog_upsample_comp_SCATTER_RGBA32F, kUpsampleBindings},
     {"fog.composite", spirv::fog_upsample_comp_COLOR_RGBA32F, kUpsampleBindings}};
 const core::ComputePipelineDesc kNoiseGenerate{"fog.noise", spirv::fog_noise_generate_comp, kNoiseBindings,
                                                sizeof(gpu::NoisePush)};
@@ -165,10 +168,12 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         const gpu::TemporalUniforms tu = core::temporalUniforms(t);
         const core::BufferRef temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
         core::ImageRef history[2], distance[2];
+        core::ImageDesc historyDesc = marchDesc;  // RGBA32F: accumulated in half, small updates would be lost
+        historyDesc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
         core::ImageDesc distanceDesc = marchDesc;
         distanceDesc.format = VK_FORMAT_R32_SFLOAT;
         for (int i = 0; i < 2; ++i) {
-            history[i] = b.historyImage(kHistory[i], marchDesc);
+            history[i] = b.historyImage(kHistory[i], historyDesc);
             distance[i] = b.historyImage(kHistoryDistance[i], distanceDesc);
         }
         b.pass(kTemporal[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
@@ -183,7 +188,9 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         result = history[t.writeSlot];
     }
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-    b.pass(reduced ? kUpsample[rgba32] : kComposite[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
+    const core::ComputePipelineDesc& composite =
+        !reduced ? kComposite[rgba32] : kUpsample[temporal && !rgba32 ? 2 : rgba32];
+    b.pass(composite, groupsFor(full.x), groupsFor(full.y), 1)
         .bind(gpu::kFogBindingColorIn, source, Use::StorageRead)
         .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
         .bind(gpu::kFogBindingScatter, result, Use::StorageRead)

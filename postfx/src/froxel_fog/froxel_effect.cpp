@@ -65,8 +65,10 @@ const core::ComputePipelineDesc kScatterTemporalPass[3] = {
      kScatterLightTemporalBindings},
     {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS_TEMPORAL,
      kScatterListTemporalBindings}};
-const core::ComputePipelineDesc kIntegratePass{"froxel_fog.integrate", spirv::froxel_fog_integrate_comp,
-                                               kIntegrateBindings};
+// [1]: integrating the RGBA32F temporal history.
+const core::ComputePipelineDesc kIntegratePass[2] = {
+    {"froxel_fog.integrate", spirv::froxel_fog_integrate_comp, kIntegrateBindings},
+    {"froxel_fog.integrate", spirv::froxel_fog_integrate_comp_SCATTER_RGBA32F, kIntegrateBindings}};
 // The apply pass in the color format: RGBA16F and RGBA32F.
 const core::ComputePipelineDesc kApplyPass[2] = {
     {"froxel_fog.apply", spirv::froxel_fog_apply_comp, kApplyBindings},
@@ -175,8 +177,11 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         tu.previous.x = float(gridNear(previous, b.depthConvention()));
         tu.previous.y = storageScale(frame) / previousStorageScale_;
         temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
-        scatter = b.historyImage(kHistory[t.writeSlot], volume);
-        history = b.historyImage(kHistory[t.readSlot], volume);
+        // RGBA32F: accumulated in half, updates below half an ulp would be lost.
+        core::ImageDesc historyDesc = volume;
+        historyDesc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        scatter = b.historyImage(kHistory[t.writeSlot], historyDesc);
+        history = b.historyImage(kHistory[t.readSlot], historyDesc);
     } else {
         core::ImageDesc storageOnly = volume;
         storageOnly.usage = VK_IMAGE_USAGE_STORAGE_BIT;
@@ -217,11 +222,11 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     if (lightCount > 0) b.bind(gpu::kFroxelBindingLights, lightBuffer);
     if (lists) b.bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageRead);
     if (temporal)
-        b.bind(gpu::kFroxelBindingHistory, history, Use::Sampled, SamplerKind::LinearClamp)
+        b.bind(gpu::kFroxelBindingHistory, history, Use::Sampled, SamplerKind::NearestClamp)
             .bind(gpu::kFroxelBindingTemporal, temporalUniforms);
     b.bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
 
-    b.pass(kIntegratePass, groupsFor(grid.x), groupsFor(grid.y), 1)
+    b.pass(kIntegratePass[temporal ? 1 : 0], groupsFor(grid.x), groupsFor(grid.y), 1)
         .bind(gpu::kFroxelBindingUniforms, uniforms)
         .bind(gpu::kFroxelBindingScatter, scatter, Use::StorageRead)
         .bind(gpu::kFroxelBindingIntegrated, integrated, Use::StorageWrite);
