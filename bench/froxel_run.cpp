@@ -55,13 +55,16 @@ bool motionReferences(Runner& runner, const std::function<demo::Scene(uint32_t)>
 
 // One scene in motion (froxel_run's part of docs/accuracy-cost/README.md, "In motion"): the camera moving
 // with temporal off and on; with `lightMoves`, the light moving and the light switched off too.
-bool measureMotion(Runner& runner, const std::string& name, const demo::Scene& scene, const Setting& setting,
-                   bool lightMoves, const demo::ImageF& stillReference, const FroxelRunArgs& args,
-                   Progress& progress, MotionInfo& info, std::vector<MotionResult>& motion,
-                   std::vector<SwitchOffResult>& switchOff, std::string& error) {
+bool measureMotion(Runner& runner, const std::string& name, const demo::Scene& sceneIn,
+                   const Setting& setting, bool lightMoves, const demo::ImageF& stillReference,
+                   const FroxelRunArgs& args, Progress& progress, MotionInfo& info,
+                   std::vector<MotionResult>& motion, std::vector<SwitchOffResult>& switchOff,
+                   std::string& error) {
     const MotionOptions& mo = args.motionOptions;
     const std::vector<uint32_t> frames = measuredFrames(mo);
     const uint32_t length = sequenceLength(mo);
+    demo::Scene scene = sceneIn;
+    if (mo.temporalBlend > 0.0f) scene.froxelFog.temporal.blendWeight = mo.temporalBlend;
     auto fail = [&](const std::string& what) {
         error = name + " in motion, " + what + ": " + error;
         return false;

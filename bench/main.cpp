@@ -45,6 +45,7 @@ const char* kUsage =
     "                    [--no-motion] [--motion-scenes a,b,...] [--motion-warmup W] [--motion-frames K]\n"
     "                    [--motion-frame-step S] [--motion-error-stride K] [--motion-speed M/S]\n"
     "                    [--motion-yaw-rate DEG/S] [--motion-light N] [--switch-off-frames M]\n"
+    "                    [--temporal-blend W]\n"
     "       postfx-bench --froxel [--froxel-grids XxY,...] [--froxel-slices a,b,...] "
     "[--froxel-distributions power,log]\n"
     "                    [--froxel-tricubic off,on] [--froxel-lights a,b,...] [--froxel-target-scene S] "
@@ -97,6 +98,7 @@ const char* kUsage =
     "  --motion-yaw-rate R    the camera's turn [deg/s], positive left [20]\n"
     "  --motion-light N       froxel: the light that moves and is switched off [0]\n"
     "  --switch-off-frames M  froxel: frames measured from the switch-off on [8; quick: 4]\n"
+    "  --temporal-blend W     the temporal-on rows' blend weight in (0, 1] [the fog's own]\n"
     "froxel fog (--froxel; docs/accuracy-cost/README.md, \"Froxel fog\"): each scene with effects.fog runs\n"
     "as its froxel version (the same medium in effects.froxel_fog) with the ray-marched fog's rows beside "
     "it\n"
@@ -320,6 +322,9 @@ Args parseArgs(int argc, char** argv) {
                 a, value(), [](double x) { return std::abs(x) <= 3600; }, "a rate in -3600..3600 [deg/s]"));
         } else if (a == "--motion-light") {
             cli::uintOption(a, value(), 0, postfx::kMaxLocalLights - 1, args.motionOptions.light);
+        } else if (a == "--temporal-blend") {
+            args.motionOptions.temporalBlend = float(cli::numberOption(
+                a, value(), [](double x) { return x > 0 && x <= 1; }, "a weight in (0, 1]"));
         } else if (a == "--switch-off-frames") {
             cli::uintOption(a, value(), 1, 10000, args.motionOptions.switchOffFrames);
             switchOffGiven = true;
@@ -658,6 +663,8 @@ int run(const Args& args, const std::string& command) {
                             demo::Scene s = scene;
                             s.fog.quality = kPresets[k];
                             s.fog.temporal.enabled = temporal;
+                            if (motionOptions.temporalBlend > 0.0f)
+                                s.fog.temporal.blendWeight = motionOptions.temporalBlend;
                             const postfx::FogSettings applied = postfx::applyFogQuality(s.fog, s.fog.quality);
                             bench::MotionResult m;
                             m.setting = base;

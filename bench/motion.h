@@ -28,6 +28,8 @@ struct MotionOptions {
     // The switched-off light: frames warmup .. warmup + switchOffFrames - 1 measured, the light off from
     // frame `warmup` on (the camera still).
     uint32_t switchOffFrames = 8;
+    // The temporal-on rows' TemporalSettings::blendWeight; 0: the fog's own (its default, or the scene's).
+    float temporalBlend = 0.0f;
     // Frame n is at n · frameSeconds [s]: demo::Renderer::kFrameSeconds (60 frames per second; the runner
     // checks that they agree).
     double frameSeconds = 1.0 / 60.0;

@@ -225,11 +225,12 @@ std::string motionMarkdown(const RunInfo& info, const MotionInfo& mi, const std:
     if (motion.empty()) return "";
     std::ostringstream out;
     out << "## In motion\n\n"
-        << "The quality presets with the temporal pass off and on (`fog.temporal`: blend weight "
-        << formatNumber(motion.front().temporal ? motion.front().blendWeight
-                                                : postfx::FogSettings{}.temporal.blendWeight,
+        << "The quality presets with the temporal pass off and on (`fog.temporal`, blend weight "
+        << formatNumber(mi.options.temporalBlend > 0.0f ? mi.options.temporalBlend
+                                                        : postfx::FogSettings{}.temporal.blendWeight,
                         3)
-        << ", the default) while the camera moves. " << header(mi, false);
+        << (mi.options.temporalBlend > 0.0f ? " by --temporal-blend" : ", the default")
+        << ") while the camera moves. " << header(mi, false);
 
     const MotionTarget t = motionTarget(info, results, motion);
     out << "### Target\n\n| target | measured in this run | status |\n|---|---|---|\n"
@@ -308,8 +309,11 @@ std::string froxelMotionMarkdown(const RunInfo& info, const MotionInfo& mi,
     out << "## In motion\n\n"
         << "The froxel fog at the grid of the light-count sweep with its temporal accumulation off and on "
            "(on is "
-           "the default; blend weight as the scene has it). "
-        << header(mi, true);
+           "the default; blend weight "
+        << (mi.options.temporalBlend > 0.0f
+                ? formatNumber(mi.options.temporalBlend, 3) + " by --temporal-blend"
+                : std::string("as the scene has it"))
+        << "). " << header(mi, true);
     out << "| scene | motion | setting | temporal | GPU ms | still: 1 frame / mean of 16 | in motion: mean "
            "(max) | "
            "per frame | shadow map moved |\n"
