@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <memory>
 
 namespace bench {
 namespace {
@@ -42,6 +43,19 @@ Setting motionBase(const Setting& base, const FroxelRunArgs& args) {
     return s;
 }
 
+// The sweep's row with `setting`'s froxel knobs on its scene (measured with the scene's own temporal
+// settings), a copy; nullptr when the sweep has none.
+std::unique_ptr<Result> sweepRow(const std::vector<Result>& results, const Setting& setting) {
+    for (const Result& r : results) {
+        const Setting& s = r.setting;
+        if (s.scene == setting.scene && s.method == Method::Froxel && !s.lightSweep &&
+            s.gridX == setting.gridX && s.gridY == setting.gridY && s.gridZ == setting.gridZ &&
+            s.logSlices == setting.logSlices && s.tricubic == setting.tricubic)
+            return std::make_unique<Result>(r);
+    }
+    return nullptr;
+}
+
 // The references of `frames` of the sequence sceneAt, at the motion's stride.
 bool motionReferences(Runner& runner, const std::function<demo::Scene(uint32_t)>& sceneAt,
                       const std::vector<uint32_t>& frames, const FroxelRunArgs& args,
@@ -56,10 +70,10 @@ bool motionReferences(Runner& runner, const std::function<demo::Scene(uint32_t)>
 // One scene in motion (froxel_run's part of docs/accuracy-cost/README.md, "In motion"): the camera moving
 // with temporal off and on; with `lightMoves`, the light moving and the light switched off too.
 bool measureMotion(Runner& runner, const std::string& name, const demo::Scene& sceneIn,
-                   const Setting& setting, bool lightMoves, const demo::ImageF& stillReference,
-                   const FroxelRunArgs& args, Progress& progress, MotionInfo& info,
-                   std::vector<MotionResult>& motion, std::vector<SwitchOffResult>& switchOff,
-                   std::string& error) {
+                   const Setting& setting, const std::unique_ptr<Result>& sweep, bool lightMoves,
+                   const demo::ImageF& stillReference, const FroxelRunArgs& args, Progress& progress,
+                   MotionInfo& info, std::vector<MotionResult>& motion,
+                   std::vector<SwitchOffResult>& switchOff, std::string& error) {
     const MotionOptions& mo = args.motionOptions;
     const std::vector<uint32_t> frames = measuredFrames(mo);
     const uint32_t length = sequenceLength(mo);
@@ -77,6 +91,7 @@ bool measureMotion(Runner& runner, const std::string& name, const demo::Scene& s
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         return ok;
     };
+    std::unique_ptr<Result> still[2];  // the still camera's timing and errors, temporal off and on
     for (MotionKind kind : {MotionKind::Camera, MotionKind::Light}) {
         if (kind == MotionKind::Light && !lightMoves) continue;
         std::function<demo::Scene(uint32_t)> sceneOf = [&, kind](uint32_t n) {
@@ -102,9 +117,20 @@ bool measureMotion(Runner& runner, const std::string& name, const demo::Scene& s
             m.frames = frames;
             progress.show(name + " in motion (" + motionKindName(kind) + ") temporal " +
                           (temporal ? "on" : "off"));
-            if (!runner.measure(s, Method::Froxel, 0.0f, stillReference, args.errorStride, m.timing, m.still,
-                                error))
-                return fail("still");
+            // The still camera: measured once per temporal setting; the sweep's row when it ran these
+            // temporal settings (the scene's own).
+            const postfx::TemporalSettings& own = sceneIn.froxelFog.temporal;
+            if (!still[temporal] && sweep && own.enabled == temporal &&
+                (!temporal || own.blendWeight == s.froxelFog.temporal.blendWeight))
+                still[temporal] = std::make_unique<Result>(*sweep);
+            if (!still[temporal]) {
+                still[temporal] = std::make_unique<Result>();
+                if (!runner.measure(s, Method::Froxel, 0.0f, stillReference, args.errorStride,
+                                    still[temporal]->timing, still[temporal]->error, error))
+                    return fail("still");
+            }
+            m.timing = still[temporal]->timing;
+            m.still = still[temporal]->error;
             auto sceneAt = [&](uint32_t n) {
                 demo::Scene f = sceneOf(n);
                 f.froxelFog.temporal.enabled = temporal;
@@ -225,7 +251,7 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
         motionScenes = args.motionScenes;
         if (motionScenes.empty())
             for (const ScenePlan& p : plans)
-                if (p.name == args.targetScene || froxelLightCount(p.froxel) > 0)
+                if ((p.name == args.targetScene && !args.motionQuick) || froxelLightCount(p.froxel) > 0)
                     motionScenes.push_back(p.name);
     }
     auto inMotion = [&](const std::string& name) {
@@ -333,8 +359,9 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
 
             if (inMotion(p.name) &&
                 !measureMotion(*runner, p.name, withFroxelKnobs(p.froxel, motionBase(base, args)),
-                               motionBase(base, args), lightMoves(p), reference, args, progress, motionInfo,
-                               motion, switchOff, error))
+                               motionBase(base, args), sweepRow(results, motionBase(base, args)),
+                               lightMoves(p), reference, args, progress, motionInfo, motion, switchOff,
+                               error))
                 return fail(error);
 
             if (p.name != args.targetScene) continue;
