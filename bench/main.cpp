@@ -516,7 +516,6 @@ int run(const Args& args, const std::string& command) {
     const bench::MotionOptions& motionOptions = args.motionOptions;
     const std::vector<uint32_t> motionFrames = bench::measuredFrames(motionOptions);
     const uint32_t motionLength = bench::sequenceLength(motionOptions);
-    static_assert(demo::Renderer::kFrameSeconds == 1.0 / 60.0, "MotionOptions::frameSeconds");
     bench::MotionInfo motionInfo;
     motionInfo.options = motionOptions;
     motionInfo.errorStride = args.motionErrorStride;

@@ -25,14 +25,14 @@ struct MotionOptions {
     float yawRateDeg = 20.0f;  // [deg/s] turning about +y; positive turns left
     float lightSpeed = 1.4f;   // [m/s] the moving light, along the first frame's camera right (horizontal)
     uint32_t light = 0;        // the index of the light that moves, and that is switched off (froxel)
-    // The switched-off light: frames warmup .. warmup + switchOffFrames - 1 measured, the light off from
-    // frame `warmup` on (the camera still).
+    // The switched-off light: off from frame F = warmup on (the camera still); frames F - 1 (the last lit)
+    // .. F + switchOffFrames - 1 measured.
     uint32_t switchOffFrames = 8;
     // The temporal-on rows' TemporalSettings::blendWeight; 0: the fog's own (its default, or the scene's).
     float temporalBlend = 0.0f;
-    // Frame n is at n · frameSeconds [s]: demo::Renderer::kFrameSeconds (60 frames per second; the runner
-    // checks that they agree).
-    double frameSeconds = 1.0 / 60.0;
+    // Frame n is at n · frameSeconds [s]: the scene files' default frame_time (60 frames per second). The
+    // renderer's own time stays frozen (the bench's RenderOptions::fixedTimeSeconds).
+    double frameSeconds = demo::kDefaultFrameTime;
 };
 
 // The frames compared with their references: warmup + k · frameStep, ascending.
