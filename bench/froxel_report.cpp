@@ -490,7 +490,7 @@ std::string froxelConclusionsMarkdown(const RunInfo& info, const std::vector<Res
 }
 
 bool writeFroxelMarkdown(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
-                         std::string& error) {
+                         std::string& error, const std::string& sections) {
     std::ostringstream out;
     out << "# Froxel fog: accuracy–cost results\n\n"
         << "Written by `postfx-bench --froxel`; how to run it and what each number means: "
@@ -518,6 +518,7 @@ bool writeFroxelMarkdown(const std::string& path, const RunInfo& info, const std
         out << ".\n\n";
     }
     out << froxelConclusionsMarkdown(info, results);
+    out << sections;
     for (const std::string& scene : sceneOrder(results)) {
         const std::vector<const Result*> rows = rowsOf(results, scene, false);
         if (!rows.empty()) {

@@ -84,8 +84,9 @@ std::vector<FroxelTarget> froxelTargets(const RunInfo& info, const std::vector<R
 const std::vector<std::string>& froxelCsvColumns();
 bool writeFroxelCsv(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
                     std::string& error);
+// results.md; `sections` (markdown: the in-motion section) follows the conclusions.
 bool writeFroxelMarkdown(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
-                         std::string& error);
+                         std::string& error, const std::string& sections = "");
 // results.md's sections "Targets", "Light lists" and "Froxel fog against the ray-marched fog at equal
 // error" (markdown, ends with a blank line): part of writeFroxelMarkdown.
 std::string froxelConclusionsMarkdown(const RunInfo& info, const std::vector<Result>& results);

@@ -1,6 +1,7 @@
 #include "froxel_run.h"
 
 #include "froxel_report.h"
+#include "motion_report.h"
 #include "progress.h"
 #include "report.h"
 
@@ -10,6 +11,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
+#include <memory>
 
 namespace bench {
 namespace {
@@ -27,6 +30,189 @@ struct ScenePlan {
     uint32_t noiseSize = 0;  // the froxel fog's generated noise edge; 0: none
     bool shadows = false;    // its frames give postfx a shadow map
 };
+
+// The in-motion setting: the scene's (`base`) at the light-count sweep's grid, power slices, trilinear.
+Setting motionBase(const Setting& base, const FroxelRunArgs& args) {
+    const postfx::FroxelFogSettings defaults;
+    Setting s = base;
+    s.gridX = args.lightGrid[0];
+    s.gridY = args.lightGrid[1];
+    s.gridZ = args.lightGrid[2];
+    s.logSlices = defaults.depthDistribution == postfx::FroxelDepthDistribution::Log;
+    s.tricubic = defaults.tricubic;
+    return s;
+}
+
+// The sweep's row with `setting`'s froxel knobs on its scene (measured with the scene's own temporal
+// settings), a copy; nullptr when the sweep has none.
+std::unique_ptr<Result> sweepRow(const std::vector<Result>& results, const Setting& setting) {
+    for (const Result& r : results) {
+        const Setting& s = r.setting;
+        if (s.scene == setting.scene && s.method == Method::Froxel && !s.lightSweep &&
+            s.gridX == setting.gridX && s.gridY == setting.gridY && s.gridZ == setting.gridZ &&
+            s.logSlices == setting.logSlices && s.tricubic == setting.tricubic)
+            return std::make_unique<Result>(r);
+    }
+    return nullptr;
+}
+
+// The references of `frames` of the sequence sceneAt, at the motion's stride.
+bool motionReferences(Runner& runner, const std::function<demo::Scene(uint32_t)>& sceneAt,
+                      const std::vector<uint32_t>& frames, const FroxelRunArgs& args,
+                      std::vector<demo::ImageF>& out, std::string& error) {
+    out.assign(frames.size(), {});
+    for (size_t k = 0; k < frames.size(); ++k)
+        if (!runner.reference(sceneAt(frames[k]), args.referenceSteps, args.motionErrorStride, out[k], error))
+            return false;
+    return true;
+}
+
+// One scene in motion (froxel_run's part of docs/accuracy-cost/README.md, "In motion"): the camera moving
+// with temporal off and on; with `lightMoves`, the light moving and the light switched off too.
+bool measureMotion(Runner& runner, const std::string& name, const demo::Scene& sceneIn,
+                   const Setting& setting, const std::unique_ptr<Result>& sweep, bool lightMoves,
+                   const demo::ImageF& stillReference, const FroxelRunArgs& args, Progress& progress,
+                   MotionInfo& info, std::vector<MotionResult>& motion,
+                   std::vector<SwitchOffResult>& switchOff, std::string& error) {
+    const MotionOptions& mo = args.motionOptions;
+    const std::vector<uint32_t> frames = measuredFrames(mo);
+    const uint32_t length = sequenceLength(mo);
+    demo::Scene scene = sceneIn;
+    if (mo.temporalBlend > 0.0f) scene.froxelFog.temporal.blendWeight = mo.temporalBlend;
+    auto fail = [&](const std::string& what) {
+        error = name + " in motion, " + what + ": " + error;
+        return false;
+    };
+    auto timed = [&](const std::string& what, auto&& body) {
+        const auto start = std::chrono::steady_clock::now();
+        const bool ok = body();
+        info.referenceSeconds.emplace_back(
+            name + " " + what,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        return ok;
+    };
+    std::unique_ptr<Result> still[2];  // the still camera's timing and errors, temporal off and on
+    for (MotionKind kind : {MotionKind::Camera, MotionKind::Light}) {
+        if (kind == MotionKind::Light && !lightMoves) continue;
+        std::function<demo::Scene(uint32_t)> sceneOf = [&, kind](uint32_t n) {
+            return kind == MotionKind::Camera ? cameraMotionScene(scene, mo, n)
+                                              : lightMotionScene(scene, mo, n);
+        };
+        progress.show(name + " in motion (" + motionKindName(kind) + "): " + std::to_string(frames.size()) +
+                      " CPU references");
+        std::vector<demo::ImageF> references;
+        if (!timed(motionKindName(kind),
+                   [&] { return motionReferences(runner, sceneOf, frames, args, references, error); }))
+            return fail("reference");
+        if (!runner.setScene(scene, error)) return fail("setScene");
+        progress.advance();
+        for (bool temporal : {false, true}) {
+            demo::Scene s = scene;
+            s.froxelFog.temporal.enabled = temporal;
+            MotionResult m;
+            m.setting = setting;
+            m.temporal = temporal;
+            m.blendWeight = s.froxelFog.temporal.blendWeight;
+            m.kind = kind;
+            m.frames = frames;
+            progress.show(name + " in motion (" + motionKindName(kind) + ") temporal " +
+                          (temporal ? "on" : "off"));
+            // The still camera: measured once per temporal setting; the sweep's row when it ran these
+            // temporal settings (the scene's own).
+            const postfx::TemporalSettings& own = sceneIn.froxelFog.temporal;
+            if (!still[temporal] && sweep && own.enabled == temporal &&
+                (!temporal || own.blendWeight == s.froxelFog.temporal.blendWeight))
+                still[temporal] = std::make_unique<Result>(*sweep);
+            if (!still[temporal]) {
+                still[temporal] = std::make_unique<Result>();
+                if (!runner.measure(s, Method::Froxel, 0.0f, stillReference, args.errorStride,
+                                    still[temporal]->timing, still[temporal]->error, error))
+                    return fail("still");
+            }
+            m.timing = still[temporal]->timing;
+            m.still = still[temporal]->error;
+            auto sceneAt = [&](uint32_t n) {
+                demo::Scene f = sceneOf(n);
+                f.froxelFog.temporal.enabled = temporal;
+                return f;
+            };
+            if (!runner.sequence(
+                    length, sceneAt, frames, args.motionErrorStride,
+                    [&](uint32_t, const std::vector<float>& image) {
+                        m.errors.push_back(Runner::compare(image, references[m.errors.size()]));
+                        return true;
+                    },
+                    error))
+                return fail("sequence");
+            m.shadowMatrixChanges = runner.shadowMatrixChanges(sceneAt, length);
+            motion.push_back(std::move(m));
+            progress.advance();
+        }
+    }
+    if (!lightMoves) return true;
+
+    // The light switched off at frame F = warm-up (the camera still): references with and without it, then
+    // per temporal setting the sequence (frames F - 1 .. F + switchOffFrames - 1) and its control (the light
+    // dimmed to invisible before F, off from F: the same history rejected in the same frames).
+    progress.show(name + " light " + std::to_string(mo.light) + " switched off: 2 CPU references");
+    const demo::Scene off = lightOffScene(scene, mo.light), dimmed = dimmedLightScene(scene, mo.light);
+    demo::ImageF with, without;
+    if (!timed("switch-off", [&] {
+            return runner.reference(scene, args.referenceSteps, args.motionErrorStride, with, error) &&
+                   runner.reference(off, args.referenceSteps, args.motionErrorStride, without, error);
+        }))
+        return fail("switch-off reference");
+    if (!runner.setScene(scene, error)) return fail("setScene");
+    progress.advance();
+    const uint32_t offFrame = std::max(mo.warmup, 1u);
+    std::vector<uint32_t> readback;
+    for (uint32_t n = offFrame - 1; n < offFrame + mo.switchOffFrames; ++n)
+        readback.push_back(n);
+    const std::vector<uint8_t> touched = touchedPixels(with.rgba, without.rgba, kTouchedTolerance);
+    for (bool temporal : {false, true}) {
+        SwitchOffResult r;
+        r.setting = setting;
+        r.temporal = temporal;
+        r.blendWeight = scene.froxelFog.temporal.blendWeight;
+        r.light = mo.light;
+        r.offFrame = offFrame;
+        r.touchedPixels = uint64_t(std::count(touched.begin(), touched.end(), uint8_t(1)));
+        progress.show(name + " light " + std::to_string(mo.light) + " switched off, temporal " +
+                      (temporal ? "on" : "off"));
+        // [0]: switched off at F, [1]: the control (dimmed, then off), [2]: never on
+        std::vector<std::vector<float>> images[3];
+        for (int control = 0; control < 3; ++control) {
+            auto sceneAt = [&](uint32_t n) {
+                demo::Scene f = n >= offFrame || control == 2 ? off : control ? dimmed : scene;
+                f.froxelFog.temporal.enabled = temporal;
+                return f;
+            };
+            if (!runner.sequence(
+                    offFrame + mo.switchOffFrames, sceneAt, readback, args.motionErrorStride,
+                    [&](uint32_t, const std::vector<float>& image) {
+                        images[control].push_back(image);
+                        return true;
+                    },
+                    error))
+                return fail("switch-off sequence");
+        }
+        r.lastLitRemaining = remainingContribution(images[0][0], with.rgba, without.rgba, touched);
+        r.lastLitLeftover =
+            leftoverContribution(images[0][0], images[1][0], with.rgba, without.rgba, touched);
+        for (size_t k = 1; k < readback.size(); ++k) {
+            r.remaining.push_back(remainingContribution(images[0][k], with.rgba, without.rgba, touched));
+            r.controlRemaining.push_back(
+                remainingContribution(images[1][k], with.rgba, without.rgba, touched));
+            r.leftover.push_back(
+                leftoverContribution(images[0][k], images[1][k], with.rgba, without.rgba, touched));
+            r.neverLitRemaining.push_back(
+                remainingContribution(images[2][k], with.rgba, without.rgba, touched));
+        }
+        switchOff.push_back(std::move(r));
+        progress.advance();
+    }
+    return true;
+}
 
 }  // namespace
 
@@ -59,6 +245,30 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
     for (const ScenePlan& p : plans)
         info.sceneNoise.emplace_back(p.name, p.noiseSize);
 
+    // The in-motion scenes.
+    std::vector<std::string> motionScenes;
+    if (args.motion) {
+        motionScenes = args.motionScenes;
+        if (motionScenes.empty())
+            for (const ScenePlan& p : plans)
+                if ((p.name == args.targetScene && !args.motionQuick) || froxelLightCount(p.froxel) > 0)
+                    motionScenes.push_back(p.name);
+    }
+    auto inMotion = [&](const std::string& name) {
+        return std::count(motionScenes.begin(), motionScenes.end(), name) > 0;
+    };
+    const MotionOptions& mo = args.motionOptions;
+    auto lightMoves = [&](const ScenePlan& p) {
+        return inMotion(p.name) && mo.light < p.froxel.lights.size() &&
+               froxelLightCount(lightOffScene(p.froxel, mo.light)) < froxelLightCount(p.froxel);
+    };
+    MotionInfo motionInfo;
+    motionInfo.options = mo;
+    motionInfo.errorStride = args.motionErrorStride;
+    motionInfo.referenceSteps = args.referenceSteps;
+    std::vector<MotionResult> motion;
+    std::vector<SwitchOffResult> switchOff;
+
     size_t total = 1;  // the bandwidth
     for (ScenePlan& p : plans) {
         p.shadows = runner->hasShadowMap(p.froxel);
@@ -67,6 +277,8 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
         if (p.name == args.targetScene)
             for (uint32_t n : args.lightCounts)
                 total += n ? 2 : 1;
+        if (inMotion(p.name)) total += 3;   // references, temporal off and on
+        if (lightMoves(p)) total += 3 + 3;  // the same for the moving light; switched off
     }
     std::fprintf(stderr, "postfx-bench --froxel on %s, %ux%u, %zu measurements\n", info.device.c_str(),
                  info.width, info.height, total);
@@ -145,6 +357,13 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
                 }
             }
 
+            if (inMotion(p.name) &&
+                !measureMotion(*runner, p.name, withFroxelKnobs(p.froxel, motionBase(base, args)),
+                               motionBase(base, args), sweepRow(results, motionBase(base, args)),
+                               lightMoves(p), reference, args, progress, motionInfo, motion, switchOff,
+                               error))
+                return fail(error);
+
             if (p.name != args.targetScene) continue;
             // The light-count sweep: timed only (an empty reference), at args.lightGrid.
             const postfx::FroxelFogSettings defaults;
@@ -178,8 +397,13 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
     std::error_code ec;
     std::filesystem::create_directories(args.out, ec);
     if (ec) return fail("cannot create '" + args.out + "': " + ec.message());
-    const std::string csv = args.out + "/results.csv", md = args.out + "/results.md";
-    if (!writeFroxelCsv(csv, info, results, error) || !writeFroxelMarkdown(md, info, results, error))
+    const std::string csv = args.out + "/results.csv", md = args.out + "/results.md",
+                      motionCsv = args.out + "/motion.csv";
+    if (!writeFroxelCsv(csv, info, results, error) ||
+        !writeFroxelMarkdown(md, info, results, error,
+                             froxelMotionMarkdown(info, motionInfo, motion, switchOff)) ||
+        (!(motion.empty() && switchOff.empty()) &&
+         !writeMotionCsv(motionCsv, info, motionInfo, motion, switchOff, error)))
         return fail(error);
 
     std::printf(
@@ -199,7 +423,9 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
             percent(r.error[2].relativeRmse).c_str(), pareto);
     }
     std::printf("%s", froxelSummary(info, results).c_str());
-    std::printf("wrote %s, %s\n", csv.c_str(), md.c_str());
+    std::printf("%s", motionSummary(info, results, motion, switchOff).c_str());
+    std::printf("wrote %s, %s%s\n", csv.c_str(), md.c_str(),
+                motion.empty() && switchOff.empty() ? "" : (", " + motionCsv).c_str());
     if (!messages.empty()) {
         for (const std::string& m : messages)
             std::fprintf(stderr, "validation: %s\n", m.c_str());

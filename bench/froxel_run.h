@@ -3,6 +3,7 @@
 #pragma once
 
 #include "froxel_scenes.h"
+#include "motion.h"
 #include "runner.h"
 
 #include <postfx/froxel_fog.h>
@@ -36,6 +37,15 @@ struct FroxelRunArgs {
     std::string targetScene;                   // the targets' scene (--froxel-target-scene)
     double bandwidth = NAN;                    // --bandwidth [GB/s]; NaN: the measured copy
     uint64_t copyBytes = uint64_t(256) << 20;  // the bandwidth copy's size
+    // In motion (bench/motion.h), at lightGrid with the scene's lights: the camera moving on motionScenes
+    // (empty: the target scene and the scenes with lights; with motionQuick only those with lights), the
+    // light moving and switched off on those of them with light motionOptions.light; temporal off and on. The
+    // references at motionErrorStride.
+    bool motion = true;
+    std::vector<std::string> motionScenes;
+    MotionOptions motionOptions;
+    uint32_t motionErrorStride = 1;
+    bool motionQuick = false;  // the default motionScenes: only those with lights (--quick)
 };
 
 // `commandLine` and `date` (UTC, ISO 8601) go into the report's header. Returns the exit status.

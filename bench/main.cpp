@@ -7,6 +7,8 @@
 // (bench/froxel_run.h).
 #include "conclusions.h"
 #include "froxel_run.h"
+#include "motion.h"
+#include "motion_report.h"
 #include "progress.h"
 #include "report.h"
 #include "runner.h"
@@ -40,6 +42,10 @@ const char* kUsage =
     "                    [--shadow-kernels a,b,...] [--step-lengths a,b,...] [--preset-scene S] "
     "[--preset-budgets l,m,h,u]\n"
     "                    [--no-presets] [--no-baselines] [--quick] [--validation]\n"
+    "                    [--no-motion] [--motion-scenes a,b,...] [--motion-warmup W] [--motion-frames K]\n"
+    "                    [--motion-frame-step S] [--motion-error-stride K] [--motion-speed M/S]\n"
+    "                    [--motion-yaw-rate DEG/S] [--motion-light N] [--switch-off-frames M]\n"
+    "                    [--temporal-blend W]\n"
     "       postfx-bench --froxel [--froxel-grids XxY,...] [--froxel-slices a,b,...] "
     "[--froxel-distributions power,log]\n"
     "                    [--froxel-tricubic off,on] [--froxel-lights a,b,...] [--froxel-target-scene S] "
@@ -75,6 +81,23 @@ const char* kUsage =
     "  --no-presets           do not measure the quality presets (low, medium, high, ultra) as such\n"
     "  --no-baselines         postfx's fog only\n"
     "  --validation           Vulkan validation layer with synchronization validation; any message fails\n"
+    "in motion (docs/accuracy-cost/README.md, \"In motion\"): each preset with temporal off and on (froxel:\n"
+    "the light-count sweep's grid) on sequences that start with a camera cut: the camera walking and "
+    "turning\n"
+    "(froxel: also a light moving, and a light switched off); after a warm-up, frames against their own\n"
+    "references. Writes motion.csv and a section of results.md.\n"
+    "  --no-motion            skip it\n"
+    "  --motion-scenes LIST   [the run's scenes but *_unskipped; froxel: the target scene and the scenes\n"
+    "                         with lights; quick: the preset scene; froxel: the scenes with lights]\n"
+    "  --motion-warmup W      frames before the first measured one [32; quick: 4]\n"
+    "  --motion-frames K      frames measured, each against its own reference [8; quick: 2]\n"
+    "  --motion-frame-step S  every S-th frame from the warm-up on [4; quick: 2]\n"
+    "  --motion-error-stride K  the motion references' stride [--error-stride]\n"
+    "  --motion-speed V       the camera's (and the light's) speed [m/s] [1.4]\n"
+    "  --motion-yaw-rate R    the camera's turn [deg/s], positive left [20]\n"
+    "  --motion-light N       froxel: the light that moves and is switched off [0]\n"
+    "  --switch-off-frames M  froxel: frames measured from the switch-off on [8; quick: 4]\n"
+    "  --temporal-blend W     the temporal-on rows' blend weight in (0, 1] [the fog's own]\n"
     "froxel fog (--froxel; docs/accuracy-cost/README.md, \"Froxel fog\"): each scene with effects.fog runs\n"
     "as its froxel version (the same medium in effects.froxel_fog) with the ray-marched fog's rows beside "
     "it\n"
@@ -124,6 +147,12 @@ struct Args {
     std::string froxelTargetScene;
     double bandwidth = NAN;
     bool froxelQuick = false;  // --froxel --quick
+    // In motion
+    bool motion = true;
+    std::vector<std::string> motionScenes;  // empty: the default
+    bench::MotionOptions motionOptions;
+    uint32_t motionErrorStride = 0;  // 0: --error-stride
+    bool motionQuick = false;        // --quick: by default fewer scenes in motion
 };
 
 // --froxel-distributions / --froxel-tricubic: each item one of two words, at least one.
@@ -146,7 +175,8 @@ Args parseArgs(int argc, char** argv) {
     bool sizeGiven = false, warmupGiven = false, warmupMsGiven = false, coldGiven = false,
          framesGiven = false, refGiven = false, stepsGiven = false, noiseGiven = false, lengthsGiven = false,
          scalesGiven = false, scenesGiven = false, outGiven = false, gridsGiven = false, slicesGiven = false,
-         lightsGiven = false;
+         lightsGiven = false, motionWarmupGiven = false, motionFramesGiven = false, motionStepGiven = false,
+         switchOffGiven = false;
     const auto toFloats = [](const std::vector<double>& values) {
         return std::vector<float>(values.begin(), values.end());
     };
@@ -267,6 +297,37 @@ Args parseArgs(int argc, char** argv) {
         } else if (a == "--bandwidth") {
             args.bandwidth = cli::numberOption(
                 a, value(), [](double v) { return v > 0; }, "a number > 0 [GB/s]");
+        } else if (a == "--no-motion") {
+            args.motion = false;
+        } else if (a == "--motion-scenes") {
+            args.motionScenes = cli::splitList(value());
+            if (args.motionScenes.empty()) throw cli::UsageError{"--motion-scenes is empty"};
+        } else if (a == "--motion-warmup") {
+            cli::uintOption(a, value(), 0, 100000, args.motionOptions.warmup);
+            motionWarmupGiven = true;
+        } else if (a == "--motion-frames") {
+            cli::uintOption(a, value(), 1, 10000, args.motionOptions.frames);
+            motionFramesGiven = true;
+        } else if (a == "--motion-frame-step") {
+            cli::uintOption(a, value(), 1, 10000, args.motionOptions.frameStep);
+            motionStepGiven = true;
+        } else if (a == "--motion-error-stride") {
+            cli::uintOption(a, value(), 1, 4096, args.motionErrorStride);
+        } else if (a == "--motion-speed") {
+            const double v = cli::numberOption(
+                a, value(), [](double x) { return x >= 0 && x <= 1000; }, "a speed in 0..1000 [m/s]");
+            args.motionOptions.cameraSpeed = args.motionOptions.lightSpeed = float(v);
+        } else if (a == "--motion-yaw-rate") {
+            args.motionOptions.yawRateDeg = float(cli::numberOption(
+                a, value(), [](double x) { return std::abs(x) <= 3600; }, "a rate in -3600..3600 [deg/s]"));
+        } else if (a == "--motion-light") {
+            cli::uintOption(a, value(), 0, postfx::kMaxLocalLights - 1, args.motionOptions.light);
+        } else if (a == "--temporal-blend") {
+            args.motionOptions.temporalBlend = float(cli::numberOption(
+                a, value(), [](double x) { return x > 0 && x <= 1; }, "a weight in (0, 1]"));
+        } else if (a == "--switch-off-frames") {
+            cli::uintOption(a, value(), 1, 10000, args.motionOptions.switchOffFrames);
+            switchOffGiven = true;
         } else {
             throw cli::UsageError{"unknown argument '" + a + "' (see --help)"};
         }
@@ -304,6 +365,11 @@ Args parseArgs(int argc, char** argv) {
         if (!noiseGiven) args.noiseSizes = {32};
         if (!scalesGiven) args.scales = {1.0f, 0.5f};
         if (!lengthsGiven) args.stepLengths = {4.0f, 1.0f};
+        if (!motionWarmupGiven) args.motionOptions.warmup = 4;
+        if (!motionFramesGiven) args.motionOptions.frames = 2;
+        if (!motionStepGiven) args.motionOptions.frameStep = 2;
+        if (!switchOffGiven) args.motionOptions.switchOffFrames = 4;
+        args.motionQuick = true;
     }
     if (args.froxel) {
         // The fog sweep's preset scene is not used.
@@ -314,6 +380,10 @@ Args parseArgs(int argc, char** argv) {
     else if (!std::count(args.scenes.begin(), args.scenes.end(), args.presetScene))
         throw cli::UsageError{"--preset-scene '" + args.presetScene + "' is not in --scenes"};
     if (args.errorStride == 0) args.errorStride = std::max(1u, args.runner.width / 480);
+    if (args.motionErrorStride == 0) args.motionErrorStride = args.errorStride;
+    for (const std::string& scene : args.motionScenes)
+        if (!std::count(args.scenes.begin(), args.scenes.end(), scene))
+            throw cli::UsageError{"--motion-scenes: '" + scene + "' is not in --scenes"};
     std::sort(args.steps.begin(), args.steps.end());
     std::sort(args.noiseSizes.begin(), args.noiseSizes.end());
     std::sort(args.shadowKernels.begin(), args.shadowKernels.end());
@@ -384,6 +454,11 @@ int runFroxel(const Args& args, const std::string& command) {
     f.lightCounts = args.froxelLights;
     f.targetScene = args.froxelTargetScene;
     f.bandwidth = args.bandwidth;
+    f.motion = args.motion;
+    f.motionScenes = args.motionScenes;
+    f.motionOptions = args.motionOptions;
+    f.motionErrorStride = args.motionErrorStride;
+    f.motionQuick = args.motionQuick;
     // The copy bandwidth's buffers: 256 MiB (far beyond the caches) on a GPU, 16 MiB at a small size
     // (lavapipe's device memory is the CI machine's).
     if (args.runner.width * uint64_t(args.runner.height) < 640 * 360) f.copyBytes = uint64_t(16) << 20;
@@ -417,6 +492,36 @@ int run(const Args& args, const std::string& command) {
         }
         plans.push_back(std::move(p));
     }
+    // The in-motion scenes: --motion-scenes, else the run's but an S_unskipped twin of a scene S of the run
+    // (the same image); none without the presets (motion measures them).
+    std::vector<std::string> motionScenes;
+    if (args.motion && args.presets) {
+        motionScenes = args.motionScenes;
+        if (motionScenes.empty() && args.motionQuick) {
+            motionScenes = {args.presetScene};  // --quick: the preset scene only
+        } else if (motionScenes.empty()) {
+            const std::string suffix = bench::kUnskippedSuffix;
+            for (const std::string& name : args.scenes) {
+                const bool twin = name.size() > suffix.size() &&
+                                  name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+                                  std::count(args.scenes.begin(), args.scenes.end(),
+                                             name.substr(0, name.size() - suffix.size()));
+                if (!twin) motionScenes.push_back(name);
+            }
+        }
+    }
+    auto inMotion = [&](const std::string& name) {
+        return std::count(motionScenes.begin(), motionScenes.end(), name) > 0;
+    };
+    const bench::MotionOptions& motionOptions = args.motionOptions;
+    const std::vector<uint32_t> motionFrames = bench::measuredFrames(motionOptions);
+    const uint32_t motionLength = bench::sequenceLength(motionOptions);
+    bench::MotionInfo motionInfo;
+    motionInfo.options = motionOptions;
+    motionInfo.errorStride = args.motionErrorStride;
+    motionInfo.referenceSteps = args.referenceSteps;
+    std::vector<bench::MotionResult> motion;
+
     const bool baselines = args.baselines && bench::Runner::hasBaselines();
     if (args.baselines && !baselines)
         std::fprintf(stderr,
@@ -445,6 +550,7 @@ int run(const Args& args, const std::string& command) {
             total += 1 + p.kernelsAt(noise, args.shadowKernels).size() * args.steps.size() * 2 *
                              args.scales.size();
         total += presets + (baselines ? 2 * args.stepLengths.size() : 0);
+        if (inMotion(p.name)) total += 1 + 2 * presets;  // the references, then each preset off and on
     }
     std::fprintf(stderr, "postfx-bench on %s, %ux%u, %zu measurements\n", info.device.c_str(), info.width,
                  info.height, total);
@@ -538,6 +644,79 @@ int run(const Args& args, const std::string& command) {
                     setting.shadowKernel = p.shadows ? applied.shadowKernel : 0;
                     if (!measure(s, setting)) return fail(error);
                 }
+                // In motion: the references of the measured frames, then each preset with temporal off and
+                // on: timed still (as the sweep), then its sequence.
+                if (inMotion(p.name) && presets > 0 && noise == p.baselineNoise) {
+                    progress.show(p.name + " in motion: " + std::to_string(motionFrames.size()) +
+                                  " CPU references");
+                    const auto start = std::chrono::steady_clock::now();
+                    std::vector<demo::ImageF> references(motionFrames.size());
+                    for (size_t k = 0; k < motionFrames.size(); ++k)
+                        if (!runner->reference(
+                                bench::cameraMotionScene(scene, motionOptions, motionFrames[k]),
+                                args.referenceSteps, args.motionErrorStride, references[k], error))
+                            return fail(p.name + " in motion, reference: " + error);
+                    motionInfo.referenceSeconds.emplace_back(
+                        p.name + " camera",
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+                    if (!runner->setScene(scene, error)) return fail(p.name + ": " + error);
+                    progress.advance();
+                    for (size_t k = 0; k < presets; ++k) {
+                        for (bool temporal : {false, true}) {
+                            demo::Scene s = scene;
+                            s.fog.quality = kPresets[k];
+                            s.fog.temporal.enabled = temporal;
+                            if (motionOptions.temporalBlend > 0.0f)
+                                s.fog.temporal.blendWeight = motionOptions.temporalBlend;
+                            const postfx::FogSettings applied = postfx::applyFogQuality(s.fog, s.fog.quality);
+                            bench::MotionResult m;
+                            m.setting = base;
+                            m.setting.preset = demo::fogQualityName(kPresets[k]);
+                            m.setting.steps = applied.steps;
+                            m.setting.jitter = applied.jitter;
+                            m.setting.resolutionScale = applied.resolutionScale;
+                            m.setting.shadowKernel = p.shadows ? applied.shadowKernel : 0;
+                            m.temporal = temporal;
+                            m.blendWeight = s.fog.temporal.blendWeight;
+                            m.kind = bench::MotionKind::Camera;
+                            const std::string name = p.name + " in motion " + m.setting.label() +
+                                                     (temporal ? " temporal=on" : " temporal=off");
+                            progress.show(name);
+                            // The preset's row measured above is this still measurement when the scene's own
+                            // temporal settings are these.
+                            const bench::Result* row = nullptr;
+                            for (const bench::Result& r : results)
+                                if (r.setting.scene == p.name && r.setting.method == bench::Method::Ours &&
+                                    r.setting.preset == m.setting.preset && r.setting.noiseSize == noise)
+                                    row = &r;
+                            const postfx::TemporalSettings& own = scene.fog.temporal;
+                            if (row && own.enabled == temporal &&
+                                (!temporal || own.blendWeight == s.fog.temporal.blendWeight)) {
+                                m.timing = row->timing;
+                                m.still = row->error;
+                            } else if (!runner->measure(s, bench::Method::Ours, 0.0f, reference,
+                                                        args.errorStride, m.timing, m.still, error)) {
+                                return fail(name + ": " + error);
+                            }
+                            auto sceneAt = [&](uint32_t n) {
+                                return bench::cameraMotionScene(s, motionOptions, n);
+                            };
+                            m.frames = motionFrames;
+                            if (!runner->sequence(
+                                    motionLength, sceneAt, motionFrames, args.motionErrorStride,
+                                    [&](uint32_t, const std::vector<float>& image) {
+                                        m.errors.push_back(
+                                            bench::Runner::compare(image, references[m.errors.size()]));
+                                        return true;
+                                    },
+                                    error))
+                                return fail(name + ": " + error);
+                            m.shadowMatrixChanges = runner->shadowMatrixChanges(sceneAt, motionLength);
+                            motion.push_back(std::move(m));
+                            progress.advance();
+                        }
+                    }
+                }
                 if (baselines && noise == p.baselineNoise) {
                     for (bench::Method method :
                          {bench::Method::SeedAsWritten, bench::Method::SeedFixedRiemann}) {
@@ -563,9 +742,12 @@ int run(const Args& args, const std::string& command) {
     std::filesystem::create_directories(args.out, ec);
     if (ec) return fail("cannot create '" + args.out + "': " + ec.message());
     const std::string csv = args.out + "/results.csv", md = args.out + "/results.md",
-                      svg = args.out + "/plot.svg";
-    if (!bench::writeCsv(csv, info, results, error) || !bench::writeMarkdown(md, info, results, error) ||
-        !bench::writeSvg(svg, info, results, error))
+                      svg = args.out + "/plot.svg", motionCsv = args.out + "/motion.csv";
+    if (!bench::writeCsv(csv, info, results, error) ||
+        !bench::writeMarkdown(md, info, results, error,
+                              bench::motionMarkdown(info, motionInfo, results, motion)) ||
+        !bench::writeSvg(svg, info, results, error) ||
+        (!motion.empty() && !bench::writeMotionCsv(motionCsv, info, motionInfo, motion, {}, error)))
         return fail(error);
 
     std::printf("postfx-bench: %s, %ux%u, error stride %u, reference %u steps\n", info.device.c_str(),
@@ -582,7 +764,9 @@ int run(const Args& args, const std::string& command) {
                     r.pareto1 ? "  pareto" : "");
     }
     std::printf("%s", bench::conclusionsSummary(info, results).c_str());
-    std::printf("wrote %s, %s, %s\n", csv.c_str(), md.c_str(), svg.c_str());
+    std::printf("%s", bench::motionSummary(info, results, motion, {}).c_str());
+    std::printf("wrote %s, %s, %s%s\n", csv.c_str(), md.c_str(), svg.c_str(),
+                motion.empty() ? "" : (", " + motionCsv).c_str());
     if (!messages.empty()) {
         for (const std::string& m : messages)
             std::fprintf(stderr, "validation: %s\n", m.c_str());

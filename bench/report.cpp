@@ -203,7 +203,7 @@ bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Re
 }
 
 bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
-                   std::string& error) {
+                   std::string& error, const std::string& sections) {
     std::ostringstream out;
     out << "# Accuracy–cost results\n\n"
         << "Written by `postfx-bench`; how to run it and what each number means: "
@@ -229,6 +229,7 @@ bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vect
         out << ".\n\n";
     }
     out << conclusionsMarkdown(info, results);
+    out << sections;
 
     for (const std::string& scene : sceneOrder(results)) {
         const std::vector<const Result*> rows = sortedRows(results, scene);

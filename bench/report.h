@@ -16,8 +16,10 @@ const std::vector<std::string>& csvColumns();
 
 bool writeCsv(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
               std::string& error);
+// results.md; `sections` (markdown: the in-motion section, bench/motion_report.h) follows the run's
+// conclusions.
 bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
-                   std::string& error);
+                   std::string& error, const std::string& sections = "");
 bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Result>& results,
               std::string& error);
 

@@ -3,6 +3,7 @@
 #include "image_compare.h"
 #include "stats.h"
 
+#include "host/camera_math.h"
 #include "host/gpu_resources.h"
 #include "postfx-bench_spirv.h"
 
@@ -69,7 +70,23 @@ struct Runner::Impl {
     bool submit(size_t slot, const std::function<bool(VkCommandBuffer)>& record, std::string& error);
     bool wait(size_t slot, std::string& error);
     void recordReadback(VkCommandBuffer cmd);
+    // The read-back frame's pixels (i · stride, j · stride) as RGBA floats, w × h of them.
+    void readStrided(uint32_t stride, uint32_t w, uint32_t h, std::vector<float>& out) const;
 };
+
+void Runner::Impl::readStrided(uint32_t stride, uint32_t w, uint32_t h, std::vector<float>& out) const {
+    const uint32_t width = options.width;
+    const auto* half = static_cast<const uint16_t*>(readback.mapped);
+    out.resize(size_t(w) * h * 4);
+    for (uint32_t j = 0; j < h; ++j) {
+        for (uint32_t i = 0; i < w; ++i) {
+            const size_t src = (size_t(j) * stride * width + size_t(i) * stride) * 4;
+            const size_t dst = (size_t(j) * w + i) * 4;
+            for (size_t c = 0; c < 4; ++c)
+                out[dst + c] = glm::unpackHalf1x16(half[src + c]);
+        }
+    }
+}
 
 Runner::Impl::~Impl() {
     if (!host) return;
@@ -368,7 +385,7 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
     }
     m.nextFrame = (m.nextFrame + kJitterPeriod - 1) / kJitterPeriod * kJitterPeriod;
     std::vector<double> sum(size_t(w) * h * 4, 0.0);
-    std::vector<float> image(sum.size());
+    std::vector<float> image(sum.size()), frame;
     const uint32_t frames = kAveragedFrames.back();
     for (uint32_t k = 0; k < frames; ++k) {
         const uint64_t frameIndex = m.nextFrame++;
@@ -382,24 +399,92 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
                 error) ||
             !m.wait(slot, error))
             return false;
-        const auto* half = static_cast<const uint16_t*>(m.readback.mapped);
-        for (uint32_t j = 0; j < h; ++j) {
-            for (uint32_t i = 0; i < w; ++i) {
-                const size_t src = (size_t(j) * stride * width + size_t(i) * stride) * 4;
-                const size_t dst = (size_t(j) * w + i) * 4;
-                for (size_t c = 0; c < 4; ++c)
-                    sum[dst + c] += double(glm::unpackHalf1x16(half[src + c]));
-            }
-        }
+        m.readStrided(stride, w, h, frame);
+        for (size_t i = 0; i < sum.size(); ++i)
+            sum[i] += double(frame[i]);
         for (size_t a = 0; a < kAveragedFrames.size(); ++a) {
             if (k + 1 != kAveragedFrames[a]) continue;
             for (size_t i = 0; i < sum.size(); ++i)
                 image[i] = float(sum[i] / double(k + 1));
-            const test::ImageStats s =
-                test::compareImages(image, reference.rgba, w, h, kPixelTolerance, kMagnitudeFloor);
-            errors[a] = {s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
+            errors[a] = compare(image, reference);
         }
     }
+    return true;
+}
+
+uint32_t Runner::shadowMatrixChanges(const std::function<demo::Scene(uint32_t)>& sceneAt,
+                                     uint32_t frames) const {
+    auto changed = [](const glm::mat4& a, const glm::mat4& b) {
+        double scale = 0.0, difference = 0.0;
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 4; ++r) {
+                scale = std::max({scale, std::abs(double(a[c][r])), std::abs(double(b[c][r]))});
+                difference = std::max(difference, std::abs(double(a[c][r]) - double(b[c][r])));
+            }
+        return difference > 1e-6 * scale;
+    };
+    uint32_t changes = 0;
+    glm::mat4 last{1.0f};
+    for (uint32_t n = 0; n < frames; ++n) {
+        const demo::Scene scene = sceneAt(n);
+        if (!hasShadowMap(scene)) return 0;
+        const demo::ShadowFit fit =
+            demo::fitShadowMap(scene, impl_->renderer->shadowMap().image.extent.width);
+        if (n > 0 && changed(last, fit.viewProj)) ++changes;
+        if (n == 0 || changed(last, fit.viewProj)) last = fit.viewProj;
+    }
+    return changes;
+}
+
+ErrorStats Runner::compare(const std::vector<float>& image, const demo::ImageF& reference) {
+    const test::ImageStats s = test::compareImages(image, reference.rgba, reference.width, reference.height,
+                                                   kPixelTolerance, kMagnitudeFloor);
+    return {s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
+}
+
+bool Runner::sequence(uint32_t frames, const std::function<demo::Scene(uint32_t)>& sceneAt,
+                      const std::vector<uint32_t>& readback, uint32_t stride,
+                      const std::function<bool(uint32_t, const std::vector<float>&)>& onFrame,
+                      std::string& error) {
+    Impl& m = *impl_;
+    if (stride == 0) {
+        error = "stride 0";
+        return false;
+    }
+    const uint32_t w = (m.options.width + stride - 1) / stride, h = (m.options.height + stride - 1) / stride;
+    // Every frame in flight done: the sequence's indices start again at 0 (each slot's fence is the frame
+    // that last used the slot's command buffer and postfx's per-slot resources).
+    for (size_t slot = 0; slot < kFramesInFlight; ++slot)
+        if (!m.wait(slot, error)) return false;
+    std::vector<float> image;
+    size_t next = 0;  // into readback
+    for (uint32_t n = 0; n < frames; ++n) {
+        const size_t slot = n % kFramesInFlight;
+        const bool read = next < readback.size() && readback[next] == n;
+        const demo::Scene scene = sceneAt(n);
+        if (!m.wait(slot, error) || !m.submit(
+                                        slot,
+                                        [&](VkCommandBuffer cmd) {
+                                            return m.recordFrame(cmd, scene, Method::Ours, 0.0f, n, slot,
+                                                                 read, error);
+                                        },
+                                        error))
+            return false;
+        if (!read) continue;
+        ++next;
+        if (!m.wait(slot, error)) return false;
+        m.readStrided(stride, w, h, image);
+        if (!onFrame(n, image)) return false;
+    }
+    if (next != readback.size()) {
+        error = "sequence: a read-back frame is not below " + std::to_string(frames) + " or not ascending";
+        return false;
+    }
+    for (size_t slot = 0; slot < kFramesInFlight; ++slot)
+        if (!m.wait(slot, error)) return false;
+    // Later frames continue above every index used so far, from a multiple of the jitter period.
+    m.nextFrame = (m.nextFrame + kJitterPeriod) / kJitterPeriod * kJitterPeriod;
+    m.idleSince = true;
     return true;
 }
 

@@ -10,6 +10,7 @@
 #include "scene/scene.h"
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -64,6 +65,27 @@ public:
     // scene.fog's medium.
     bool measure(const demo::Scene& scene, Method method, float stepLength, const demo::ImageF& reference,
                  uint32_t stride, Timing& timing, std::array<ErrorStats, 3>& error, std::string& message);
+
+    // Renders a sequence of `frames` frames with frame indices 0 .. frames - 1 (index 0 is a camera cut,
+    // demo::Renderer's FrameInfo::cameraCut: postfx's temporal histories start anew), frame n being
+    // sceneAt(n) (camera, lights, fog; the geometry of the last setScene), two in flight, and hands each
+    // frame of `readback` (ascending, each < frames) to onFrame(n, rgba): its radiance at every `stride`-th
+    // pixel in x and y, the layout of reference() with that stride. Nothing is timed. The frames after it
+    // continue above the indices measure() used before.
+    bool sequence(uint32_t frames, const std::function<demo::Scene(uint32_t)>& sceneAt,
+                  const std::vector<uint32_t>& readback, uint32_t stride,
+                  const std::function<bool(uint32_t, const std::vector<float>&)>& onFrame,
+                  std::string& error);
+
+    // The frames n of a sequence (1 .. frames - 1, sceneAt(n) as for sequence()) at which the demo's shadow
+    // map matrix (demo::fitShadowMap, which follows the camera) differs from the one of the last such frame
+    // (at first frame 0's) by postfx's rule (an element by more than 1e-6 of the largest): postfx resets
+    // its temporal histories there. 0 when the frames have no shadow map.
+    uint32_t shadowMatrixChanges(const std::function<demo::Scene(uint32_t)>& sceneAt, uint32_t frames) const;
+
+    // The error of `image` (RGBA floats in a reference's layout) against `reference`, as measure() computes
+    // it.
+    static ErrorStats compare(const std::vector<float>& image, const demo::ImageF& reference);
 
     // The device's memory bandwidth as a copy of `bytes` between two device-local buffers moves it,
     // (bytes read + bytes written) / time [GB/s], the median of `repeats` timed copies after copies for

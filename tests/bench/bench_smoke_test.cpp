@@ -6,7 +6,9 @@
 // the markdown and SVG exist. GPU times are not checked (lavapipe's
 // mean nothing).
 // BenchFroxelSmoke does the same for `postfx-bench --froxel --quick` (its CSV's rows and passes, the
-// report's sections). ctest runs the two suites as two tests.
+// report's sections). Both check the in-motion measurement's motion.csv (every row, finite errors, the
+// sequences' references following the camera, the switched-off light gone) and its report sections.
+// ctest runs the two suites as two tests.
 // usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
 #include <gtest/gtest.h>
 
@@ -94,6 +96,14 @@ bool readCsv(const std::string& path, std::vector<std::string>& header, std::vec
     }
     return true;
 }
+
+// motion.csv (bench/motion_report.h).
+const std::vector<std::string> kMotionColumns = {
+    "scene",    "method",     "setting",       "preset",      "temporal", "blend_weight",
+    "motion",   "frame",      "gpu_ms_median", "temporal_ms", "rel_rmse", "max_abs",
+    "frac_off", "non_finite", "rel_rmse_16",   "remaining",   "leftover", "shadow_matrix_changes",
+};
+const std::vector<std::string> kMotionFrames = {"4", "6"};  // --quick: warm-up 4, 2 frames, every 2nd
 
 class BenchSmoke : public ::testing::Test {
 protected:
@@ -282,6 +292,70 @@ TEST_F(BenchSmoke, ProposesThePresetsFromTheCsvRows) {
         << "the four proposals share one point";
 }
 
+// In motion (--quick: fog_default only, the preset scene): each preset with temporal off and on, a still row
+// and a row per measured frame; the temporal-off still row is the preset's row of results.csv; the frames'
+// errors finite, and without temporal close to the still camera's one-frame error (each frame has its
+// own reference: one that did not follow the camera would be far off).
+TEST_F(BenchSmoke, MotionCsvHasEveryPresetInMotion) {
+    ASSERT_EQ(status_, 0);
+    std::vector<std::string> header, motionHeader;
+    std::vector<Row> rows, motion;
+    bool sawDevice = false;
+    ASSERT_TRUE(readCsv(gOut + "/results.csv", header, rows, sawDevice));
+    ASSERT_TRUE(readCsv(gOut + "/motion.csv", motionHeader, motion, sawDevice)) << gOut << "/motion.csv";
+    EXPECT_TRUE(sawDevice);
+    ASSERT_EQ(motionHeader, kMotionColumns);
+    ASSERT_EQ(motion.size(), kPresets.size() * 2 * (1 + kMotionFrames.size()));
+    std::map<std::string, double> stillOne;  // "preset temporal" -> the still one-frame error
+    std::map<std::string, std::vector<double>> frames;
+    for (const Row& row : motion) {
+        const std::string what = row.at("preset") + " temporal=" + row.at("temporal") + " " +
+                                 row.at("motion") + " " + row.at("frame");
+        EXPECT_EQ(row.at("scene"), "fog_default") << what;
+        EXPECT_EQ(row.at("method"), "postfx-fog") << what;
+        EXPECT_EQ(row.at("blend_weight").empty(), row.at("temporal") == "0") << what;
+        const double error = number(row.at("rel_rmse"));
+        EXPECT_TRUE(std::isfinite(error) && error > 0.0 && error < 0.5) << what << ": " << row.at("rel_rmse");
+        EXPECT_EQ(row.at("non_finite"), "0") << what;
+        const std::string key = row.at("preset") + " " + row.at("temporal");
+        if (row.at("motion") == "still") {
+            EXPECT_GT(number(row.at("gpu_ms_median")), 0.0) << what;
+            EXPECT_EQ(std::isfinite(number(row.at("temporal_ms"))), row.at("temporal") == "1") << what;
+            stillOne[key] = error;
+            if (row.at("temporal") == "0") {
+                bool found = false;
+                for (const Row& r : rows)
+                    if (r.at("scene") == "fog_default" && r.at("preset") == row.at("preset")) {
+                        EXPECT_EQ(number(r.at("rel_rmse_1")), error) << what << ": the preset's row";
+                        EXPECT_EQ(number(r.at("rel_rmse_16")), number(row.at("rel_rmse_16"))) << what;
+                        found = true;
+                    }
+                EXPECT_TRUE(found) << what;
+            }
+            continue;
+        }
+        EXPECT_EQ(row.at("motion"), "camera") << what;
+        EXPECT_EQ(row.at("frame"), kMotionFrames[frames[key].size() % kMotionFrames.size()]) << what;
+        EXPECT_EQ(row.at("shadow_matrix_changes"), "0") << what << ": the shadow map's fit does not follow";
+        frames[key].push_back(error);
+    }
+    for (const std::string& preset : kPresets) {
+        const std::string key = preset + " 0";
+        ASSERT_EQ(frames[key].size(), kMotionFrames.size()) << key;
+        for (double e : frames[key]) {
+            EXPECT_LT(e, 2.0 * stillOne[key]) << key;
+            EXPECT_GT(e, 0.5 * stillOne[key]) << key;
+        }
+        EXPECT_EQ(frames[preset + " 1"].size(), kMotionFrames.size()) << preset;
+    }
+    const std::string md = readFile(gOut + "/results.md");
+    for (const char* section :
+         {"## In motion", "| at the Medium preset, the in-motion error with temporal on within",
+          "### Where the temporal pass pays", "### Per scene"})
+        EXPECT_NE(md.find(section), std::string::npos) << section;
+    EXPECT_TRUE(md.find("**PASS**") != std::string::npos || md.find("**MISS**") != std::string::npos);
+}
+
 // postfx-bench --froxel --quick (64x36, grid 16x9, 16 and 32 slices, power and log, trilinear and
 // tricubic; the ray-marched fog at 4 and 16 steps beside it on fog_default; the light-count sweep at 0, 4
 // and 16 lights) under the validation layer, into OUT_DIR/froxel.
@@ -421,6 +495,65 @@ TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
         ASSERT_EQ(errors.size(), 2u) << knobs;
         EXPECT_LT(errors.at(32), errors.at(16)) << knobs;
     }
+}
+
+// In motion (--quick: froxel_lights, the scene with lights, at the grid 16x9x16): the camera and light 0
+// moving, temporal off and on; light 0 switched off at frame 4: with temporal off nothing of it is left,
+// with temporal on less than 1% from the second frame after at the latest (the target).
+TEST_F(BenchFroxelSmoke, MotionCsvHasTheSequencesAndTheSwitchedOffLightIsGone) {
+    ASSERT_EQ(status_, 0);
+    std::vector<std::string> header;
+    std::vector<Row> motion;
+    bool sawDevice = false;
+    ASSERT_TRUE(readCsv(out_ + "/motion.csv", header, motion, sawDevice)) << out_ << "/motion.csv";
+    ASSERT_EQ(header, kMotionColumns);
+    const size_t switchOffFrames = 4;  // --quick
+    // camera and light, temporal off and on: a still row and 2 frames; switched off: frames F - 1 .. F + 3,
+    // the control and the never-lit sequence without F - 1, temporal off and on.
+    ASSERT_EQ(motion.size(), 2 * 2 * (1 + kMotionFrames.size()) + 2 * (1 + 3 * switchOffFrames));
+    std::map<std::string, std::vector<double>> leftover;  // temporal -> frames F, F + 1, ...
+    std::map<std::string, int> kinds;
+    for (const Row& row : motion) {
+        const std::string what = row.at("motion") + " temporal=" + row.at("temporal") + " " + row.at("frame");
+        EXPECT_EQ(row.at("scene"), "froxel_lights") << what;
+        EXPECT_EQ(row.at("method"), "postfx-froxel") << what;
+        EXPECT_NE(row.at("setting").find("grid=16x9x16 dist=power tricubic=off"), std::string::npos) << what;
+        ++kinds[row.at("motion")];
+        if (row.at("motion") == "still" || row.at("motion") == "camera" || row.at("motion") == "light") {
+            const double error = number(row.at("rel_rmse"));
+            EXPECT_TRUE(std::isfinite(error) && error > 0.0 && error < 0.5) << what;
+            EXPECT_EQ(row.at("non_finite"), "0") << what;
+            continue;
+        }
+        const double remaining = number(row.at("remaining"));
+        EXPECT_TRUE(std::isfinite(remaining) && remaining >= 0.0) << what;
+        if (row.at("motion") != "switch_off") continue;
+        const double left = number(row.at("leftover"));
+        if (row.at("frame") == "-1") {
+            EXPECT_GT(left, 0.8) << what << ": the light's own contribution, lit";
+            EXPECT_LT(left, 1.25) << what;
+        } else {
+            leftover[row.at("temporal")].push_back(left);
+        }
+    }
+    EXPECT_EQ(kinds["still"], 4);
+    EXPECT_EQ(kinds["camera"], 2 * int(kMotionFrames.size()));
+    EXPECT_EQ(kinds["light"], 2 * int(kMotionFrames.size()));
+    EXPECT_EQ(kinds["switch_off"], 2 * int(1 + switchOffFrames));
+    EXPECT_EQ(kinds["switch_off_control"], 2 * int(switchOffFrames));
+    EXPECT_EQ(kinds["never_lit"], 2 * int(switchOffFrames));
+    ASSERT_EQ(leftover["0"].size(), switchOffFrames);
+    ASSERT_EQ(leftover["1"].size(), switchOffFrames);
+    for (size_t n = 0; n < switchOffFrames; ++n) {
+        EXPECT_EQ(leftover["0"][n], 0.0) << "temporal off, F + " << n;
+        if (n >= 2) {
+            EXPECT_LT(leftover["1"][n], 0.01) << "temporal on, F + " << n;
+        }
+    }
+    const std::string md = readFile(out_ + "/results.md");
+    for (const char* section :
+         {"## In motion", "### A light switched off", "| a light switched off leaves less"})
+        EXPECT_NE(md.find(section), std::string::npos) << section;
 }
 
 TEST_F(BenchFroxelSmoke, MarkdownHasTheTargetsLightListsAndComparison) {
