@@ -250,6 +250,9 @@ TEST_P(CoreFramePlanScenes, ExactPassesAndMemory) {
 }
 
 const std::vector<std::string> kNone, kMarch{"fog.raymarch"}, kNoiseAndMarch{"fog.noise", "fog.raymarch"};
+// A quality preset (default.json: "medium") accumulates temporally (docs/effects/fog.md#quality-presets).
+const std::vector<std::string> kTemporal{"fog.raymarch", "fog.temporal", "fog.composite"},
+    kNoiseAndTemporal{"fog.noise", "fog.raymarch", "fog.temporal", "fog.composite"};
 INSTANTIATE_TEST_SUITE_P(
     Committed, CoreFramePlanScenes,
     ::testing::Values(
@@ -260,8 +263,11 @@ INSTANTIATE_TEST_SUITE_P(
         SceneExpectation{"fog_valley.json", kMarch, kMarch, 1 + 1024, true},
         // Full fog: noise generated once (128³ bytes), then only the march.
         SceneExpectation{"fog_default.json", kNoiseAndMarch, kMarch, 128 * 128 * 128 + 1024, true},
-        // The built-in scene (the high preset: full resolution, so no scatter image): the same.
-        SceneExpectation{"default.json", kNoiseAndMarch, kMarch, 128 * 128 * 128 + 1024, true}),
+        // The built-in scene (the high preset: full resolution; temporal): the march into the scatter image
+        // (64×36 RGBA16F), accumulated into an RGBA32F history and an R32F distance (two of each), the
+        // temporal uniforms (two 1280-byte slots), composited.
+        SceneExpectation{"default.json", kNoiseAndTemporal, kTemporal,
+                         128 * 128 * 128 + 1024 + 64 * 36 * (8 + 2 * 16 + 2 * 4) + 2 * 1280, true}),
     [](const auto& info) {
         std::string name = info.param.scene;
         return name.substr(0, name.find('.'));

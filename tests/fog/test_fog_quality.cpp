@@ -32,6 +32,7 @@ protected:
     // A height fog over a surface at 12 m on the left half, sky on the right.
     postfx::FrameInfo fogFrame() const {
         postfx::FrameInfo frame;
+        frame.cameraCut = true;  // each frame on its own (the presets accumulate temporally): single frames
         frame.camera = testCamera({0.0, 1.5, 0.0}, 60.0f, float(kWidth) / kHeight, 0.1f, 1000.0f, true);
         frame.sun.toSun = glm::normalize(glm::vec3(0.2f, 0.3f, -1.0f));
         frame.sun.illuminance = {1000.0f, 2000.0f, 500.0f};
@@ -76,16 +77,19 @@ TEST_F(FogQualityTest, ApplyFogQualitySetsThePresetTable) {
         bool jitter;
         uint32_t kernel;
         float scale;
+        bool temporal;
     };
-    const Row rows[] = {{FogQuality::Low, 32, true, 1, 0.5f},       {FogQuality::Medium, 32, true, 1, 1.0f},
-                        {FogQuality::High, 64, true, 1, 1.0f},      {FogQuality::Ultra, 128, true, 1, 1.0f},
-                        {FogQuality::Custom, 77, false, 5, 0.375f}, {FogQuality::Auto, 77, false, 5, 0.375f}};
+    const Row rows[] = {
+        {FogQuality::Low, 32, true, 1, 0.5f, true},        {FogQuality::Medium, 32, true, 1, 1.0f, true},
+        {FogQuality::High, 64, true, 1, 1.0f, true},       {FogQuality::Ultra, 128, true, 1, 1.0f, true},
+        {FogQuality::Custom, 77, false, 5, 0.375f, false}, {FogQuality::Auto, 77, false, 5, 0.375f, false}};
     for (const Row& r : rows) {
         const postfx::FogSettings s = postfx::applyFogQuality(custom, r.quality);
         EXPECT_EQ(s.steps, r.steps) << int(r.quality);
         EXPECT_EQ(s.jitter, r.jitter) << int(r.quality);
         EXPECT_EQ(s.shadowKernel, r.kernel) << int(r.quality);
         EXPECT_EQ(s.resolutionScale, r.scale) << int(r.quality);
+        EXPECT_EQ(s.temporal.enabled, r.temporal) << int(r.quality);
         EXPECT_EQ(s.density, custom.density);  // nothing else changes
         EXPECT_EQ(s.quality, custom.quality);
     }

@@ -29,15 +29,17 @@ struct QualityPreset {
     bool jitter;
     uint32_t shadowKernel;
     float resolutionScale;
+    bool temporal;  // temporal.enabled: it pays at every preset (docs/accuracy-cost/README.md, "In motion")
 };
-// FogSettings' defaults are Medium's values (tests/fog/test_fog_scene.cpp checks it).
+// FogSettings' defaults are Medium's values (tests/fog/test_fog_scene.cpp checks it), but temporal, off
+// by default (a host that does not call record() every frame, or has its own temporal filter, opts in).
 // Chosen by postfx-bench's rule from the H100 run in docs/accuracy-cost/h100/ (README.md there: timed on
 // fog_default at 1920×1080, lowest 16-frame error averaged over the scenes within 0.25 / 0.5 / 1 / 2 ms).
 constexpr QualityPreset kQualityPresets[] = {
-    {FogQuality::Low, 32, true, 1, 0.5f},
-    {FogQuality::Medium, 32, true, 1, 1.0f},
-    {FogQuality::High, 64, true, 1, 1.0f},
-    {FogQuality::Ultra, 128, true, 1, 1.0f},
+    {FogQuality::Low, 32, true, 1, 0.5f, true},
+    {FogQuality::Medium, 32, true, 1, 1.0f, true},
+    {FogQuality::High, 64, true, 1, 1.0f, true},
+    {FogQuality::Ultra, 128, true, 1, 1.0f, true},
 };
 
 bool isPowerOfTwo(uint32_t v) {
@@ -168,6 +170,7 @@ FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality) {
             s.jitter = p.jitter;
             s.shadowKernel = p.shadowKernel;
             s.resolutionScale = p.resolutionScale;
+            s.temporal.enabled = p.temporal;
         }
     return s;
 }
