@@ -7,20 +7,26 @@
 # Usage: scripts/run-sanitizer-tests.sh [ctest arguments, e.g. -R Core]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/steps.sh
 jobs=$(nproc)
 # -O1: a sanitized -O0 build makes the CPU fog references several times slower; -O1 keeps the stack
 # traces exact. No benchmark (it tests postfx-bench's report, not memory; its GPU code is postfx's), no
 # examples and no windowed demo: the three test programs, postfx-render (its command line on bad input)
 # and the library are built, so that CI stays under 25 minutes; the window's screenshot test runs in the
 # main build.
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
-    -DPOSTFX_SANITIZE=address,undefined -DPOSTFX_WERROR=ON -DPOSTFX_BUILD_DEMO=ON -DPOSTFX_BUILD_BENCH=OFF \
-    -DPOSTFX_BUILD_TESTS=ON -DPOSTFX_BUILD_EXAMPLES=OFF >/dev/null
-cmake --build build-asan -j"$jobs" --target postfx unit_tests gpu_tests stability_tests glm_config_tests \
-    postfx-render
+configure() {
+    cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+        -DPOSTFX_SANITIZE=address,undefined -DPOSTFX_WERROR=ON -DPOSTFX_BUILD_DEMO=ON \
+        -DPOSTFX_BUILD_BENCH=OFF -DPOSTFX_BUILD_TESTS=ON -DPOSTFX_BUILD_EXAMPLES=OFF >/dev/null
+}
+step "sanitizers: configure" configure
+step "sanitizers: compile" cmake --build build-asan -j"$jobs" --target postfx unit_tests gpu_tests \
+    stability_tests glm_config_tests postfx-render
 # halt_on_error: the first report ends the process (the build adds -fno-sanitize-recover=all, which
 # UBSan also needs at run time); detect_leaks: LeakSanitizer at exit, with the drivers' leaks suppressed.
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:abort_on_error=0:exitcode=23"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
-ctest --test-dir build-asan --output-on-failure -j"$jobs" -E '^demo_window_screenshot$' "$@"
+step "sanitizers: tests" ctest --test-dir build-asan --output-on-failure -j"$jobs" \
+    -E '^demo_window_screenshot$' "$@"
+steps_summary "run-sanitizer-tests"

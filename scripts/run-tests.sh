@@ -3,23 +3,29 @@
 # the Khronos validation layer). Installs missing Debian packages first. Build folder: build/.
 # Then the same tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in build-asan/
 # (scripts/run-sanitizer-tests.sh); POSTFX_SKIP_SANITIZERS=1 skips that part for a quick local run
-# (.ci/run never skips it). Arguments go to both ctest runs (e.g. -R Fog).
+# (.ci/run never skips it). Arguments go to both ctest runs (e.g. -R Fog). Each step prints its
+# wall-clock and CPU time, and the end sums them up: CI must stay under 25 minutes on two cores
+# (docs/reliability.md, "CI time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh test
-scripts/check-format.sh
+source scripts/steps.sh
+step "install-deps" scripts/install-deps.sh test
+step "check-format" scripts/check-format.sh
 jobs=$(nproc)
 # Every part on (the demo's command may have turned tests off in the same build folder).
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOSTFX_WERROR=ON -DPOSTFX_BUILD_DEMO=ON \
-    -DPOSTFX_BUILD_BENCH=ON -DPOSTFX_BUILD_TESTS=ON >/dev/null
-cmake --build build -j"$jobs"
+configure() {
+    cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOSTFX_WERROR=ON -DPOSTFX_BUILD_DEMO=ON \
+        -DPOSTFX_BUILD_BENCH=ON -DPOSTFX_BUILD_TESTS=ON >/dev/null
+}
+step "build: configure" configure
+step "build: compile" cmake --build build -j"$jobs"
 # Tests that need a Vulkan device run on Mesa's lavapipe unless POSTFX_DEVICE picks another.
-ctest --test-dir build --output-on-failure -j"$jobs" "$@"
-tests/demo/fuzz/run_fuzz.sh  # the scene loader under libFuzzer for 60 s (docs/scene-format.md, "Fuzzing")
+step "build: tests" ctest --test-dir build --output-on-failure -j"$jobs" "$@"
+# The scene loader under libFuzzer for 60 s (docs/scene-format.md, "Fuzzing").
+step "fuzz: build and 60 s" tests/demo/fuzz/run_fuzz.sh
 if [[ "${POSTFX_SKIP_SANITIZERS:-}" == 1 ]]; then
     echo "run-tests: POSTFX_SKIP_SANITIZERS=1, the sanitizer build is skipped"
-    exit 0
+else
+    step "sanitizers: build and tests" scripts/run-sanitizer-tests.sh "$@"
 fi
-start=$SECONDS
-scripts/run-sanitizer-tests.sh "$@"
-echo "run-tests: the sanitizer build and its tests took $((SECONDS - start)) s"
+steps_summary "run-tests"
