@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds postfx with warnings as errors and runs every test (host-only and GPU tests on lavapipe, under
 # the Khronos validation layer). Installs missing Debian packages first. Build folder: build/.
-# Then the same tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in build-asan/
+# Then the scene loader under libFuzzer for 30 s on every core (tests/demo/fuzz/run_fuzz.sh), and the
+# same tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in build-asan/
 # (scripts/run-sanitizer-tests.sh); POSTFX_SKIP_SANITIZERS=1 skips that part for a quick local run
 # (.ci/run never skips it). Arguments go to both ctest runs (e.g. -R Fog). Each step prints its
 # wall-clock and CPU time, and the end sums them up: CI must stay under 25 minutes on two cores
@@ -21,8 +22,8 @@ step "build: configure" configure
 step "build: compile" cmake --build build -j"$jobs"
 # Tests that need a Vulkan device run on Mesa's lavapipe unless POSTFX_DEVICE picks another.
 step "build: tests" ctest --test-dir build --output-on-failure -j"$jobs" "$@"
-# The scene loader under libFuzzer for 60 s (docs/scene-format.md, "Fuzzing").
-step "fuzz: build and 60 s" tests/demo/fuzz/run_fuzz.sh
+# The scene loader under libFuzzer (docs/scene-format.md, "Fuzzing").
+step "fuzz: build and 30 s" tests/demo/fuzz/run_fuzz.sh
 if [[ "${POSTFX_SKIP_SANITIZERS:-}" == 1 ]]; then
     echo "run-tests: POSTFX_SKIP_SANITIZERS=1, the sanitizer build is skipped"
 else
