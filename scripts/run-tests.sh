@@ -2,11 +2,11 @@
 # Builds postfx with warnings as errors and runs every test (host-only and GPU tests on lavapipe, under
 # the Khronos validation layer). Installs missing Debian packages first. Build folder: build/.
 # Then the scene loader under libFuzzer for 30 s on every core (tests/demo/fuzz/run_fuzz.sh), and the
-# same tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in build-asan/
-# (scripts/run-sanitizer-tests.sh); POSTFX_SKIP_SANITIZERS=1 skips that part for a quick local run
-# (.ci/run never skips it). Arguments go to both ctest runs (e.g. -R Fog). Each step prints its
-# wall-clock and CPU time, and the end sums them up: CI must stay under 25 minutes on two cores
-# (docs/reliability.md, "CI time").
+# tests built with AddressSanitizer and UndefinedBehaviorSanitizer, in build-asan/
+# (scripts/run-sanitizer-tests.sh: every test but the whole-image comparisons); POSTFX_SKIP_SANITIZERS=1
+# skips that part for a quick local run (.ci/run never skips it). Arguments go to both ctest runs
+# (e.g. -R Fog). Each step prints its wall-clock and CPU time, and the end sums them up: CI must stay
+# under 25 minutes on two cores (docs/reliability.md, "CI time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/steps.sh
