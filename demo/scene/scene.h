@@ -7,7 +7,9 @@
 #include <postfx/fog.h>
 #include <postfx/froxel_fog.h>
 #include <glm/glm.hpp>
-#include <nlohmann/json.hpp>
+// Declares nlohmann::json (sceneToJson's type) alone: a file that writes or reads JSON includes
+// <nlohmann/json.hpp>, and the others (the renderer, most tests) skip its parse.
+#include <nlohmann/json_fwd.hpp>
 
 #include <cstdint>
 #include <optional>

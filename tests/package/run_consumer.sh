@@ -35,9 +35,10 @@ package)
     "$work/version_check_pkgconfig"
     ;;
 shared)
+    # The library alone (the consumer builds the guide's program itself).
     cmake -S "$source" -B "$work/postfx" -DBUILD_SHARED_LIBS=ON -DCMAKE_BUILD_TYPE=Release \
-        -DPOSTFX_BUILD_DEMO=OFF -DPOSTFX_BUILD_TESTS=OFF -DPOSTFX_BUILD_BENCH=OFF -DPOSTFX_WERROR=ON \
-        >"$work/postfx-configure.log" 2>&1 || { cat "$work/postfx-configure.log"; exit 1; }
+        -DPOSTFX_BUILD_DEMO=OFF -DPOSTFX_BUILD_TESTS=OFF -DPOSTFX_BUILD_BENCH=OFF -DPOSTFX_BUILD_EXAMPLES=OFF \
+        -DPOSTFX_WERROR=ON >"$work/postfx-configure.log" 2>&1 || { cat "$work/postfx-configure.log"; exit 1; }
     cmake --build "$work/postfx" -j"$jobs" >"$work/postfx-build.log" 2>&1 || { cat "$work/postfx-build.log"; exit 1; }
     cmake --install "$work/postfx" --prefix "$work/prefix" >/dev/null
     so=$(ls "$work"/prefix/lib/libpostfx.so.* | head -n1)
