@@ -663,12 +663,16 @@ int run(const Args& args, const std::string& command) {
                     progress.advance();
                     for (size_t k = 0; k < presets; ++k) {
                         for (bool temporal : {false, true}) {
+                            // The preset's knobs as Custom settings, so that temporal is what this row says
+                            // (the presets turn it on themselves).
                             demo::Scene s = scene;
-                            s.fog.quality = kPresets[k];
+                            const postfx::FogSettings asPreset = postfx::applyFogQuality(s.fog, kPresets[k]);
+                            s.fog = asPreset;
+                            s.fog.quality = postfx::FogQuality::Custom;
                             s.fog.temporal.enabled = temporal;
                             if (motionOptions.temporalBlend > 0.0f)
                                 s.fog.temporal.blendWeight = motionOptions.temporalBlend;
-                            const postfx::FogSettings applied = postfx::applyFogQuality(s.fog, s.fog.quality);
+                            const postfx::FogSettings applied = s.fog;
                             bench::MotionResult m;
                             m.setting = base;
                             m.setting.preset = demo::fogQualityName(kPresets[k]);
@@ -689,7 +693,7 @@ int run(const Args& args, const std::string& command) {
                                 if (r.setting.scene == p.name && r.setting.method == bench::Method::Ours &&
                                     r.setting.preset == m.setting.preset && r.setting.noiseSize == noise)
                                     row = &r;
-                            const postfx::TemporalSettings& own = scene.fog.temporal;
+                            const postfx::TemporalSettings& own = asPreset.temporal;
                             if (row && own.enabled == temporal &&
                                 (!temporal || own.blendWeight == s.fog.temporal.blendWeight)) {
                                 m.timing = row->timing;
