@@ -17,6 +17,19 @@ FogRay fogRay(uvec2 pixel) {
     return FogRay(surface / distance, noGeometry ? kInfinity : distance);
 }
 
+// The unit direction of pixel `pixel`'s view ray, camera-relative (no depth read).
+vec3 fogRayDirection(uvec2 pixel) {
+    vec2 ndc = (vec2(pixel) + 0.5) / vec2(fog.extent.xy) * 2.0 - 1.0;
+    vec4 p = fog.clipToView * vec4(ndc, 0.5, 1.0);
+    return normalize(p.xyz / p.w);
+}
+
+// Where the fog along the ray ends: the surface or the fog's max distance, whichever is nearer [m];
+// -1 for a NaN depth (a host's bad depth), a distance no temporal reprojection matches.
+float fogRayEndDistance(FogRay ray) {
+    return isnan(ray.surfaceDistance) ? -1.0 : min(ray.surfaceDistance, fog.medium.w);
+}
+
 // Reduced resolution: the full-resolution pixel whose ray the scatter texel `texel` marches, the one
 // nearest the texel's centre: floor((texel + 0.5) · extent / scatterExtent), in exact integers.
 uvec2 fogSourcePixel(uvec2 texel) {

@@ -2,7 +2,8 @@
 // Ray-marched fog at a reduced resolution (FogSettings::resolutionScale < 1): one invocation per texel
 // of the scatter image marches the view ray of the full-resolution pixel nearest the texel's centre
 // (fogSourcePixel) and stores (L, T) there; upsample.comp composites them over the host's color.
-// Variants: COLOR_RGBA32F selects the storage format (default rgba16f).
+// Variants: COLOR_RGBA32F selects the storage format (default rgba16f); TEMPORAL also stores the ray's
+// end distance, which temporal.comp filters and reprojects by (this frame's distance image of the history).
 #extension GL_GOOGLE_include_directive : require
 
 #include "fog/fog_shared.h"
@@ -19,9 +20,17 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 #include "fog/ray.glsl"
 #include "fog/march.glsl"
 
+#ifdef TEMPORAL
+layout(binding = kFogBindingDistance, r32f) uniform writeonly image2D distanceOut;
+#endif
+
 void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(texel, fog.scatterExtent.xy))) return;
-    FogScatter s = marchFog(fogRay(fogSourcePixel(texel)), texel);
+    FogRay ray = fogRay(fogSourcePixel(texel));
+#ifdef TEMPORAL
+    imageStore(distanceOut, ivec2(texel), vec4(fogRayEndDistance(ray)));
+#endif
+    FogScatter s = marchFog(ray, texel);
     imageStore(scatterImage, ivec2(texel), vec4(min(s.inScattered, vec3(kColorMax)), s.transmittance));
 }

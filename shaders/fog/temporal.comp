@@ -1,19 +1,29 @@
 #version 450
 // Temporal accumulation of the ray-marched fog (docs/effects/fog.md#temporal): one invocation per texel
 // of the march blends this frame's (L, T) with the previous frames' accumulated (L, T), reprojected.
-//   1. The texel's ray ends at p = dir · min(surface, max distance); the previous camera saw p at
-//      previousClip · p. Off the previous image, or behind the previous camera: no history.
-//   2. Of the 2×2 history texels around it (this texel moved by the point's screen motion), those
+//   1. The march stored each texel's ray-end distance, min(surface, max distance).
+//   2. The ray ends at p = dir · distance; the previous camera saw p at previousClip · p. Off the
+//      previous image, or behind the previous camera: no history.
+//   3. Of the 2×2 history texels around it (this texel moved by the point's screen motion), those
 //      whose own ray ended within kFogTemporalDistanceTolerance of |p - previous camera| are blended
 //      bilinearly (disocclusion: none matches, no history); non-finite history never matches.
-//   3. The history is clamped to the min/max box of this frame's 3×3 neighbourhood (Karis 2014), so
+//   4. The history is clamped to the min/max box of this frame's 3×3 neighbourhood (Karis 2014), so
 //      what no longer belongs (moving shadows, a changed medium) cannot stay.
-//   4. result = history + w·(current - history), w = cameraDelta.w (1 without history).
-// The result is what upsample.comp composites; scene color is never in it.
+//   5. This frame's estimate: a still texel's own value; a texel that moved by at least
+//      kFogTemporalFilterMotion texels the mean of the 3×3 texels whose rays end within
+//      kFogTemporalDistanceTolerance of its own (depth-aware: no fog crosses a silhouette); in between
+//      a mix. A still texel's jitter sequence is stratified over the frames (interleaved gradient
+//      noise); motion breaks it, as its history comes from other texels, but neighbouring texels'
+//      offsets are spread over the step, so their mean is a stratified estimate of this frame.
+//   6. result = history + w·(estimate - history), w = cameraDelta.w; without history (disoccluded, come
+//      into view) the estimate alone; after a reset, every texel its own value.
+// The result is the history, which upsample.comp composites at a reduced resolution; at full size this
+// pass composites it too (COMPOSITE: out = color · T + L). Scene color is never in the history.
 // The history is RGBA32F whatever the color format: blended in half precision, an update smaller than
 // half an ulp (w·|current - history| < 2.4e-4·history) would be lost, and the history would stop
 // converging about 0.25% from its mean (fog.md#temporal).
-// Variants: COLOR_RGBA32F selects the storage format of the scatter image (this frame's march).
+// Variants: COLOR_RGBA32F selects the storage format of the scatter and color images (this frame's march);
+// COMPOSITE (resolution scale 1) also composites the result over the host's color.
 #extension GL_GOOGLE_include_directive : require
 
 #include "fog/fog_shared.h"
@@ -26,12 +36,15 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 layout(binding = kFogBindingHistoryIn, rgba32f) uniform readonly image2D historyIn;
 layout(binding = kFogBindingHistoryOut, rgba32f) uniform writeonly image2D historyOut;
 layout(binding = kFogBindingDistanceIn, r32f) uniform readonly image2D distanceIn;
-layout(binding = kFogBindingDistanceOut, r32f) uniform writeonly image2D distanceOut;
+layout(binding = kFogBindingDistance, r32f) uniform readonly image2D distanceCurrent;  // from the march
 layout(binding = kFogBindingTemporal, std140) uniform Temporal {
     TemporalUniforms temporal;
 };
 
 #include "fog/ray.glsl"
+#ifdef COMPOSITE
+#include "fog/composite.glsl"
+#endif
 
 bool finite(vec4 v) {
     return !any(isnan(v)) && !any(isinf(v));
@@ -40,11 +53,15 @@ bool finite(vec4 v) {
 // The history at the previous frame's view of `point` (camera-relative), the end of texel `texel`'s ray
 // through its source pixel's centre `uvSource`, bilinear over the texels whose ray ended at the same
 // distance; false when there is none.
-bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistance, out vec4 history) {
+bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistance, out vec4 history,
+                        out float motion) {
     history = vec4(0.0);
+    motion = kInfinity;  // not seen by the previous camera: come into view
     vec4 clip = temporal.previousClip * vec4(point, 1.0);
     if (!(clip.w > 0.0)) return false;
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
+    vec2 offset = (uv - uvSource) * vec2(fog.scatterExtent.xy);
+    motion = length(offset);
     if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0)))) return false;
     float expected = min(length(point + temporal.cameraDelta.xyz), maxDistance);
 
@@ -52,7 +69,7 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
     // holds its source pixel's ray, which at a reduced resolution is not at the texel's centre; mapping
     // uv to texels directly would read a still view a fraction of a texel beside itself, and blur.)
     ivec2 size = ivec2(fog.scatterExtent.xy);
-    vec2 p = vec2(texel) + (uv - uvSource) * vec2(size);
+    vec2 p = vec2(texel) + offset;
     ivec2 p0 = ivec2(floor(p));
     vec2 f = p - vec2(p0);
     vec4 sum = vec4(0.0);
@@ -75,33 +92,66 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
     return true;
 }
 
+// This group's texels and a one-texel border: this frame's march result and its ray-end distance.
+shared vec4 tileScatter[kFogGroupSize + 2][kFogGroupSize + 2];
+shared float tileDistance[kFogGroupSize + 2][kFogGroupSize + 2];
+
+void loadTile(ivec2 size) {
+    const int edge = int(kFogGroupSize) + 2;
+    ivec2 origin = ivec2(gl_WorkGroupID.xy * kFogGroupSize) - 1;
+    for (uint i = gl_LocalInvocationIndex; i < uint(edge * edge); i += kFogGroupSize * kFogGroupSize) {
+        ivec2 local = ivec2(int(i) % edge, int(i) / edge);
+        ivec2 q = clamp(origin + local, ivec2(0), size - 1);
+        tileScatter[local.y][local.x] = imageLoad(scatterImage, q);
+        tileDistance[local.y][local.x] = imageLoad(distanceCurrent, q).r;
+    }
+    barrier();
+}
+
 void main() {
-    uvec2 texel = gl_GlobalInvocationID.xy;
     ivec2 size = ivec2(fog.scatterExtent.xy);
+    loadTile(size);  // every invocation takes part, before any returns
+    uvec2 texel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(texel, uvec2(size)))) return;
-    vec4 current = imageLoad(scatterImage, ivec2(texel));
-    uvec2 source = fogSourcePixel(texel);
-    FogRay ray = fogRay(source);
-    float maxDistance = fog.medium.w;
-    // NaN (a host's bad depth) stores as no distance any reprojection matches.
-    float distance = isnan(ray.surfaceDistance) ? -1.0 : min(ray.surfaceDistance, maxDistance);
-    imageStore(distanceOut, ivec2(texel), vec4(distance));
+    ivec2 local = ivec2(gl_LocalInvocationID.xy) + 1;
+    vec4 current = tileScatter[local.y][local.x];
+    float distance = tileDistance[local.y][local.x];
+
+    // The 3×3 neighbourhood: its min/max box clamps the history; the mean of the texels whose rays end
+    // at this one's distance is the filtered estimate (step 5 above).
+    vec4 lo = current, hi = current;
+    vec4 sum = vec4(0.0);
+    float count = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            vec4 n = tileScatter[local.y + y][local.x + x];
+            if (!finite(n)) continue;
+            lo = min(lo, n);
+            hi = max(hi, n);
+            if (abs(tileDistance[local.y + y][local.x + x] - distance) <=
+                kFogTemporalDistanceTolerance * distance) {
+                sum += n;
+                count += 1.0;
+            }
+        }
+    vec4 filtered = count > 0.0 ? sum / count : current;
 
     vec4 result = current;
     vec4 history;
-    if (temporal.state.x != 0u && finite(current) && distance >= 0.0 &&
-        reprojectedHistory(ray.dir * distance, texel, (vec2(source) + 0.5) / vec2(fog.extent.xy), maxDistance,
-                           history)) {
-        vec4 lo = current, hi = current;
-        for (int y = -1; y <= 1; ++y)
-            for (int x = -1; x <= 1; ++x) {
-                vec4 n = imageLoad(scatterImage, clamp(ivec2(texel) + ivec2(x, y), ivec2(0), size - 1));
-                if (finite(n)) {
-                    lo = min(lo, n);
-                    hi = max(hi, n);
-                }
-            }
-        result = mix(clamp(history, lo, hi), current, temporal.cameraDelta.w);
+    float motion;
+    uvec2 source = fogSourcePixel(texel);
+    if (temporal.state.x != 0u && finite(current) && distance >= 0.0) {
+        bool found =
+            reprojectedHistory(fogRayDirection(source) * distance, texel,
+                               (vec2(source) + 0.5) / vec2(fog.extent.xy), fog.medium.w, history, motion);
+        // A still texel keeps its own jitter sequence, stratified over the frames: its own value, so a
+        // still view converges to the unfiltered mean; a moving one (or one come into view) the filtered.
+        vec4 estimate = mix(current, filtered, min(motion / kFogTemporalFilterMotion, 1.0));
+        result = found ? mix(clamp(history, lo, hi), estimate, temporal.cameraDelta.w) : estimate;
     }
     imageStore(historyOut, ivec2(texel), result);
+#ifdef COMPOSITE
+    vec4 color = imageLoad(colorIn, ivec2(texel));
+    imageStore(colorOut, ivec2(texel), vec4(compositeFog(color.rgb, result.a, result.rgb), color.a));
+#endif
 }

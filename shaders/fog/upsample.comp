@@ -1,12 +1,13 @@
 #version 450
 // Composites a reduced-resolution march (raymarch_reduced.comp), or the temporal accumulation of one
-// (temporal.comp, at any size), over the host's color at full resolution: out = color · T + L, with (L, T)
+// (temporal.comp), over the host's color at full resolution: out = color · T + L, with (L, T)
 // upsampled depth-aware (docs/effects/fog.md, "Resolution scale"). Of the 2×2 scatter texels around the
 // pixel, those whose ray ends within kFogUpsampleDistanceTolerance of the pixel's own surface distance are
 // blended with bilinear weights; when none does (an edge thinner than a texel), the texel of nearest distance
 // is taken (nearest-depth upsampling). The CPU reference does the same (fog_reference.cpp).
 //
-// Variants: COLOR_RGBA32F selects the storage format of the images (default rgba16f).
+// Variants: COLOR_RGBA32F selects the storage format of the images (default rgba16f); SCATTER_RGBA32F
+// an RGBA32F scatter image (the temporal history) with RGBA16F color.
 #extension GL_GOOGLE_include_directive : require
 
 #include "fog/fog_shared.h"
@@ -28,12 +29,6 @@ void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, fog.extent.xy))) return;
     vec4 color = imageLoad(colorIn, ivec2(pixel));
-    // At full size (temporal accumulation at resolution scale 1: "fog.composite") each pixel has its texel.
-    if (fog.scatterExtent.xy == fog.extent.xy) {
-        vec4 own = imageLoad(scatterImage, ivec2(pixel));
-        imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, own.a, own.rgb), color.a));
-        return;
-    }
     float distance = fogRay(pixel).surfaceDistance;
 
     // The pixel centre in scatter texels, u = (pixel + 0.5) · w / W - 0.5, in exact integers:

@@ -251,8 +251,8 @@ TEST_P(CoreFramePlanScenes, ExactPassesAndMemory) {
 
 const std::vector<std::string> kNone, kMarch{"fog.raymarch"}, kNoiseAndMarch{"fog.noise", "fog.raymarch"};
 // A quality preset (default.json: "medium") accumulates temporally (docs/effects/fog.md#quality-presets).
-const std::vector<std::string> kTemporal{"fog.raymarch", "fog.temporal", "fog.composite"},
-    kNoiseAndTemporal{"fog.noise", "fog.raymarch", "fog.temporal", "fog.composite"};
+const std::vector<std::string> kTemporal{"fog.raymarch", "fog.temporal"},
+    kNoiseAndTemporal{"fog.noise", "fog.raymarch", "fog.temporal"};
 INSTANTIATE_TEST_SUITE_P(
     Committed, CoreFramePlanScenes,
     ::testing::Values(

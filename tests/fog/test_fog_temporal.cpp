@@ -220,15 +220,18 @@ TEST_F(FogTemporalFrames, HistoryIsHeldOnlyWithTemporalOn) {
     postfx::FramePlan plan = planOf(f, 0);
     EXPECT_EQ(names(plan, true), (std::vector<std::string>{"fog.history_a", "fog.history_distance_a",
                                                            "fog.history_b", "fog.history_distance_b"}));
-    EXPECT_EQ(names(plan, false),
-              (std::vector<std::string>{"fog.raymarch", "fog.temporal", "fog.composite"}));
+    EXPECT_EQ(names(plan, false), (std::vector<std::string>{"fog.raymarch", "fog.temporal"}));
     // 32×18: RGBA32F histories and R32F distances.
     const postfx::PlannedPass* temporal = plan.pass("fog.temporal");
     ASSERT_TRUE(temporal);
-    EXPECT_EQ(temporal->writes, (std::vector<std::string>{"fog.history_a", "fog.history_distance_a"}));
+    EXPECT_EQ(temporal->writes, (std::vector<std::string>{"fog.history_a", "host.color"}));  // composites
+    // The march stores this frame's ray-end distances, which the temporal pass filters by.
+    EXPECT_EQ(plan.pass("fog.raymarch")->writes,
+              (std::vector<std::string>{"fog.scatter", "fog.history_distance_a"}));
     plan = planOf(f, 1);
-    EXPECT_EQ(plan.pass("fog.temporal")->writes,
-              (std::vector<std::string>{"fog.history_b", "fog.history_distance_b"}));
+    EXPECT_EQ(plan.pass("fog.temporal")->writes, (std::vector<std::string>{"fog.history_b", "host.color"}));
+    EXPECT_EQ(plan.pass("fog.raymarch")->writes,
+              (std::vector<std::string>{"fog.scatter", "fog.history_distance_b"}));
     uint64_t historyBytes = 0;
     for (const postfx::PlannedResource& r : plan.resources)
         if (r.history) historyBytes += r.bytes;

@@ -25,15 +25,26 @@ constexpr core::Binding kRaymarchBindings[] = {kColorIn,   kColorOut,     kDepth
                                                kShadowMap, kNoiseTexture, kUniformBuffer};
 constexpr core::Binding kReducedBindings[] = {kDepth, kShadowMap, kNoiseTexture, kUniformBuffer,
                                               kScatterImage};
+constexpr core::Binding kDistance{gpu::kFogBindingDistance, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+constexpr core::Binding kReducedTemporalBindings[] = {kDepth,         kShadowMap,    kNoiseTexture,
+                                                      kUniformBuffer, kScatterImage, kDistance};
 constexpr core::Binding kUpsampleBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kScatterImage};
-constexpr core::Binding kTemporalBindings[] = {
-    kDepth,
+constexpr core::Binding kTemporalBindings[] = {kUniformBuffer,
+                                               kScatterImage,
+                                               {gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                               {gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                               {gpu::kFogBindingDistanceIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                               kDistance,
+                                               {gpu::kFogBindingTemporal, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+constexpr core::Binding kTemporalCompositeBindings[] = {
+    kColorIn,
+    kColorOut,
     kUniformBuffer,
     kScatterImage,
     {gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
     {gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
     {gpu::kFogBindingDistanceIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    {gpu::kFogBindingDistanceOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+    kDistance,
     {gpu::kFogBindingTemporal, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 
@@ -41,22 +52,23 @@ constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, VK_DESCR
 const core::ComputePipelineDesc kRaymarch[2] = {
     {"fog.raymarch", spirv::fog_raymarch_comp, kRaymarchBindings},
     {"fog.raymarch", spirv::fog_raymarch_comp_COLOR_RGBA32F, kRaymarchBindings}};
-const core::ComputePipelineDesc kRaymarchReduced[2] = {
-    {"fog.raymarch", spirv::fog_raymarch_reduced_comp, kReducedBindings},
-    {"fog.raymarch", spirv::fog_raymarch_reduced_comp_COLOR_RGBA32F, kReducedBindings}};
+// [temporal][rgba32]: with temporal the march also stores each texel's ray-end distance.
+const core::ComputePipelineDesc kRaymarchReduced[2][2] = {
+    {{"fog.raymarch", spirv::fog_raymarch_reduced_comp, kReducedBindings},
+     {"fog.raymarch", spirv::fog_raymarch_reduced_comp_COLOR_RGBA32F, kReducedBindings}},
+    {{"fog.raymarch", spirv::fog_raymarch_reduced_comp_TEMPORAL, kReducedTemporalBindings},
+     {"fog.raymarch", spirv::fog_raymarch_reduced_comp_COLOR_RGBA32F_TEMPORAL, kReducedTemporalBindings}}};
 // [0]: RGBA16F color, [1]: RGBA32F color, [2]: RGBA16F color from an RGBA32F temporal history.
 const core::ComputePipelineDesc kUpsample[3] = {
     {"fog.upsample", spirv::fog_upsample_comp, kUpsampleBindings},
     {"fog.upsample", spirv::fog_upsample_comp_COLOR_RGBA32F, kUpsampleBindings},
     {"fog.upsample", spirv::fog_upsample_comp_SCATTER_RGBA32F, kUpsampleBindings}};
-const core::ComputePipelineDesc kTemporal[2] = {
-    {"fog.temporal", spirv::fog_temporal_comp, kTemporalBindings},
-    {"fog.temporal", spirv::fog_temporal_comp_COLOR_RGBA32F, kTemporalBindings}};
-// The temporal accumulation composited at full size: upsample.comp's one-texel-per-pixel path.
-// The history is RGBA32F whatever the color format: [0] RGBA16F color, [1] RGBA32F color.
-const core::ComputePipelineDesc kComposite[2] = {
-    {"fog.composite", spirv::fog_upsample_comp_SCATTER_RGBA32F, kUpsampleBindings},
-    {"fog.composite", spirv::fog_upsample_comp_COLOR_RGBA32F, kUpsampleBindings}};
+// [composite][rgba32]: at full size the temporal pass composites the accumulation itself.
+const core::ComputePipelineDesc kTemporal[2][2] = {
+    {{"fog.temporal", spirv::fog_temporal_comp, kTemporalBindings},
+     {"fog.temporal", spirv::fog_temporal_comp_COLOR_RGBA32F, kTemporalBindings}},
+    {{"fog.temporal", spirv::fog_temporal_comp_COMPOSITE, kTemporalCompositeBindings},
+     {"fog.temporal", spirv::fog_temporal_comp_COLOR_RGBA32F_COMPOSITE, kTemporalCompositeBindings}}};
 const core::ComputePipelineDesc kNoiseGenerate{"fog.noise", spirv::fog_noise_generate_comp, kNoiseBindings,
                                                sizeof(gpu::NoisePush)};
 
@@ -153,21 +165,13 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);
         return Status::success();
     }
-    // Otherwise: march into the scatter image at the march's size, accumulate it (temporal), then
-    // upsample (or composite, at full size) into color.
+    // Otherwise: march into the scatter image at the march's size, accumulate it (temporal; at full size
+    // that pass composites too), then upsample into color.
     const core::ImageRef scatter = b.transientImage(kScatter, marchDesc);
-    b.pass(kRaymarchReduced[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
-        .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
-        .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
-        .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
-        .bind(gpu::kFogBindingUniforms, uniforms)
-        .bind(gpu::kFogBindingScatter, scatter, Use::StorageWrite);
-    core::ImageRef result = scatter;
+    core::TemporalFrame t;
+    core::ImageRef history[2], distance[2];
     if (temporal) {
-        const core::TemporalFrame t = history_.decide(frame, frame.fog.temporal, temporalKey(frame), false);
-        const gpu::TemporalUniforms tu = core::temporalUniforms(t);
-        const core::BufferRef temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
-        core::ImageRef history[2], distance[2];
+        t = history_.decide(frame, frame.fog.temporal, temporalKey(frame), false);
         core::ImageDesc historyDesc = marchDesc;  // RGBA32F: accumulated in half, small updates would be lost
         historyDesc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
         core::ImageDesc distanceDesc = marchDesc;
@@ -176,21 +180,36 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             history[i] = b.historyImage(kHistory[i], historyDesc);
             distance[i] = b.historyImage(kHistoryDistance[i], distanceDesc);
         }
-        b.pass(kTemporal[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
-            .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
+    }
+    b.pass(kRaymarchReduced[temporal][rgba32], groupsFor(march.x), groupsFor(march.y), 1)
+        .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
+        .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
+        .bind(gpu::kFogBindingUniforms, uniforms)
+        .bind(gpu::kFogBindingScatter, scatter, Use::StorageWrite);
+    core::ImageRef result = scatter;
+    if (temporal) {
+        // The march stores this frame's distances in the slot written this frame (the next one's "in").
+        b.bind(gpu::kFogBindingDistance, distance[t.writeSlot], Use::StorageWrite);
+        const gpu::TemporalUniforms tu = core::temporalUniforms(t);
+        const core::BufferRef temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
+        b.pass(kTemporal[!reduced][rgba32], groupsFor(march.x), groupsFor(march.y), 1)
             .bind(gpu::kFogBindingUniforms, uniforms)
             .bind(gpu::kFogBindingScatter, scatter, Use::StorageRead)
+            .bind(gpu::kFogBindingDistance, distance[t.writeSlot], Use::StorageRead)
             .bind(gpu::kFogBindingHistoryIn, history[t.readSlot], Use::StorageRead)
             .bind(gpu::kFogBindingDistanceIn, distance[t.readSlot], Use::StorageRead)
             .bind(gpu::kFogBindingTemporal, temporalUniforms)
-            .bind(gpu::kFogBindingHistoryOut, history[t.writeSlot], Use::StorageWrite)
-            .bind(gpu::kFogBindingDistanceOut, distance[t.writeSlot], Use::StorageWrite);
+            .bind(gpu::kFogBindingHistoryOut, history[t.writeSlot], Use::StorageWrite);
         result = history[t.writeSlot];
+        if (!reduced) {  // composited in the same pass
+            b.bind(gpu::kFogBindingColorIn, b.compositeSource(), Use::StorageRead)
+                .bind(gpu::kFogBindingColorOut, b.compositeTarget(), Use::StorageWrite);
+            return Status::success();
+        }
     }
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-    const core::ComputePipelineDesc& composite =
-        !reduced ? kComposite[rgba32] : kUpsample[temporal && !rgba32 ? 2 : rgba32];
-    b.pass(composite, groupsFor(full.x), groupsFor(full.y), 1)
+    b.pass(kUpsample[temporal && !rgba32 ? 2 : rgba32], groupsFor(full.x), groupsFor(full.y), 1)
         .bind(gpu::kFogBindingColorIn, source, Use::StorageRead)
         .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
         .bind(gpu::kFogBindingScatter, result, Use::StorageRead)

@@ -1,7 +1,8 @@
 // The ray-marched fog behind the effect boundary (docs/effects/fog.md): its settings' checks, its
 // quality presets, and its declaration of a frame: the noise texture (generated, the host's, or a
 // stand-in), the scatter image of a reduced-resolution march, the uniforms, and the passes
-// fog.noise, fog.raymarch, fog.temporal and fog.upsample (fog.composite at full size with temporal).
+// fog.noise, fog.raymarch, fog.temporal and fog.upsample (at full size with temporal, fog.temporal
+// composites).
 #pragma once
 
 #include "core/effect.h"
