@@ -41,6 +41,9 @@ PFX_CONST(uint, kFroxelFlagTricubic, 2u);   // apply: tricubic B-spline (else tr
 
 // Largest value stored in the rgba16f volumes (the largest finite half): never Inf.
 PFX_CONST(float, kFroxelHalfMax, 65504.0f);
+// Temporal accumulation: the blur the repeated trilinear resampling of the history may add up to
+// [froxel²] (scatter.comp, accumulate; froxel-fog.md#temporal).
+PFX_CONST(float, kFroxelTemporalBlurBudget, 0.25f);
 
 struct FroxelUniforms {
     uvec4 grid;    // xyz: froxels along x, y and depth; w: lights this frame

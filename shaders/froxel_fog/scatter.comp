@@ -114,7 +114,13 @@ vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 dir, float start, float end
     }
     history.rgb *= temporal.previous.y;       // the previous frame's storage scale -> this one's
     if (!finiteVec(history)) return current;  // a host's NaN once in the volume: not kept
-    return blendSlices(history, current, temporal.cameraDelta.w, end - start);
+    // Each trilinear resample blurs the history by a variance of b = Σ f(1 - f) froxel² (0 for a still
+    // view, which reads each froxel's own texel); an exponential blend of weight w adds these up to
+    // (1 - w)/w · b. The weight is raised to w ≥ b/(b + B), so the accumulated blur stays below
+    // B = kFroxelTemporalBlurBudget while the view moves (the blend weight alone, 0.05: up to 19·b).
+    float b = dot(f * (1.0 - f), vec3(1.0));
+    float w = max(temporal.cameraDelta.w, b / (b + kFroxelTemporalBlurBudget));
+    return blendSlices(history, current, w, end - start);
 }
 #endif
 

@@ -127,16 +127,16 @@ TEST_F(CoreTemporalRules, ChangedLocalLightsRejectTheirOldAndNewSpheres) {
     step(f);
     EXPECT_TRUE(step(f).rejected.empty());
 
-    lights[1].position.x += 0.1;  // 1% of its range: kept
+    lights[1].position.x += 0.005;  // 0.05% of its range: kept
     TemporalFrame t = step(f);
     EXPECT_TRUE(t.historyValid);
     EXPECT_TRUE(t.rejected.empty());
-    lights[1].position.x += 0.15;  // 2.5% from the state last rejected for
+    lights[1].position.x += 0.007;  // 0.12% from the state last rejected for
     t = step(f);
     ASSERT_EQ(t.rejected.size(), 2u);
     const glm::dvec3 camera = f.camera.position;
     EXPECT_NEAR(t.rejected[0].center.x, 10.0 - camera.x, 1e-5);
-    EXPECT_NEAR(t.rejected[1].center.x, 10.25 - camera.x, 1e-5);
+    EXPECT_NEAR(t.rejected[1].center.x, 10.012 - camera.x, 1e-5);
     EXPECT_EQ(t.rejected[1].radius, 10.0f);
     EXPECT_TRUE(step(f).rejected.empty());
 

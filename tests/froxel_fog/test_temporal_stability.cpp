@@ -115,8 +115,14 @@ TEST_P(FroxelFogTemporalStability, EveryFrameFiniteAndHistoryThatDoesNotBelongIs
         EXPECT_GT(sumDifference(a, b), 0.0);
         return;
     }
+    // No history belongs to the new view: the frame is the same whatever history the context held. The
+    // other context accumulated other frames (other jitter offsets, so another history) before the same
+    // move. (Not compared with a camera cut: the ray-marched fog takes the filtered estimate where a
+    // texel has come into view, its own march after a cut; fog.md#temporal.)
+    for (uint64_t n = first + 100; n < first + 104; ++n)
+        render(*alone, base, n, false);
     const std::vector<float> a = render(*accumulating, moved, next, false);
-    const std::vector<float> b = render(*alone, moved, next, true);
+    const std::vector<float> b = render(*alone, moved, next, false);
     EXPECT_EQ(sumDifference(a, b), 0.0);
     render(*accumulating, moved, next + 1, false);  // and on from there
 }

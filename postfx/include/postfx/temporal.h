@@ -26,7 +26,7 @@ struct TemporalSettings {
 // beyond it.
 //
 // A local light is "changed" when its position moved by more than this fraction of its range [1] ...
-inline constexpr float kTemporalLightMoveFraction = 0.02f;
+inline constexpr float kTemporalLightMoveFraction = 0.001f;
 // ... or its intensity (largest RGB change over its largest channel), or its range, changed by more than
 // this relative amount [1] (turning a light on or off is always a change) ...
 inline constexpr float kTemporalLightRelativeChange = 0.02f;
