@@ -33,8 +33,8 @@ struct MotionInfo {
 // still (temporal off) 16-frame error from the sweep's preset row.
 struct MotionTarget {
     const MotionResult* motion = nullptr;  // nullptr: not measured
-    const Result* still = nullptr;
-    double ratio = NAN;  // motion->meanError() / still 16-frame error
+    const MotionResult* still = nullptr;   // the same sequence with temporal off: its still 16 frames
+    double ratio = NAN;                    // motion->meanError() / still 16-frame error
     bool met() const { return ratio <= kMotionTargetRatio; }
 };
 MotionTarget motionTarget(const RunInfo& info, const std::vector<Result>& results,

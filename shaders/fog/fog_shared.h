@@ -24,8 +24,8 @@ PFX_CONST(uint, kFogBindingScatter, 6);
 // accumulation this frame writes, this frame's distances (written by the march) and the TemporalUniforms.
 PFX_CONST(uint, kFogBindingHistoryIn, 7);   // storage image, color format: previous (L, T)
 PFX_CONST(uint, kFogBindingHistoryOut, 8);  // storage image, color format: accumulated (L, T)
-PFX_CONST(uint, kFogBindingDistanceIn, 9);  // storage image r32f: previous ray-end distance [m]
-PFX_CONST(uint, kFogBindingDistance, 10);   // storage image r32f: this frame's ray-end distance [m]
+PFX_CONST(uint, kFogBindingDistanceIn, 9);  // storage image r32f: previous surface distance [m], ∞: none
+PFX_CONST(uint, kFogBindingDistance, 10);   // storage image r32f: this frame's surface distance [m]
 PFX_CONST(uint, kFogBindingTemporal, 11);   // uniform buffer: TemporalUniforms
 // A history texel is used for a pixel when the distance its ray ended at (min(surface, max distance))
 // is within this fraction of the distance from the previous camera to the pixel's point (disocclusion).
@@ -33,6 +33,9 @@ PFX_CONST(float, kFogTemporalDistanceTolerance, 0.1f);
 // A texel whose history moved on screen by at least this many texels blends the depth-aware 3×3 mean of
 // this frame's march instead of its own value; a still one its own (temporal.comp, step 5).
 PFX_CONST(float, kFogTemporalFilterMotion, 0.5f);
+// ... over the neighbours whose surface is the texel's (kFogTemporalDistanceTolerance) and whose fog is
+// within this of its own: transmittance absolute, in-scattered light relative (temporal.comp, similarFog).
+PFX_CONST(float, kFogTemporalFilterRange, 0.25f);
 
 // Upsampling of a reduced-resolution march (shaders/fog/upsample.comp): a low-resolution sample
 // is used for a pixel when its surface distance is within this fraction of the pixel's [1].

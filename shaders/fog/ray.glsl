@@ -24,10 +24,10 @@ vec3 fogRayDirection(uvec2 pixel) {
     return normalize(p.xyz / p.w);
 }
 
-// Where the fog along the ray ends: the surface or the fog's max distance, whichever is nearer [m];
-// -1 for a NaN depth (a host's bad depth), a distance no temporal reprojection matches.
-float fogRayEndDistance(FogRay ray) {
-    return isnan(ray.surfaceDistance) ? -1.0 : min(ray.surfaceDistance, fog.medium.w);
+// The surface distance the temporal pass compares (∞ without geometry); -1 for a NaN depth (a host's
+// bad depth), a distance no reprojection and no neighbour matches.
+float fogTemporalDistance(FogRay ray) {
+    return isnan(ray.surfaceDistance) ? -1.0 : ray.surfaceDistance;
 }
 
 // Reduced resolution: the full-resolution pixel whose ray the scatter texel `texel` marches, the one

@@ -1,8 +1,9 @@
 #version 450
 // Temporal accumulation of the ray-marched fog (docs/effects/fog.md#temporal): one invocation per texel
 // of the march blends this frame's (L, T) with the previous frames' accumulated (L, T), reprojected.
-//   1. The march stored each texel's ray-end distance, min(surface, max distance).
-//   2. The ray ends at p = dir · distance; the previous camera saw p at previousClip · p. Off the
+//   1. The march stored each texel's surface distance (∞ without geometry, -1 for a NaN depth).
+//   2. The ray ends at p = dir · min(surface, max distance); the previous camera saw p at
+//      previousClip · p. Off the
 //      previous image, or behind the previous camera: no history.
 //   3. Of the 2×2 history texels around it (this texel moved by the point's screen motion), those
 //      whose own ray ended within kFogTemporalDistanceTolerance of |p - previous camera| are blended
@@ -79,7 +80,7 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
         ivec2 q = clamp(p0 + o, ivec2(0), size - 1);
         float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
         vec4 h = imageLoad(historyIn, q);
-        float d = imageLoad(distanceIn, q).r;
+        float d = min(imageLoad(distanceIn, q).r, maxDistance);  // where that texel's ray ended
         if (w > 0.0 && finite(h) && abs(d - expected) <= kFogTemporalDistanceTolerance * expected) {
             sum += w * h;
             weight += w;
@@ -90,6 +91,22 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
     if (!(weight > 1e-3)) return false;
     history = sum / weight;
     return true;
+}
+
+// Whether a neighbour's surface distance `d` is this texel's `own` within kFogTemporalDistanceTolerance,
+// surfaces beyond the fog's reach included: sky against ground beyond max distance differ (their rays end
+// at the same distance, but one goes up through no fog and the other down through the densest).
+bool sameSurface(float d, float own) {
+    return isinf(own) ? isinf(d) : abs(d - own) <= kFogTemporalDistanceTolerance * own;
+}
+
+// Whether a neighbour's (L, T) `n` is within kFogTemporalFilterRange of this texel's `own` (T absolute,
+// the sum of L's channels relative to the larger): more than the jitter's noise, less than an edge in the
+// fog that depth does not show (a shadow's edge; a ray just above a fog layer beside one just inside).
+bool similarFog(vec4 n, vec4 own) {
+    float l = n.r + n.g + n.b, lOwn = own.r + own.g + own.b;
+    return abs(n.a - own.a) <= kFogTemporalFilterRange &&
+           abs(l - lOwn) <= kFogTemporalFilterRange * max(abs(l), abs(lOwn));
 }
 
 // This group's texels and a one-texel border: this frame's march result and its ray-end distance.
@@ -128,8 +145,7 @@ void main() {
             if (!finite(n)) continue;
             lo = min(lo, n);
             hi = max(hi, n);
-            if (abs(tileDistance[local.y + y][local.x + x] - distance) <=
-                kFogTemporalDistanceTolerance * distance) {
+            if (sameSurface(tileDistance[local.y + y][local.x + x], distance) && similarFog(n, current)) {
                 sum += n;
                 count += 1.0;
             }
@@ -142,7 +158,7 @@ void main() {
     uvec2 source = fogSourcePixel(texel);
     if (temporal.state.x != 0u && finite(current) && distance >= 0.0) {
         bool found =
-            reprojectedHistory(fogRayDirection(source) * distance, texel,
+            reprojectedHistory(fogRayDirection(source) * min(distance, fog.medium.w), texel,
                                (vec2(source) + 0.5) / vec2(fog.extent.xy), fog.medium.w, history, motion);
         // A still texel keeps its own jitter sequence, stratified over the frames: its own value, so a
         // still view converges to the unfiltered mean; a moving one (or one come into view) the filtered.
