@@ -62,6 +62,9 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
     if (!(clip.w > 0.0)) return false;
     vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
     vec2 offset = (uv - uvSource) * vec2(fog.scatterExtent.xy);
+    // A still view reprojects each texel a rounding error beside itself: read the texel itself (one tap,
+    // not four; no filter).
+    offset = mix(offset, vec2(0.0), lessThan(abs(offset), vec2(1e-3)));
     motion = length(offset);
     if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0)))) return false;
     float expected = min(length(point + temporal.cameraDelta.xyz), maxDistance);
@@ -79,9 +82,10 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
         ivec2 o = ivec2(k & 1, k >> 1);
         ivec2 q = clamp(p0 + o, ivec2(0), size - 1);
         float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        if (!(w > 0.0)) continue;  // not loaded
         vec4 h = imageLoad(historyIn, q);
         float d = min(imageLoad(distanceIn, q).r, maxDistance);  // where that texel's ray ended
-        if (w > 0.0 && finite(h) && abs(d - expected) <= kFogTemporalDistanceTolerance * expected) {
+        if (finite(h) && abs(d - expected) <= kFogTemporalDistanceTolerance * expected) {
             sum += w * h;
             weight += w;
         }
@@ -134,23 +138,16 @@ void main() {
     vec4 current = tileScatter[local.y][local.x];
     float distance = tileDistance[local.y][local.x];
 
-    // The 3×3 neighbourhood: its min/max box clamps the history; the mean of the texels whose rays end
-    // at this one's distance is the filtered estimate (step 5 above).
+    // The 3×3 neighbourhood's min/max box clamps the history.
     vec4 lo = current, hi = current;
-    vec4 sum = vec4(0.0);
-    float count = 0.0;
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
             vec4 n = tileScatter[local.y + y][local.x + x];
-            if (!finite(n)) continue;
-            lo = min(lo, n);
-            hi = max(hi, n);
-            if (sameSurface(tileDistance[local.y + y][local.x + x], distance) && similarFog(n, current)) {
-                sum += n;
-                count += 1.0;
+            if (finite(n)) {
+                lo = min(lo, n);
+                hi = max(hi, n);
             }
         }
-    vec4 filtered = count > 0.0 ? sum / count : current;
 
     vec4 result = current;
     vec4 history;
@@ -161,8 +158,24 @@ void main() {
             reprojectedHistory(fogRayDirection(source) * min(distance, fog.medium.w), texel,
                                (vec2(source) + 0.5) / vec2(fog.extent.xy), fog.medium.w, history, motion);
         // A still texel keeps its own jitter sequence, stratified over the frames: its own value, so a
-        // still view converges to the unfiltered mean; a moving one (or one come into view) the filtered.
-        vec4 estimate = mix(current, filtered, min(motion / kFogTemporalFilterMotion, 1.0));
+        // still view converges to the unfiltered mean; a moving one (or one come into view) the mean of
+        // its neighbours with its surface and its fog (step 5 above).
+        vec4 estimate = current;
+        if (motion > 0.0) {
+            vec4 sum = vec4(0.0);
+            float count = 0.0;
+            for (int y = -1; y <= 1; ++y)
+                for (int x = -1; x <= 1; ++x) {
+                    vec4 n = tileScatter[local.y + y][local.x + x];
+                    if (finite(n) && sameSurface(tileDistance[local.y + y][local.x + x], distance) &&
+                        similarFog(n, current)) {
+                        sum += n;
+                        count += 1.0;
+                    }
+                }
+            if (count > 0.0)
+                estimate = mix(current, sum / count, min(motion / kFogTemporalFilterMotion, 1.0));
+        }
         result = found ? mix(clamp(history, lo, hi), estimate, temporal.cameraDelta.w) : estimate;
     }
     imageStore(historyOut, ivec2(texel), result);
