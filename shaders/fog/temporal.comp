@@ -3,19 +3,19 @@
 // of the march blends this frame's (L, T) with the previous frames' accumulated (L, T), reprojected.
 //   1. The march stored each texel's surface distance (∞ without geometry, -1 for a NaN depth).
 //   2. The ray ends at p = dir · min(surface, max distance); the previous camera saw p at
-//      previousClip · p. Off the
-//      previous image, or behind the previous camera: no history.
+//      previousClip · p. Off the previous image, or behind the previous camera: no history.
 //   3. Of the 2×2 history texels around it (this texel moved by the point's screen motion), those
 //      whose own ray ended within kFogTemporalDistanceTolerance of |p - previous camera| are blended
 //      bilinearly (disocclusion: none matches, no history); non-finite history never matches.
 //   4. The history is clamped to the min/max box of this frame's 3×3 neighbourhood (Karis 2014), so
 //      what no longer belongs (moving shadows, a changed medium) cannot stay.
 //   5. This frame's estimate: a still texel's own value; a texel that moved by at least
-//      kFogTemporalFilterMotion texels the mean of the 3×3 texels whose rays end within
-//      kFogTemporalDistanceTolerance of its own (depth-aware: no fog crosses a silhouette); in between
-//      a mix. A still texel's jitter sequence is stratified over the frames (interleaved gradient
-//      noise); motion breaks it, as its history comes from other texels, but neighbouring texels'
-//      offsets are spread over the step, so their mean is a stratified estimate of this frame.
+//      kFogTemporalFilterMotion texels the mean of the 3×3 texels whose surface is within
+//      kFogTemporalDistanceTolerance of its own (no fog crosses a silhouette; sky only with sky) and
+//      whose fog is within kFogTemporalFilterRange of its own (similarFog); in between a mix. A
+//      still texel's jitter sequence is stratified over the frames (interleaved gradient noise);
+//      motion breaks it, as its history comes from other texels, but neighbouring texels' offsets
+//      are spread over the step, so their mean is a stratified estimate of this frame.
 //   6. result = history + w·(estimate - history), w = cameraDelta.w; without history (disoccluded, come
 //      into view) the estimate alone; after a reset, every texel its own value.
 // The result is the history, which upsample.comp composites at a reduced resolution; at full size this
