@@ -38,6 +38,13 @@ protected:
         EXPECT_TRUE(r) << error;
         return r;
     }
+    // The fog reference (1024 steps) of the last frame `r` renders.
+    demo::ImageF reference(demo::Renderer& r, const demo::Scene& scene) {
+        demo::ImageF image;
+        std::string message;
+        EXPECT_TRUE(r.renderReference(scene, image, message, 1024)) << message;
+        return image;
+    }
     double error(demo::Renderer& r, const demo::Scene& scene, const demo::ImageF& reference) {
         demo::ImageF image;
         std::string message;
@@ -58,9 +65,7 @@ TEST_F(FogTemporalTest, StillCameraConvergesTowardTheReference) {
         auto one = renderer(1);
         auto many = renderer(32);
         ASSERT_TRUE(one && many);
-        demo::ImageF reference;
-        std::string message;
-        ASSERT_TRUE(one->renderReference(scene, reference, message, 1024)) << message;
+        const demo::ImageF reference = this->reference(*one, scene);
         const double single = error(*one, scene, reference);
         scene.fog.temporal.enabled = true;
         const double accumulated = error(*many, scene, reference);
@@ -89,9 +94,7 @@ TEST_F(FogTemporalTest, MovingCameraStillAccumulates) {
     auto one = renderer(16);
     auto many = renderer(16);
     ASSERT_TRUE(one && many);
-    demo::ImageF reference;
-    std::string message;
-    ASSERT_TRUE(one->renderReference(scene, reference, message, 1024)) << message;
+    const demo::ImageF reference = this->reference(*one, scene);
     const double alone = error(*one, scene, reference);
     scene.fog.temporal.enabled = true;
     const double accumulated = error(*many, scene, reference);

@@ -29,23 +29,16 @@ constexpr core::Binding kDistance{gpu::kFogBindingDistance, VK_DESCRIPTOR_TYPE_S
 constexpr core::Binding kReducedTemporalBindings[] = {kDepth,         kShadowMap,    kNoiseTexture,
                                                       kUniformBuffer, kScatterImage, kDistance};
 constexpr core::Binding kUpsampleBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kScatterImage};
-constexpr core::Binding kTemporalBindings[] = {kUniformBuffer,
-                                               kScatterImage,
-                                               {gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                               {gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                               {gpu::kFogBindingDistanceIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                               kDistance,
-                                               {gpu::kFogBindingTemporal, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
-constexpr core::Binding kTemporalCompositeBindings[] = {
-    kColorIn,
-    kColorOut,
-    kUniformBuffer,
-    kScatterImage,
-    {gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    {gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    {gpu::kFogBindingDistanceIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-    kDistance,
-    {gpu::kFogBindingTemporal, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}};
+constexpr core::Binding kHistoryIn{gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+constexpr core::Binding kHistoryOut{gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+constexpr core::Binding kDistanceIn{gpu::kFogBindingDistanceIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+constexpr core::Binding kTemporalBuffer{gpu::kFogBindingTemporal, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+constexpr core::Binding kTemporalBindings[] = {kUniformBuffer, kScatterImage, kHistoryIn,     kHistoryOut,
+                                               kDistanceIn,    kDistance,     kTemporalBuffer};
+// At full size the temporal pass also composites: the temporal bindings and the color images.
+constexpr core::Binding kTemporalCompositeBindings[] = {kColorIn,      kColorOut,  kUniformBuffer,
+                                                        kScatterImage, kHistoryIn, kHistoryOut,
+                                                        kDistanceIn,   kDistance,  kTemporalBuffer};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 
 // Each color-writing kernel has an RGBA16F and an RGBA32F variant (the color format).
