@@ -1,6 +1,7 @@
 // Umbrella header of postfx, volumetric post effects for Vulkan renderers.
 #pragma once
 
+#include <postfx/atmosphere.h>
 #include <postfx/context.h>
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>

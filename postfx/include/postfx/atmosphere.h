@@ -1,0 +1,84 @@
+// Sky and atmosphere (Hillaire, "A Scalable and Production Ready Sky and Atmosphere Rendering Technique",
+// EGSR 2020): settings. The model is in docs/effects/atmosphere.md. Groundwork only: the settings, their
+// checks and a CPU model; no GPU effect reads them yet.
+//
+// Every setting: unit, default, valid range. Out-of-range values are rejected (validateAtmosphereSettings)
+// with an error naming the field by its scene-file key under effects.atmosphere ("atmosphere.top_radius").
+// Defaults are Earth as in the paper's reference code. World y = 0 is the ground; the planet's centre is at
+// (0, -groundRadius, 0).
+#pragma once
+
+#include <postfx/export.h>
+#include <postfx/result.h>
+#include <postfx/types.h>
+
+#include <cstdint>
+
+namespace postfx {
+
+struct AtmosphereSettings {
+    bool enabled = false;
+
+    // Planet. Radii of the ground sphere and of the atmosphere's top [m]: ground in [1, 1e8]; top greater
+    // than ground and at most 1e8.
+    float groundRadius = 6360e3f;
+    float topRadius = 6460e3f;
+
+    // Rayleigh (air molecules): scattering only, density exp(-h / rayleighScaleHeight), h the altitude.
+    // Scattering coefficient at the ground per RGB channel [1/m]; each in [0, 1].
+    Vec3 rayleighScattering{5.802e-6f, 13.558e-6f, 33.1e-6f};
+    float rayleighScaleHeight = 8000.0f;  // [m]; > 0 and <= 1e7
+
+    // Mie (aerosols): scattering and absorption, density exp(-h / mieScaleHeight), grey.
+    float mieScattering = 3.996e-6f;  // at the ground [1/m]; in [0, 1]
+    float mieAbsorption = 4.4e-6f;    // at the ground [1/m]; in [0, 1]
+    float mieScaleHeight = 1200.0f;   // [m]; > 0 and <= 1e7
+    // Cornette–Shanks asymmetry g [1]; in (-1, 1). g > 0 scatters forward: brightest toward the sun.
+    float mieAnisotropy = 0.8f;
+
+    // Ozone: absorption only, density max(0, 1 - |h - ozoneCenterHeight| / ozoneHalfWidth) (a tent).
+    Vec3 ozoneAbsorption{0.650e-6f, 1.881e-6f, 0.085e-6f};  // at the tent's peak [1/m]; each in [0, 1]
+    float ozoneCenterHeight = 25000.0f;                     // altitude of the peak [m]; in [0, 1e7]
+    float ozoneHalfWidth = 15000.0f;                        // [m]; > 0 and <= 1e7
+
+    Vec3 groundAlbedo{0.3f};  // Lambertian ground's albedo per RGB channel [1]; each in [0, 1]
+
+    // Add the multiple-scattering LUT's term Ψ (Hillaire eq. 10); false: single scattering only.
+    bool multipleScattering = true;
+    // Angular radius of the sun disk drawn on sky pixels [deg]; in [0, 45]; 0: no disk (the sun still
+    // lights). 0.2678 is the sun's as seen from Earth.
+    float sunAngularRadiusDeg = 0.2678f;
+    // The ambient term of what the atmosphere lights comes from the sky (an irradiance integrated from the
+    // sky) instead of FrameInfo's constant.
+    bool ambientFromSky = false;
+
+    // LUTs: sizes [texels] and march steps, defaults as in the paper.
+    // Transmittance LUT: (view height, cos view zenith), Bruneton's horizon mapping. Each side in [4, 4096].
+    UVec2 transmittanceLutSize{256, 64};
+    uint32_t transmittanceSteps = 40;  // in [1, 1024]
+    // Multiple-scattering LUT: (cos sun zenith, height). Each side in [4, 1024].
+    UVec2 multipleScatteringLutSize{32, 32};
+    // Directions integrated per texel: a perfect square (stratified n×n over the sphere) in [4, 1024].
+    uint32_t multipleScatteringDirections = 64;
+    uint32_t multipleScatteringSteps = 20;  // per direction; in [1, 1024]
+    // Sky-view LUT: (azimuth relative to the sun, view zenith), non-linear around the horizon. Each side in
+    // [4, 4096].
+    UVec2 skyViewLutSize{192, 108};
+    uint32_t skyViewSteps = 30;  // in [1, 1024]
+    // Aerial-perspective LUT: froxels over the camera frustum (x, y across the view; z slices of equal
+    // depth). Each side in [4, 256].
+    UVec3 aerialPerspectiveLutSize{32, 32, 32};
+    // Depth the slices cover from the camera [m]; > 0 and <= 1e7. 32 km: 1 km a slice as in the paper (the
+    // reference code uses 4 km a slice).
+    float aerialPerspectiveDistance = 32000.0f;
+    // March steps per slice of depth: slice k (0-based) is marched with (k + 1) · this steps from the camera,
+    // as the reference code's 2 per slice; in [1, 64].
+    uint32_t aerialPerspectiveStepsPerSlice = 2;
+};
+
+// Checks every setting against its documented range: InvalidArgument naming the first bad field with its
+// scene-file key ("atmosphere.top_radius: must be greater than ground_radius (6.36e+06)"). Checked whether
+// or not `enabled` is set.
+POSTFX_API Status validateAtmosphereSettings(const AtmosphereSettings& settings);
+
+}  // namespace postfx

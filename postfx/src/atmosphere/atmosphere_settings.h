@@ -1,0 +1,27 @@
+// Checks of AtmosphereSettings (postfx/atmosphere.h), shared by the effect to come and the CPU reference.
+#pragma once
+
+#include <postfx/atmosphere.h>
+#include <postfx/result.h>
+
+namespace postfx::atmosphere {
+
+// Bounds of the documented ranges (postfx/atmosphere.h, docs/effects/atmosphere.md).
+constexpr double kMinGroundRadius = 1.0;  // [m]
+constexpr double kMaxRadius = 1e8;        // ground and top [m]
+constexpr double kMaxCoefficient = 1.0;   // scattering and absorption [1/m]
+constexpr double kMaxHeight = 1e7;        // scale heights, ozone centre and half width, AP distance [m]
+constexpr double kMaxSunAngularRadiusDeg = 45.0;
+constexpr uint32_t kMinLutSide = 4;
+constexpr uint32_t kMaxLut2dSide = 4096;  // transmittance and sky-view
+constexpr uint32_t kMaxMultipleScatteringSide = 1024;
+constexpr uint32_t kMaxAerialPerspectiveSide = 256;
+constexpr uint32_t kMaxSteps = 1024;                           // any LUT's march
+constexpr uint32_t kMinDirections = 4, kMaxDirections = 1024;  // multiple scattering, a perfect square
+constexpr uint32_t kMaxStepsPerSlice = 64;                     // aerial perspective
+
+// InvalidArgument naming the field by its key under effects.atmosphere ("atmosphere.mie_anisotropy: 1 is
+// outside (-1, 1)") for any value out of range, NaN or Inf; success otherwise.
+Status validateSettings(const AtmosphereSettings& settings);
+
+}  // namespace postfx::atmosphere
