@@ -1,6 +1,6 @@
 // Sky and atmosphere (Hillaire, "A Scalable and Production Ready Sky and Atmosphere Rendering Technique",
-// EGSR 2020): settings. The model is in docs/effects/atmosphere.md. Groundwork only: the settings, their
-// checks and a CPU model; no GPU effect reads them yet.
+// EGSR 2020): settings (FrameInfo::atmosphere) and the model's CPU evaluations a host may use to light its
+// own surfaces consistently. The model and its LUTs are in docs/effects/atmosphere.md.
 //
 // Every setting: unit, default, valid range. Out-of-range values are rejected (validateAtmosphereSettings)
 // with an error naming the field by its scene-file key under effects.atmosphere ("atmosphere.top_radius").
@@ -80,5 +80,20 @@ struct AtmosphereSettings {
 // scene-file key ("atmosphere.top_radius: must be greater than ground_radius (6.36e+06)"). Checked whether
 // or not `enabled` is set.
 POSTFX_API Status validateAtmosphereSettings(const AtmosphereSettings& settings);
+
+// The sun's transmittance through the atmosphere from world position `worldPosition` [m] toward `toSun`
+// (normalised here) [1] per RGB channel, evaluated in double without LUTs: 0 where the planet hides the sun,
+// exp(-optical depth to the top boundary) otherwise. A position below the ground is clamped onto it.
+// Settings must be valid (validateAtmosphereSettings); `enabled` is ignored.
+POSTFX_API Vec3 atmosphereSunTransmittance(const AtmosphereSettings& settings, const DVec3& worldPosition,
+                                           const Vec3& toSun);
+
+// Irradiance the sky (the atmosphere's scattered light, not the sun's direct beam) gives a surface at
+// `worldPosition` facing the local zenith [lux], for a sun of `sunIlluminance` [lux] outside the atmosphere
+// toward `toSun`: ∫ L_sky(ω)·cos θ dω over the upper hemisphere, L_sky with single and (settings'
+// multipleScattering) multiple scattering. A Lambertian surface's ambient radiance is this / π.
+// Settings must be valid; `enabled` is ignored.
+POSTFX_API Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& worldPosition,
+                                        const Vec3& toSun, const Vec3& sunIlluminance);
 
 }  // namespace postfx

@@ -6,6 +6,7 @@
 // instance-level function through the host's vkGetInstanceProcAddr; it links no Vulkan loader.
 #pragma once
 
+#include <postfx/atmosphere.h>
 #include <postfx/export.h>
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>
@@ -91,6 +92,9 @@ struct FrameInfo {
 
     // Effect settings. Each effect is off by default; the order they composite in is fixed
     // (docs/architecture.md, "Composite order").
+    // Sky and atmosphere (docs/effects/atmosphere.md): with it on, sun.illuminance is the illuminance
+    // outside the atmosphere, and every effect attenuates it by the atmosphere's transmittance.
+    AtmosphereSettings atmosphere;
     FogSettings fog;              // ray-marched fog (docs/effects/fog.md)
     FroxelFogSettings froxelFog;  // froxel fog (docs/effects/froxel-fog.md); not together with `fog`
 };
