@@ -1,0 +1,344 @@
+#include "atmosphere/atmosphere_effect.h"
+
+#include "atmosphere/atmosphere_settings.h"
+#include "core/temporal.h"
+#include "postfx_objects_spirv.h"
+
+#include "atmosphere/atmosphere_shared.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace postfx::atmosphere {
+namespace {
+
+using core::SamplerKind;
+using core::Use;
+
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+
+// Each kernel's descriptor layout: exactly the bindings it reads or writes (atmosphere_shared.h).
+constexpr core::Binding kUniformBuffer{gpu::kAtmosphereBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+constexpr core::Binding kTransmittanceOut{gpu::kAtmosphereBindingTransmittance, kStorage};
+constexpr core::Binding kTransmittanceIn{gpu::kAtmosphereBindingTransmittance, kSampled};
+constexpr core::Binding kMultiScatteringOut{gpu::kAtmosphereBindingMultiScattering, kStorage};
+constexpr core::Binding kMultiScatteringIn{gpu::kAtmosphereBindingMultiScattering, kSampled};
+constexpr core::Binding kSkyViewOut{gpu::kAtmosphereBindingSkyView, kStorage};
+constexpr core::Binding kSkyViewIn{gpu::kAtmosphereBindingSkyView, kSampled};
+constexpr core::Binding kApScatteringOut{gpu::kAtmosphereBindingApScattering, kStorage};
+constexpr core::Binding kApScatteringIn{gpu::kAtmosphereBindingApScattering, kSampled};
+constexpr core::Binding kApTransmittanceOut{gpu::kAtmosphereBindingApTransmittance, kStorage};
+constexpr core::Binding kApTransmittanceIn{gpu::kAtmosphereBindingApTransmittance, kSampled};
+constexpr core::Binding kColorIn{gpu::kAtmosphereBindingColorIn, kStorage};
+constexpr core::Binding kColorOut{gpu::kAtmosphereBindingColorOut, kStorage};
+constexpr core::Binding kDepth{gpu::kAtmosphereBindingDepth, kSampled};
+
+constexpr core::Binding kTransmittanceBindings[] = {kUniformBuffer, kTransmittanceOut};
+constexpr core::Binding kMultiScatteringBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringOut};
+constexpr core::Binding kSkyViewBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringIn,
+                                              kSkyViewOut};
+constexpr core::Binding kApBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringIn,
+                                         kApScatteringOut, kApTransmittanceOut};
+constexpr core::Binding kApplyBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringIn,
+                                            kSkyViewIn,     kApScatteringIn,  kApTransmittanceIn,
+                                            kColorIn,       kColorOut,        kDepth};
+
+const core::ComputePipelineDesc kTransmittancePass{
+    "atmosphere.transmittance", spirv::atmosphere_transmittance_comp, kTransmittanceBindings};
+const core::ComputePipelineDesc kMultiScatteringPass{
+    "atmosphere.multiple_scattering", spirv::atmosphere_multiple_scattering_comp, kMultiScatteringBindings};
+const core::ComputePipelineDesc kSkyViewPass{"atmosphere.sky_view", spirv::atmosphere_sky_view_comp,
+                                             kSkyViewBindings};
+const core::ComputePipelineDesc kApPass{"atmosphere.aerial_perspective",
+                                        spirv::atmosphere_aerial_perspective_comp, kApBindings};
+// In the color format: RGBA16F and RGBA32F.
+const core::ComputePipelineDesc kApplyPass[2] = {
+    {"atmosphere.apply", spirv::atmosphere_apply_comp, kApplyBindings},
+    {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F, kApplyBindings}};
+
+uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kAtmosphereGroupSize) {
+    return (size + groupSize - 1) / groupSize;
+}
+
+// The keys of what each LUT is built from (core/frame_graph.h, persistentImage): every setting it reads.
+uint64_t transmittanceKey(const AtmosphereSettings& s) {
+    using core::hashValue;
+    uint64_t h = hashValue(0x61746d6fu, s.groundRadius);
+    h = hashValue(h, s.topRadius);
+    for (int c = 0; c < 3; ++c) {
+        h = hashValue(h, s.rayleighScattering[c]);
+        h = hashValue(h, s.ozoneAbsorption[c]);
+        h = hashValue(h, s.groundAlbedo[c]);
+    }
+    h = hashValue(h, s.rayleighScaleHeight);
+    h = hashValue(h, s.mieScattering);
+    h = hashValue(h, s.mieAbsorption);
+    h = hashValue(h, s.mieScaleHeight);
+    h = hashValue(h, s.mieAnisotropy);
+    h = hashValue(h, s.ozoneCenterHeight);
+    h = hashValue(h, s.ozoneHalfWidth);
+    h = hashValue(h, s.transmittanceLutSize.x);
+    h = hashValue(h, s.transmittanceLutSize.y);
+    return hashValue(h, s.transmittanceSteps);
+}
+uint64_t multipleScatteringKey(const AtmosphereSettings& s) {
+    using core::hashValue;
+    uint64_t h = hashValue(transmittanceKey(s), s.multipleScatteringLutSize.x);
+    h = hashValue(h, s.multipleScatteringLutSize.y);
+    h = hashValue(h, s.multipleScatteringDirections);
+    h = hashValue(h, s.multipleScatteringSteps);
+    return hashValue(h, s.multipleScattering);
+}
+uint64_t skyViewSettingsKey(const AtmosphereSettings& s) {
+    using core::hashValue;
+    uint64_t h = hashValue(multipleScatteringKey(s), s.skyViewLutSize.x);
+    h = hashValue(h, s.skyViewLutSize.y);
+    return hashValue(h, s.skyViewSteps);
+}
+uint64_t aerialSettingsKey(const AtmosphereSettings& s) {
+    using core::hashValue;
+    uint64_t h = multipleScatteringKey(s);
+    for (int a = 0; a < 3; ++a)
+        h = hashValue(h, s.aerialPerspectiveLutSize[a]);
+    h = hashValue(h, s.aerialPerspectiveDistance);
+    return hashValue(h, s.aerialPerspectiveStepsPerSlice);
+}
+uint64_t viewKey(const LutView& v) {
+    uint64_t h = core::hashValue(v.settingsKey, v.camera);
+    h = core::hashValue(h, v.toSun);
+    return core::hashValue(h, v.viewToClip);
+}
+
+glm::dmat4 rotationOnly(const glm::mat4& view) {
+    glm::dmat4 r(view);
+    r[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    return r;
+}
+
+double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
+    // atan2(|a×b|, a·b): accurate for small angles, where acos of the dot product is not.
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+// The largest angle between the view rays of two cameras through the image's corners and centre.
+double frustumAngle(const glm::dmat4& viewToClipA, const glm::dmat4& viewToClipB) {
+    const glm::dmat4 a = glm::inverse(viewToClipA), b = glm::inverse(viewToClipB);
+    double largest = 0.0;
+    for (const glm::dvec2 ndc :
+         {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(-1, 1), glm::dvec2(1, 1), glm::dvec2(0, 0)}) {
+        const glm::dvec4 pa = a * glm::dvec4(ndc, 0.5, 1.0), pb = b * glm::dvec4(ndc, 0.5, 1.0);
+        largest = std::max(largest, angleBetween(glm::dvec3(pa) / pa.w, glm::dvec3(pb) / pb.w));
+    }
+    return largest;
+}
+
+double sunZenithAngle(const LutView& v) {
+    return angleBetween(v.camera, v.toSun);
+}
+
+// The camera's altitude as a fraction of the atmosphere's thickness -> the sky's blend from the
+// sky-view LUT (0) to marching each pixel (1).
+double skyMarchBlend(const AtmosphereSettings& s, const glm::dvec3& camera) {
+    const double fraction = (glm::length(camera) - s.groundRadius) / (double(s.topRadius) - s.groundRadius);
+    const double end = gpu::kAtmosphereSkyViewMaxAltitude, width = gpu::kAtmosphereSkyViewBlend;
+    return std::clamp((fraction - (end - width)) / width, 0.0, 1.0);
+}
+
+gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth,
+                                      const AtmosphereEffect::Views& v, const glm::dvec3& camera,
+                                      double blend) {
+    const AtmosphereSettings& s = frame.atmosphere;
+    gpu::AtmosphereUniforms u{};
+    const glm::dmat4 viewToClip = glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view);
+    u.clipToView = glm::mat4(glm::inverse(viewToClip));
+    u.apViewToClip = glm::mat4(v.aerial.viewToClip);
+    u.apClipToView = glm::mat4(glm::inverse(v.aerial.viewToClip));
+    const double g = s.groundRadius, t = s.topRadius;
+    u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), float(blend));
+    u.rayleigh = glm::vec4(s.rayleighScattering, float(1.0 / s.rayleighScaleHeight));
+    u.mie = glm::vec4(s.mieScattering, s.mieAbsorption, float(1.0 / s.mieScaleHeight), s.mieAnisotropy);
+    u.ozone = glm::vec4(s.ozoneAbsorption, s.ozoneCenterHeight);
+    u.albedo = glm::vec4(s.groundAlbedo, s.ozoneHalfWidth);
+    u.camera = glm::vec4(glm::vec3(camera), float(glm::length(camera)));
+    u.apCamera = glm::vec4(glm::vec3(v.aerial.camera), s.aerialPerspectiveDistance);
+    u.apOffset = glm::vec4(glm::vec3(camera - v.aerial.camera), 0.0f);
+    const glm::dvec3 toSun = glm::normalize(glm::dvec3(frame.sun.toSun));
+    // The disk: cos α, and 1 / its solid angle 2π(1 - cos α) = 4π sin²(α/2) (no cancellation); none for α =
+    // 0.
+    const double alpha = glm::radians(double(s.sunAngularRadiusDeg));
+    const double halfSin = std::sin(0.5 * alpha);
+    u.toSun = glm::vec4(glm::vec3(toSun), alpha > 0.0 ? float(std::cos(alpha)) : 2.0f);
+    u.sun =
+        glm::vec4(frame.sun.illuminance, alpha > 0.0 ? float(1.0 / (4.0 * M_PI * halfSin * halfSin)) : 0.0f);
+    const double skyRadius = std::clamp(glm::length(v.skyView.camera), g, t);
+    const double muS = glm::dot(glm::normalize(v.skyView.camera), v.skyView.toSun);
+    u.skyView =
+        glm::vec4(float(skyRadius), float(muS), depth.reversedZ ? 0.0f : 1.0f, float(lutStorageScale(s)));
+    u.transmittanceLut =
+        glm::uvec4(s.transmittanceLutSize.x, s.transmittanceLutSize.y, s.transmittanceSteps, 0u);
+    const auto side = uint32_t(std::lround(std::sqrt(double(s.multipleScatteringDirections))));
+    u.msLut = glm::uvec4(s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y, side,
+                         s.multipleScatteringSteps);
+    u.skyViewLut = glm::uvec4(s.skyViewLutSize.x, s.skyViewLutSize.y, s.skyViewSteps, 0u);
+    u.apLut = glm::uvec4(s.aerialPerspectiveLutSize.x, s.aerialPerspectiveLutSize.y,
+                         s.aerialPerspectiveLutSize.z, s.aerialPerspectiveStepsPerSlice);
+    u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u, 0u);
+    u.flags = glm::uvec4((s.multipleScattering ? gpu::kAtmosphereFlagMultipleScattering : 0u) |
+                             (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u),
+                         0u, 0u, 0u);
+    return u;
+}
+
+// The planet-centred camera, clamped onto the ground when below it (docs/effects/atmosphere.md).
+glm::dvec3 planetCamera(const FrameInfo& frame) {
+    const double g = frame.atmosphere.groundRadius;
+    const glm::dvec3 p = glm::dvec3(frame.camera.position) + glm::dvec3(0.0, g, 0.0);
+    const double r = glm::length(p);
+    if (r >= g) return p;
+    return r > 0.0 ? p * (g / r) : glm::dvec3(0.0, g, 0.0);
+}
+
+core::ImageDesc lutDesc(VkImageType type, uint32_t x, uint32_t y, uint32_t z = 1) {
+    core::ImageDesc d;
+    d.type = type;
+    d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    d.extent = {x, y, z};
+    d.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    return d;
+}
+
+}  // namespace
+
+double lutStorageScale(const AtmosphereSettings& s) {
+    double tau = 0.0;
+    for (int c = 0; c < 3; ++c)
+        tau = std::max(tau, double(s.rayleighScattering[c]) * s.rayleighScaleHeight +
+                                double(s.mieScattering) * s.mieScaleHeight);
+    return std::clamp(1.0 / std::max(tau, 1e-30), 1e-3, 1e6);
+}
+
+AtmosphereEffect::AtmosphereEffect(const core::Gpu&) {}
+
+Status AtmosphereEffect::validate(const FrameInfo& frame) const {
+    if (!frame.atmosphere.enabled) return Status::success();
+    return validateSettings(frame.atmosphere);
+}
+
+AtmosphereEffect::Views AtmosphereEffect::views(const FrameInfo& frame) const {
+    const AtmosphereSettings& s = frame.atmosphere;
+    Views v;
+    LutView now;
+    now.valid = true;
+    now.camera = planetCamera(frame);
+    now.toSun = glm::normalize(glm::dvec3(frame.sun.toSun));
+    now.viewToClip = glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view);
+    const double distance = gpu::kAtmosphereRebuildDistance, angle = gpu::kAtmosphereRebuildAngle;
+
+    // Sky view: a function of the camera's radius and the sun's zenith angle alone.
+    v.skyViewUsed = skyMarchBlend(s, now.camera) < 1.0;
+    v.skyView = now;
+    v.skyView.settingsKey = skyViewSettingsKey(s);
+    v.skyView.viewToClip = glm::dmat4(1.0);
+    const LutView& sky = built_.skyView;
+    if (sky.valid && sky.settingsKey == v.skyView.settingsKey &&
+        std::abs(glm::length(sky.camera) - glm::length(now.camera)) < distance &&
+        std::abs(sunZenithAngle(sky) - sunZenithAngle(now)) < angle)
+        v.skyView = sky;
+
+    // Aerial perspective: the camera's position and frustum, and the sun.
+    v.aerial = now;
+    v.aerial.settingsKey = aerialSettingsKey(s);
+    const LutView& ap = built_.aerial;
+    if (ap.valid && ap.settingsKey == v.aerial.settingsKey &&
+        glm::length(ap.camera - now.camera) < distance && angleBetween(ap.toSun, now.toSun) < angle &&
+        frustumAngle(ap.viewToClip, now.viewToClip) < angle)
+        v.aerial = ap;
+    return v;
+}
+
+Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
+    const FrameInfo& frame = b.frame();
+    const AtmosphereSettings& s = frame.atmosphere;
+    const bool rgba32 = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT;
+    const Views v = views(frame);
+    const glm::dvec3 camera = planetCamera(frame);
+    const gpu::AtmosphereUniforms u =
+        buildUniforms(frame, b.depthConvention(), v, camera, skyMarchBlend(s, camera));
+    const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
+
+    const core::ImageRef transmittance = b.persistentImage(
+        kTransmittanceLut, lutDesc(VK_IMAGE_TYPE_2D, s.transmittanceLutSize.x, s.transmittanceLutSize.y),
+        transmittanceKey(s));
+    b.pass(kTransmittancePass, groupsFor(s.transmittanceLutSize.x), groupsFor(s.transmittanceLutSize.y), 1)
+        .bind(gpu::kAtmosphereBindingUniforms, uniforms)
+        .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::StorageWrite);
+
+    // Without multiple scattering (or without the sky-view LUT) the transmittance LUT stands in at the
+    // binding, never read.
+    core::ImageRef multiScattering = transmittance;
+    Use multiScatteringUse = Use::BoundOnly;
+    if (s.multipleScattering) {
+        multiScattering = b.persistentImage(
+            kMultipleScatteringLut,
+            lutDesc(VK_IMAGE_TYPE_2D, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y),
+            multipleScatteringKey(s));
+        multiScatteringUse = Use::Sampled;
+        b.pass(kMultiScatteringPass, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y, 1)
+            .bind(gpu::kAtmosphereBindingUniforms, uniforms)
+            .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::Sampled, SamplerKind::LinearClamp)
+            .bind(gpu::kAtmosphereBindingMultiScattering, multiScattering, Use::StorageWrite);
+    }
+    auto bindLuts = [&] {
+        b.bind(gpu::kAtmosphereBindingUniforms, uniforms)
+            .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::Sampled, SamplerKind::LinearClamp)
+            .bind(gpu::kAtmosphereBindingMultiScattering, multiScattering, multiScatteringUse,
+                  SamplerKind::LinearClamp);
+    };
+
+    core::ImageRef skyView = transmittance;
+    Use skyViewUse = Use::BoundOnly;
+    if (v.skyViewUsed) {
+        skyView =
+            b.persistentImage(kSkyViewLut, lutDesc(VK_IMAGE_TYPE_2D, s.skyViewLutSize.x, s.skyViewLutSize.y),
+                              viewKey(v.skyView));
+        skyViewUse = Use::Sampled;
+        b.pass(kSkyViewPass, groupsFor(s.skyViewLutSize.x), groupsFor(s.skyViewLutSize.y), 1);
+        bindLuts();
+        b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::StorageWrite);
+    }
+
+    const UVec3 ap = s.aerialPerspectiveLutSize;
+    const core::ImageDesc apDesc = lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z);
+    const uint64_t apKey = viewKey(v.aerial);
+    const core::ImageRef apScattering = b.persistentImage(kApScatteringLut, apDesc, apKey);
+    const core::ImageRef apTransmittance = b.persistentImage(kApTransmittanceLut, apDesc, apKey);
+    const uint32_t g3 = gpu::kAtmosphereApGroupSize;
+    b.pass(kApPass, groupsFor(ap.x, g3), groupsFor(ap.y, g3), groupsFor(ap.z, g3));
+    bindLuts();
+    b.bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::StorageWrite)
+        .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::StorageWrite);
+
+    const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
+    b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width), groupsFor(frame.color.extent.height), 1);
+    bindLuts();
+    b.bind(gpu::kAtmosphereBindingSkyView, skyView, skyViewUse, SamplerKind::LinearClamp)
+        .bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
+        .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::Sampled, SamplerKind::LinearClamp)
+        .bind(gpu::kAtmosphereBindingColorIn, source, Use::StorageRead)
+        .bind(gpu::kAtmosphereBindingDepth, b.host(core::HostImage::Depth), Use::Sampled)
+        .bind(gpu::kAtmosphereBindingColorOut, target, Use::StorageWrite);
+    return Status::success();
+}
+
+void AtmosphereEffect::recorded(const FrameInfo& frame, bool active) {
+    if (!active) {
+        built_ = {};
+        return;
+    }
+    const Views v = views(frame);
+    built_.aerial = v.aerial;
+    if (v.skyViewUsed) built_.skyView = v.skyView;
+}
+
+}  // namespace postfx::atmosphere

@@ -1,0 +1,76 @@
+// The atmosphere's header shared by its C++ (postfx/src/atmosphere) and its GLSL (shaders/atmosphere):
+// uniform struct, binding numbers, workgroup sizes, thresholds (docs/effects/atmosphere.md).
+#ifndef POSTFX_ATMOSPHERE_SHARED_H
+#define POSTFX_ATMOSPHERE_SHARED_H
+
+#include "common/shared.h"
+
+#ifdef __cplusplus
+namespace postfx::gpu {
+#endif
+
+PFX_CONST(uint, kAtmosphereGroupSize, 8);  // LUT and apply workgroups: 8×8 invocations (AP: 4×4×4)
+PFX_CONST(uint, kAtmosphereApGroupSize, 4);
+// The multiple-scattering LUT: one workgroup per texel, one invocation per direction (at most 1024).
+PFX_CONST(uint, kAtmosphereMsGroupSize, 64);
+
+PFX_CONST(uint, kAtmosphereBindingUniforms, 0);         // uniform buffer: AtmosphereUniforms
+PFX_CONST(uint, kAtmosphereBindingTransmittance, 1);    // rgba16f 2D: T to the top (r, μ)
+PFX_CONST(uint, kAtmosphereBindingMultiScattering, 2);  // rgba16f 2D: Ψ per unit illuminance (μs, r)
+PFX_CONST(uint, kAtmosphereBindingSkyView, 3);          // rgba16f 2D: sky luminance per unit illuminance
+PFX_CONST(uint, kAtmosphereBindingApScattering, 4);     // rgba16f 3D: AP in-scattering per unit illuminance
+PFX_CONST(uint, kAtmosphereBindingApTransmittance, 5);  // rgba16f 3D: AP transmittance
+PFX_CONST(uint, kAtmosphereBindingColorIn, 6);          // storage image: host color (read)
+PFX_CONST(uint, kAtmosphereBindingColorOut, 7);         // storage image: output
+PFX_CONST(uint, kAtmosphereBindingDepth, 8);            // sampler2D: host depth (texelFetch)
+
+// Flags in AtmosphereUniforms.flags.x
+PFX_CONST(uint, kAtmosphereFlagMultipleScattering, 1u);  // add σs·Ψ (Hillaire eq. 10)
+PFX_CONST(uint, kAtmosphereFlagDepthReversedZ, 2u);
+PFX_CONST(uint, kAtmosphereFlagSkyView, 4u);  // the sky-view LUT is built this frame (camera below the band)
+
+// Sky pixels: the camera at or above this fraction of the atmosphere's thickness marches each pixel's
+// ray (as Hillaire's reference for views from space); below, the sky-view LUT; in between a blend
+// over kAtmosphereSkyViewBlend of the thickness, so crossing the top shows no seam (atmosphere.md#space).
+PFX_CONST(float, kAtmosphereSkyViewMaxAltitude, 0.9f);
+PFX_CONST(float, kAtmosphereSkyViewBlend, 0.05f);
+
+// Rebuild thresholds (docs/effects/atmosphere.md#frame-plan): the sky-view and aerial-perspective LUTs
+// built for a camera and sun are reused while the camera moved less than kAtmosphereRebuildDistance,
+// turned (or its projection changed) less than kAtmosphereRebuildAngle, and the sun turned less than
+// kAtmosphereRebuildAngle.
+PFX_CONST(float, kAtmosphereRebuildDistance, 1.0f);  // [m]
+PFX_CONST(float, kAtmosphereRebuildAngle, 1e-3f);    // [rad]
+
+struct AtmosphereUniforms {
+    mat4 clipToView;    // Vulkan clip -> camera-relative world direction (this frame's camera)
+    mat4 apClipToView;  // the same for the camera the AP LUT was built for
+    mat4 apViewToClip;  // its inverse: camera-relative world -> that camera's clip
+    vec4 radii;         // x: ground, y: top [m], z: top² - ground², w: sky-view blend (0: LUT, 1: march)
+    vec4 rayleigh;      // rgb: scattering at the ground [1/m], w: 1 / scale height [1/m]
+    vec4 mie;           // x: scattering, y: absorption at the ground [1/m], z: 1 / scale height, w: g
+    vec4 ozone;         // rgb: absorption at the peak [1/m], w: peak altitude [m]
+    vec4 albedo;        // rgb: ground albedo, w: ozone half width [m]
+    vec4 camera;        // xyz: planet-centred camera (clamped above the ground) [m], w: its radius
+    vec4 apCamera;      // xyz: planet-centred camera of the AP LUT [m], w: AP distance [m]
+    vec4 apOffset;      // xyz: this camera - the AP LUT's camera [m]
+    vec4 toSun;         // xyz: unit toward the sun, w: cos(sun angular radius)
+    vec4 sun;           // rgb: illuminance outside the atmosphere [lux], w: 1 / disk solid angle [1/sr]
+    // x: radius, y: sun's cos zenith the sky-view LUT was built for; z: no-geometry depth; w: the storage
+    // scale of the luminance LUTs (multiple scattering, sky view, aerial perspective): they hold luminance
+    // per unit illuminance times this, so that thin and dense atmospheres both stay normal half floats
+    vec4 skyView;
+    uvec4 transmittanceLut;  // xy: size, z: steps
+    uvec4 msLut;             // xy: size, z: directions per side (n of n×n), w: steps
+    uvec4 skyViewLut;        // xy: size, z: steps
+    uvec4 apLut;             // xyz: size, w: steps per slice
+    uvec4 extent;            // xy: color extent [px]
+    uvec4 flags;             // x: kAtmosphereFlag* bits
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(AtmosphereUniforms) == 3 * 64 + 17 * 16, "AtmosphereUniforms must match std140");
+}  // namespace postfx::gpu
+#endif
+
+#endif  // POSTFX_ATMOSPHERE_SHARED_H

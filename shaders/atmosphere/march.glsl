@@ -1,0 +1,62 @@
+// The atmosphere's march along a view ray (docs/effects/atmosphere.md, "Passes"): single scattering with
+// the exact phase functions and the sun's transmittance from the transmittance LUT, plus σs·Ψ from the
+// multiple-scattering LUT (Hillaire eq. 11), each step integrated in closed form (energy-conserving:
+// T·S·(1 - e^{-σt·Δ})/σt). Expects `atmo`, model.glsl, common/integrate.glsl and the samplers
+// `transmittanceLut` and (ATMOSPHERE_MS) `multiScatteringLut`. Luminance per unit sun illuminance.
+#ifndef POSTFX_ATMOSPHERE_MARCH_GLSL
+#define POSTFX_ATMOSPHERE_MARCH_GLSL
+
+// The transmittance LUT's T from planet-centred p toward unit `toSun`: 0 where the planet hides it.
+vec3 sunTransmittanceAt(vec3 p, vec3 toSun) {
+    float r = length(p);
+    float mu = dot(p, toSun) / r;
+    if (atmosphereHitsGround(r, mu)) return vec3(0.0);
+    if (r >= atmo.radii.y) return vec3(1.0);
+    return textureLod(transmittanceLut, transmittanceUv(r, mu), 0.0).rgb;
+}
+
+// ∫ over a step of length dt of e^{-σt·s} ds, per channel, without cancellation for thin media.
+vec3 atmosphereStepIntegral(vec3 extinction, float dt) {
+    return dt * vec3(oneMinusExpOverX(extinction.r * dt), oneMinusExpOverX(extinction.g * dt),
+                     oneMinusExpOverX(extinction.b * dt));
+}
+
+struct AtmosphereMarch {
+    vec3 luminance;      // per unit illuminance [cd/m² per lux]
+    vec3 transmittance;  // of the marched segment
+};
+
+// Marches [tBegin, tEnd] of ray o + t·d with `steps` steps, each sampled at its middle. quadratic: the
+// step boundaries at tBegin + (tEnd - tBegin)·(i/steps)², short near the origin where a view ray from
+// the ground meets the densest air (as Hillaire's sky-view LUT); else uniform.
+AtmosphereMarch atmosphereMarch(vec3 o, vec3 d, float tBegin, float tEnd, uint steps, bool quadratic,
+                                vec3 toSun) {
+    AtmosphereMarch result = AtmosphereMarch(vec3(0.0), vec3(1.0));
+    if (!(tEnd > tBegin) || steps == 0u) return result;
+    float cosViewSun = dot(d, toSun);
+    float phaseR = rayleighPhase(cosViewSun);
+    float phaseM = cornetteShanksPhase(cosViewSun, atmo.mie.w);
+    float span = tEnd - tBegin;
+    float previous = 0.0;
+    for (uint i = 0u; i < steps; ++i) {
+        float x = float(i + 1u) / float(steps);
+        float next = quadratic ? x * x : x;
+        float dt = (next - previous) * span;
+        vec3 p = o + (tBegin + 0.5 * (previous + next) * span) * d;
+        previous = next;
+        float r = length(p);
+        AtmosphereMedium m = atmosphereMedium(r - atmo.radii.x);
+        vec3 S = sunTransmittanceAt(p, toSun) * (m.rayleighScattering * phaseR + m.mieScattering * phaseM);
+#ifdef ATMOSPHERE_MS
+        if ((atmo.flags.x & kAtmosphereFlagMultipleScattering) != 0u)
+            S += m.scattering *
+                 textureLod(multiScatteringLut, multipleScatteringUv(dot(p, toSun) / r, r), 0.0).rgb /
+                 atmo.skyView.w;
+#endif
+        result.luminance += result.transmittance * S * atmosphereStepIntegral(m.extinction, dt);
+        result.transmittance *= exp(-m.extinction * dt);
+    }
+    return result;
+}
+
+#endif

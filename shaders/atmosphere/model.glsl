@@ -1,0 +1,157 @@
+// The atmosphere model on the GPU (docs/effects/atmosphere.md, "Model" and "Parameterisations"): media,
+// ray–sphere intersections, phase functions, the LUTs' parameterisations and lookups. It mirrors
+// postfx/src/atmosphere/atmosphere_model.cpp (double), which the tests hold it to. Expects `atmo`
+// (AtmosphereUniforms). Positions are planet-centred [m]; r = |position|, μ = cos(angle to the zenith).
+#ifndef POSTFX_ATMOSPHERE_MODEL_GLSL
+#define POSTFX_ATMOSPHERE_MODEL_GLSL
+
+const float kAtmospherePi = 3.14159265358979;
+
+struct AtmosphereMedium {
+    vec3 rayleighScattering;
+    float mieScattering;
+    vec3 scattering;  // σs
+    vec3 extinction;  // σt
+};
+
+// The medium at altitude h above the ground (h < 0 taken as 0) [1/m]: Rayleigh e^{-h/H_R}, Mie
+// e^{-h/H_M} (scattering and absorption), ozone's tent max(0, 1 - |h - centre| / half width).
+AtmosphereMedium atmosphereMedium(float altitude) {
+    float h = max(altitude, 0.0);
+    float rayleigh = exp(-h * atmo.rayleigh.w);
+    float mie = exp(-h * atmo.mie.z);
+    float ozone = max(0.0, 1.0 - abs(h - atmo.ozone.w) / atmo.albedo.w);
+    AtmosphereMedium m;
+    m.rayleighScattering = atmo.rayleigh.rgb * rayleigh;
+    m.mieScattering = atmo.mie.x * mie;
+    m.scattering = m.rayleighScattering + m.mieScattering;
+    m.extinction = m.scattering + atmo.mie.y * mie + atmo.ozone.rgb * ozone;
+    return m;
+}
+
+// Ray o + t·d (|d| = 1) against the sphere of `radius` at the origin: (tNear, tFar), or both -1 when it
+// misses. The discriminant as radius² - h², h the ray's distance to the centre, and the roots as q and
+// c/q, so neither cancels for an origin far from the sphere or on it.
+vec2 atmosphereRaySphere(vec3 o, vec3 d, float radius) {
+    float b = dot(o, d);
+    float h = length(o - b * d);
+    float disc = (radius - h) * (radius + h);
+    if (disc < 0.0) return vec2(-1.0);
+    float len = length(o);
+    float c = (len - radius) * (len + radius);
+    float q = -b - (b < 0.0 ? -1.0 : 1.0) * sqrt(disc);
+    if (q == 0.0) return vec2(0.0);
+    float t0 = q, t1 = c / q;
+    return vec2(min(t0, t1), max(t0, t1));
+}
+
+// The part of ray o + t·d (t >= 0) inside the atmosphere and before the ground: x = begin, y = end
+// (end <= begin: none), z = 1 when it ends on the ground.
+vec3 atmosphereSegment(vec3 o, vec3 d) {
+    vec2 top = atmosphereRaySphere(o, d, atmo.radii.y);
+    if (top.y <= 0.0) return vec3(0.0);
+    vec3 seg = vec3(max(top.x, 0.0), top.y, 0.0);
+    vec2 ground = atmosphereRaySphere(o, d, atmo.radii.x);
+    if (ground.x < ground.y && ground.x >= 0.0 && ground.x < seg.y) seg.yz = vec2(ground.x, 1.0);
+    return seg;
+}
+
+// Rayleigh: 3/(16π)(1 + cos²θ). Cornette–Shanks (1992): 3/(8π)(1 - g²)(1 + cos²θ)/((2 + g²)(1 + g² -
+// 2g·cosθ)^{3/2}), cosθ = dot(view direction, toSun): g > 0 is brightest toward the sun.
+float rayleighPhase(float c) {
+    return 3.0 / (16.0 * kAtmospherePi) * (1.0 + c * c);
+}
+float cornetteShanksPhase(float c, float g) {
+    float g2 = g * g;
+    float denom = max(1.0 + g2 - 2.0 * g * c, 1e-12);
+    return 3.0 / (8.0 * kAtmospherePi) * (1.0 - g2) * (1.0 + c * c) / ((2.0 + g2) * denom * sqrt(denom));
+}
+
+// Texel-centre mapping of x in [0, 1] onto n texels (Bruneton 2017): 0 and 1 at the end texels' centres.
+float unitToTexel(float x, uint n) {
+    return 0.5 / float(n) + x * (1.0 - 1.0 / float(n));
+}
+float texelToUnit(float u, uint n) {
+    return (u - 0.5 / float(n)) / (1.0 - 1.0 / float(n));
+}
+
+// A direction at radius r with cosine μ meets the ground (Bruneton 2017, RayIntersectsGround).
+bool atmosphereHitsGround(float r, float mu) {
+    float g = atmo.radii.x;
+    return mu < 0.0 && (r <= g || (g - r) * (g + r) + r * r * mu * mu >= 0.0);
+}
+
+// Distance from radius r <= top along μ to the top boundary: -rμ + √(top² - r²(1 - μ²)).
+float atmosphereDistanceToTop(float r, float mu) {
+    float t = atmo.radii.y;
+    return max(0.0, -r * mu + sqrt(max(0.0, (t - r) * (t + r) + r * r * mu * mu)));
+}
+
+// Transmittance LUT (Bruneton's horizon mapping): x_μ = (d - d_min)/(d_max - d_min), x_r = ρ/H with
+// H = √(top² - ground²), ρ = √(r² - ground²), d the distance to the top, d_min = top - r, d_max = ρ + H.
+vec2 transmittanceUv(float r, float mu) {
+    float g = atmo.radii.x, t = atmo.radii.y;
+    r = clamp(r, g, t);
+    float H = sqrt(atmo.radii.z);
+    float rho = sqrt(max(0.0, (r - g) * (r + g)));
+    float d = atmosphereDistanceToTop(r, mu);
+    float dMin = t - r, dMax = rho + H;
+    vec2 x = vec2(dMax > dMin ? (d - dMin) / (dMax - dMin) : 0.0, rho / H);
+    return vec2(unitToTexel(clamp(x.x, 0.0, 1.0), atmo.transmittanceLut.x),
+                unitToTexel(x.y, atmo.transmittanceLut.y));
+}
+// The inverse, for the LUT's texels: x = (r, μ).
+vec2 transmittanceParams(vec2 uv) {
+    float g = atmo.radii.x, t = atmo.radii.y;
+    vec2 x = vec2(texelToUnit(uv.x, atmo.transmittanceLut.x), texelToUnit(uv.y, atmo.transmittanceLut.y));
+    float H = sqrt(atmo.radii.z);
+    float rho = H * x.y;
+    float r = sqrt(rho * rho + g * g);
+    float dMin = t - r, dMax = rho + H;
+    float d = dMin + x.x * (dMax - dMin);
+    // Law of cosines in the triangle (centre, point, exit point): top² = r² + d² + 2rdμ.
+    float mu = d == 0.0 ? 1.0 : clamp((H * H - rho * rho - d * d) / (2.0 * r * d), -1.0, 1.0);
+    return vec2(r, mu);
+}
+
+// Multiple-scattering LUT (Hillaire's): x = (μs + 1)/2, y = (r - ground)/(top - ground).
+vec2 multipleScatteringUv(float muS, float r) {
+    float x = clamp(0.5 * muS + 0.5, 0.0, 1.0);
+    float y = clamp((r - atmo.radii.x) / (atmo.radii.y - atmo.radii.x), 0.0, 1.0);
+    return vec2(unitToTexel(x, atmo.msLut.x), unitToTexel(y, atmo.msLut.y));
+}
+
+// Sky-view LUT at radius r (Hillaire's non-linear mapping): β = acos(√(r² - ground²)/r) the angle between
+// the nadir and the horizon, Z = π - β; above the horizon v = (1 - √(1 - θ/Z))/2, below it
+// v = (1 + √((θ - Z)/β))/2; u = √((1 - cos φ)/2), φ the azimuth from the sun.
+float skyViewHorizonBeta(float r) {
+    float g = atmo.radii.x;
+    r = max(r, g);
+    return acos(clamp(sqrt(max(0.0, (r - g) * (r + g))) / r, -1.0, 1.0));
+}
+vec2 skyViewUv(float r, float cosViewZenith, float cosAzimuth) {
+    float beta = skyViewHorizonBeta(r);
+    float zenithHorizon = kAtmospherePi - beta;
+    float theta = acos(clamp(cosViewZenith, -1.0, 1.0));
+    float v = theta < zenithHorizon ? 0.5 * (1.0 - sqrt(max(0.0, 1.0 - theta / zenithHorizon)))
+                                    : 0.5 + 0.5 * sqrt(clamp((theta - zenithHorizon) / beta, 0.0, 1.0));
+    float u = sqrt(clamp(0.5 - 0.5 * cosAzimuth, 0.0, 1.0));
+    return vec2(unitToTexel(u, atmo.skyViewLut.x), unitToTexel(v, atmo.skyViewLut.y));
+}
+// The inverse: x = cos view zenith, y = cos azimuth.
+vec2 skyViewParams(float r, vec2 uv) {
+    float beta = skyViewHorizonBeta(r);
+    float zenithHorizon = kAtmospherePi - beta;
+    vec2 x = vec2(texelToUnit(uv.x, atmo.skyViewLut.x), texelToUnit(uv.y, atmo.skyViewLut.y));
+    float theta;
+    if (x.y < 0.5) {
+        float c = 1.0 - 2.0 * x.y;
+        theta = zenithHorizon * (1.0 - c * c);
+    } else {
+        float c = 2.0 * x.y - 1.0;
+        theta = zenithHorizon + beta * c * c;
+    }
+    return vec2(cos(theta), 1.0 - 2.0 * x.x * x.x);
+}
+
+#endif

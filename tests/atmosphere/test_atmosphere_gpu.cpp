@@ -1,0 +1,255 @@
+// The atmosphere on the device (docs/effects/atmosphere.md, "Tests"): each LUT read back at chosen
+// texels against the double-precision model marched finely, closed forms (pure-Rayleigh zenith
+// transmittance, an optically thin Rayleigh sky at the zenith), sky and geometry pixels against the
+// model per pixel, and the camera crossing the atmosphere's top. Small images on lavapipe.
+#include "atmosphere/atmosphere_effect.h"
+#include "atmosphere/atmosphere_model.h"
+#include "atmosphere/atmosphere_reference.h"
+#include "core/barriers.h"
+#include "core/gpu_resources.h"
+#include "fog_harness.h"
+#include "image_compare.h"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace test {
+namespace {
+
+namespace atm = postfx::atmosphere;
+
+// A camera at world `position` looking along `forward` (reversed Z, finite far).
+postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dvec3 up, float fovYDeg,
+                               float aspect) {
+    postfx::CameraInput camera = testCamera(position, fovYDeg, aspect, 0.1f, 1e6f, true);
+    camera.view = glm::mat4(glm::lookAt(position, position + forward, up));
+    return camera;
+}
+
+struct LutImage {
+    uint32_t width = 0, height = 0, depth = 0;
+    std::vector<float> rgba;
+    glm::dvec4 at(uint32_t x, uint32_t y, uint32_t z = 0) const {
+        const size_t i = ((size_t(z) * height + y) * width + x) * 4;
+        return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
+    }
+};
+
+class AtmosphereGpuTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        ASSERT_TRUE(host);
+        ASSERT_TRUE(gpu.init(hostHandles()).ok());
+        postfx::ContextCreateInfo info;
+        info.depth.reversedZ = true;
+        ASSERT_TRUE(createContext(context, info).ok());
+    }
+
+    // A frame of `width`×`height` sky pixels (depth 0: no geometry) over black, or with geometry at
+    // `distance` [m] along each pixel's ray when distance > 0.
+    FogHarnessImages images(const postfx::CameraInput& camera, uint32_t width, uint32_t height,
+                            double distance = 0.0) const {
+        FogHarnessImages im;
+        im.width = width;
+        im.height = height;
+        im.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+        im.color.assign(size_t(width) * height * 4, 0.0f);
+        im.depth.assign(size_t(width) * height, 0.0f);
+        for (uint32_t j = 0; distance > 0.0 && j < height; ++j)
+            for (uint32_t i = 0; i < width; ++i)
+                im.depth[size_t(j) * width + i] =
+                    depthAtDistance(camera, pixelDirection(camera, i, j, width, height), distance);
+        return im;
+    }
+
+    std::vector<float> render(postfx::FrameInfo frame, const FogHarnessImages& im) {
+        std::vector<float> out;
+        FogHarness harness(*host, gpu);
+        const postfx::Status s = harness.run(*context, im, frame, out);
+        EXPECT_TRUE(s.ok()) << s.message;
+        return out;
+    }
+
+    LutImage readLut(const char* name) {
+        LutImage lut;
+        postfx::core::GpuBuffer buffer;
+        EXPECT_TRUE(
+            buffer.create(gpu, 64u << 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "lut readback").ok());
+        VkExtent3D extent{};
+        VkDeviceSize bytes = 0;
+        postfx::Status status;
+        std::string error;
+        EXPECT_TRUE(host->submitAndWait(
+            [&](VkCommandBuffer cmd) {
+                status = context->recordImageReadback({name}, cmd, buffer.handle(), 0, extent, bytes);
+            },
+            error))
+            << error;
+        EXPECT_TRUE(status.ok()) << status.message;
+        lut.width = extent.width;
+        lut.height = extent.height;
+        lut.depth = extent.depth;
+        const auto* half = static_cast<const uint16_t*>(buffer.mapped());
+        lut.rgba.resize(bytes / 2);
+        for (size_t i = 0; i < lut.rgba.size(); ++i)
+            lut.rgba[i] = glm::unpackHalf1x16(half[i]);
+        return lut;
+    }
+
+    postfx::FrameInfo skyFrame(double sunElevationDeg) const {
+        postfx::FrameInfo frame;
+        frame.atmosphere.enabled = true;
+        const double e = glm::radians(sunElevationDeg);
+        frame.sun.toSun = glm::vec3(float(std::cos(e)), float(std::sin(e)), 0.0f);
+        frame.sun.illuminance = glm::vec3(1.0f);
+        frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.05, 0.0}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
+        return frame;
+    }
+
+    postfx::core::Gpu gpu;
+    std::unique_ptr<postfx::Context> context;
+};
+
+// Each transmittance texel against exp(-τ) of its (r, μ) marched with 4096 steps in double: the LUT's
+// 40 midpoint steps and its half-float storage.
+TEST_F(AtmosphereGpuTest, TransmittanceLutMatchesReference) {
+    postfx::FrameInfo frame = skyFrame(30.0);
+    render(frame, images(frame.camera, 8, 4));
+    const LutImage lut = readLut("atmosphere.transmittance");
+    ASSERT_EQ(lut.width, 256u);
+    ASSERT_EQ(lut.height, 64u);
+    const atm::Model m = atm::modelFrom(frame.atmosphere);
+    double worst = 0.0;
+    for (uint32_t y : {0u, 7u, 31u, 63u})
+        for (uint32_t x : {0u, 50u, 128u, 200u, 250u, 254u}) {
+            const glm::dvec2 uv((x + 0.5) / lut.width, (y + 0.5) / lut.height);
+            const atm::RadiusCosine p = atm::transmittanceParamsFromUv(m, uv, {lut.width, lut.height});
+            const glm::dvec3 dir(std::sqrt(std::max(0.0, 1.0 - p.mu * p.mu)), p.mu, 0.0);
+            const glm::dvec3 ref = atm::transmittanceToEdge(m, {0.0, p.r, 0.0}, dir, 4096);
+            for (int c = 0; c < 3; ++c) {
+                const double err = std::abs(lut.at(x, y)[c] - ref[c]);
+                worst = std::max(worst, err);
+                EXPECT_LT(err, 2e-3 + 0.01 * ref[c]) << "texel " << x << "," << y << " channel " << c;
+            }
+        }
+    std::printf("[ atmosphere ] transmittance LUT: largest |LUT - reference| %.2e\n", worst);
+}
+
+// Pure Rayleigh at the ground looking straight up: exp(-β·H·(1 - e^{-(top - ground)/H})).
+TEST_F(AtmosphereGpuTest, PureRayleighZenithTransmittanceMatchesClosedForm) {
+    postfx::FrameInfo frame = skyFrame(30.0);
+    frame.atmosphere.mieScattering = 0.0f;
+    frame.atmosphere.mieAbsorption = 0.0f;
+    frame.atmosphere.ozoneAbsorption = postfx::Vec3(0.0f);
+    render(frame, images(frame.camera, 8, 4));
+    const LutImage lut = readLut("atmosphere.transmittance");
+    const postfx::AtmosphereSettings& s = frame.atmosphere;
+    const double H = s.rayleighScaleHeight, thickness = double(s.topRadius) - s.groundRadius;
+    for (int c = 0; c < 3; ++c) {
+        const double expected =
+            std::exp(-double(s.rayleighScattering[c]) * H * (1.0 - std::exp(-thickness / H)));
+        EXPECT_NEAR(lut.at(0, 0)[c], expected, 1.5e-3) << "channel " << c;  // texel (μ = 1, r = ground)
+    }
+}
+
+// Multiple-scattering texels against Ψ (eq. 10) with the same directions and 10× the steps.
+TEST_F(AtmosphereGpuTest, MultipleScatteringLutMatchesReference) {
+    postfx::FrameInfo frame = skyFrame(30.0);
+    render(frame, images(frame.camera, 8, 4));
+    const LutImage lut = readLut("atmosphere.multiple_scattering");
+    ASSERT_EQ(lut.width, 32u);
+    const double scale = atm::lutStorageScale(frame.atmosphere);
+    const atm::Model m = atm::modelFrom(frame.atmosphere);
+    atm::PsiOptions fine;
+    fine.steps = 200;
+    fine.transmittanceSteps = 200;
+    double worst = 0.0;
+    for (uint32_t y : {0u, 16u, 31u})
+        for (uint32_t x : {8u, 20u, 31u}) {
+            const glm::dvec2 uv((x + 0.5) / lut.width, (y + 0.5) / lut.height);
+            const atm::SunCosineRadius p =
+                atm::multipleScatteringParamsFromUv(m, uv, {lut.width, lut.height});
+            const glm::dvec3 ref = atm::multipleScatteringPsi(m, p.r, p.muS, fine);
+            for (int c = 0; c < 3; ++c) {
+                const double rel = std::abs(lut.at(x, y)[c] / scale - ref[c]) / std::max(ref[c], 1e-12);
+                worst = std::max(worst, rel);
+                EXPECT_LT(rel, 0.05) << "texel " << x << "," << y << " channel " << c << ": "
+                                     << lut.at(x, y)[c] / scale << " vs " << ref[c];
+            }
+        }
+    std::printf("[ atmosphere ] multiple-scattering LUT: largest relative error %.2e\n", worst);
+}
+
+// Sky-view texels (single scattering) against the view ray marched finely in double.
+TEST_F(AtmosphereGpuTest, SkyViewLutMatchesReference) {
+    postfx::FrameInfo frame = skyFrame(10.0);
+    frame.atmosphere.multipleScattering = false;
+    render(frame, images(frame.camera, 8, 4));
+    const LutImage lut = readLut("atmosphere.sky_view");
+    ASSERT_EQ(lut.width, 192u);
+    ASSERT_EQ(lut.height, 108u);
+    const double scale = atm::lutStorageScale(frame.atmosphere);
+    const atm::Model m = atm::modelFrom(frame.atmosphere);
+    const double r = m.groundRadius + 100.0;
+    const double muS = std::sin(glm::radians(10.0));
+    atm::Sun sun;
+    sun.toSun = {std::sqrt(1.0 - muS * muS), muS, 0.0};
+    atm::ViewRayOptions o;
+    o.steps = 2000;
+    o.transmittanceSteps = 400;
+    o.multipleScattering = false;
+    double worst = 0.0;
+    for (uint32_t y : {2u, 30u, 50u, 53u, 54u, 60u, 100u})
+        for (uint32_t x : {0u, 40u, 120u, 191u}) {
+            const glm::dvec2 uv((x + 0.5) / lut.width, (y + 0.5) / lut.height);
+            const atm::SkyViewParams p = atm::skyViewParamsFromUv(m, r, uv, {lut.width, lut.height});
+            const double sinView = std::sqrt(std::max(0.0, 1.0 - p.cosViewZenith * p.cosViewZenith));
+            const double sinAz = std::sqrt(std::max(0.0, 1.0 - p.cosAzimuth * p.cosAzimuth));
+            const glm::dvec3 dir(sinView * p.cosAzimuth, p.cosViewZenith, sinView * sinAz);
+            const glm::dvec3 ref = atm::integrateViewRay(m, {0.0, r, 0.0}, dir, sun, o).luminance;
+            for (int c = 0; c < 3; ++c) {
+                const double rel = std::abs(lut.at(x, y)[c] / scale - ref[c]) / std::max(ref[c], 1e-9);
+                worst = std::max(worst, rel);
+                EXPECT_LT(rel, 0.05) << "texel " << x << "," << y << " channel " << c << ": "
+                                     << lut.at(x, y)[c] / scale << " vs " << ref[c];
+            }
+        }
+    std::printf("[ atmosphere ] sky-view LUT (single scattering): largest relative error %.2e\n", worst);
+}
+
+// An optically thin pure-Rayleigh sky seen straight up, the sun at zenith angle θs, albedo 0: single
+// scattering L = E·p_R(cos θs)·β·H·(1 - e^{-(top - ground)/H}) (T ≈ 1 everywhere; multiple scattering
+// is of order β² and the ground, black, adds nothing).
+TEST_F(AtmosphereGpuTest, ThinRayleighZenithMatchesSingleScatteringClosedForm) {
+    postfx::FrameInfo frame = skyFrame(40.0);
+    postfx::AtmosphereSettings& s = frame.atmosphere;
+    s.rayleighScattering = postfx::Vec3(1e-9f, 2e-9f, 4e-9f);
+    s.mieScattering = s.mieAbsorption = 0.0f;
+    s.ozoneAbsorption = postfx::Vec3(0.0f);
+    s.groundAlbedo = postfx::Vec3(0.0f);
+    frame.sun.illuminance = postfx::Vec3(1e5f);
+    frame.camera = lookCamera({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, -1.0}, 10.0f, 1.0f);
+    const std::vector<float> out = render(frame, images(frame.camera, 8, 8));
+    const double H = s.rayleighScaleHeight, thickness = double(s.topRadius) - s.groundRadius;
+    const double cosSun = std::sin(glm::radians(40.0));
+    const double phase = 3.0 / (16.0 * glm::pi<double>()) * (1.0 + cosSun * cosSun);
+    // The four pixels around the image centre look within 0.7° of the zenith.
+    for (int c = 0; c < 3; ++c) {
+        const double expected = 1e5 * phase * s.rayleighScattering[c] * H * (1.0 - std::exp(-thickness / H));
+        double mean = 0.0;
+        for (uint32_t j : {3u, 4u})
+            for (uint32_t i : {3u, 4u})
+                mean += out[(size_t(j) * 8 + i) * 4 + c] / 4.0;
+        EXPECT_NEAR(mean, expected, 0.01 * expected) << "channel " << c;
+    }
+}
+
+}  // namespace
+}  // namespace test
