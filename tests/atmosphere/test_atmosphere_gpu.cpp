@@ -251,5 +251,96 @@ TEST_F(AtmosphereGpuTest, ThinRayleighZenithMatchesSingleScatteringClosedForm) {
     }
 }
 
+// The model per pixel in double (single scattering: the multiple-scattering term has its own LUT test),
+// as renderAtmosphere's reference (a): sky pixels to the top or the lit ground, geometry pixels over
+// the host's color to their surface.
+std::vector<float> referenceImage(const postfx::FrameInfo& frame, const FogHarnessImages& im,
+                                  double distance) {
+    const atm::Model m = atm::modelFrom(frame.atmosphere);
+    const glm::dvec3 origin = atm::clampAboveGround(m, atm::planetCentred(m, frame.camera.position));
+    atm::Sun sun;
+    sun.toSun = glm::normalize(glm::dvec3(frame.sun.toSun));
+    sun.illuminance = glm::dvec3(frame.sun.illuminance);
+    atm::ViewRayOptions o;
+    o.steps = 600;
+    o.transmittanceSteps = 300;
+    o.multipleScattering = false;
+    o.ground = distance <= 0.0;
+    if (distance > 0.0) o.maxDistance = distance;
+    std::vector<float> out(im.color.size());
+    for (uint32_t j = 0; j < im.height; ++j)
+        for (uint32_t i = 0; i < im.width; ++i) {
+            const glm::dvec3 dir = pixelDirection(frame.camera, i, j, im.width, im.height);
+            const atm::ViewRayResult r = atm::integrateViewRay(m, origin, dir, sun, o);
+            const bool ground = distance <= 0.0 && atm::atmosphereSegment(m, origin, dir).hitsGround;
+            for (int c = 0; c < 4; ++c) {
+                const size_t k = (size_t(j) * im.width + i) * 4 + c;
+                const double behind = ground ? 0.0 : im.color[k];
+                out[k] = c == 3 ? im.color[k] : float(behind * r.transmittance[c] + r.luminance[c]);
+            }
+        }
+    return out;
+}
+
+// Sky pixels (the sky-view LUT, the planet below the horizon, the apply pass) against the model per pixel,
+// for the sun from high to below the horizon.
+TEST_F(AtmosphereGpuTest, SkyPixelsMatchReferenceAtSunElevations) {
+    for (double elevation : {60.0, 10.0, 2.0, 0.0, -2.0}) {
+        postfx::FrameInfo frame = skyFrame(elevation);
+        frame.atmosphere.multipleScattering = false;
+        frame.atmosphere.sunAngularRadiusDeg = 0.0f;
+        frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.1, 0.3}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
+        const FogHarnessImages im = images(frame.camera, 16, 8);
+        const std::vector<float> out = render(frame, im);
+        const std::vector<float> ref = referenceImage(frame, im, 0.0);
+        const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.05, 1e-6);
+        std::printf("[ atmosphere ] sky, sun at %.0f deg: GPU vs reference %s\n", elevation,
+                    stats.summary().c_str());
+        EXPECT_EQ(stats.nonFinite, 0u);
+        EXPECT_LT(stats.relativeRmse, 0.03) << "sun elevation " << elevation;
+    }
+}
+
+// Geometry pixels: the aerial-perspective LUT over a grey surface at 3 km and 25 km.
+TEST_F(AtmosphereGpuTest, AerialPerspectiveMatchesReference) {
+    for (double distance : {3000.0, 25000.0}) {
+        postfx::FrameInfo frame = skyFrame(20.0);
+        frame.atmosphere.multipleScattering = false;
+        frame.camera = lookCamera({0.0, 500.0, 0.0}, {1.0, 0.0, 0.5}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
+        FogHarnessImages im = images(frame.camera, 16, 8, distance);
+        std::fill(im.color.begin(), im.color.end(), 0.2f);
+        const std::vector<float> out = render(frame, im);
+        const std::vector<float> ref = referenceImage(frame, im, distance);
+        const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.02, 1e-3);
+        std::printf("[ atmosphere ] aerial perspective at %.0f m: GPU vs reference %s\n", distance,
+                    stats.summary().c_str());
+        EXPECT_EQ(stats.nonFinite, 0u);
+        EXPECT_LT(stats.relativeRmse, 0.01) << distance << " m";
+    }
+}
+
+// The camera rising through the top of the atmosphere, looking at the horizon: the images just below
+// and just above the top, and either side of the band where the sky-view LUT gives way to each pixel's
+// march, differ by about what moving the camera by that much changes.
+TEST_F(AtmosphereGpuTest, CrossingTheTopShowsNoSeam) {
+    postfx::FrameInfo frame = skyFrame(15.0);
+    const postfx::AtmosphereSettings& s = frame.atmosphere;
+    const double thickness = double(s.topRadius) - s.groundRadius;
+    auto renderAt = [&](double altitude) {
+        frame.camera = lookCamera({0.0, altitude, 0.0}, {1.0, -0.3, 0.2}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
+        frame.frameIndex++;
+        return render(frame, images(frame.camera, 24, 12));
+    };
+    const double band0 = (0.9 - 0.05) * thickness, band1 = 0.9 * thickness;
+    for (double altitude : {band0, band1, thickness}) {
+        const std::vector<float> below = renderAt(altitude - 10.0), above = renderAt(altitude + 10.0);
+        const ImageStats stats = compareImages(above, below, 24, 12, 0.05, 1e-4);
+        std::printf("[ atmosphere ] crossing %.0f m: images 20 m apart differ by %s\n", altitude,
+                    stats.summary().c_str());
+        EXPECT_EQ(stats.nonFinite, 0u);
+        EXPECT_LT(stats.relativeRmse, 0.01) << "at " << altitude << " m";
+    }
+}
+
 }  // namespace
 }  // namespace test
