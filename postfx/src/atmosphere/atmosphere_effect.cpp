@@ -62,6 +62,7 @@ uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kAtmosphereGroupSize
 }
 
 // The keys of what each LUT is built from (core/frame_graph.h, persistentImage): every setting it reads.
+// Transmittance: the extinction (radii, coefficients, heights), its size and steps.
 uint64_t transmittanceKey(const AtmosphereSettings& s) {
     using core::hashValue;
     uint64_t h = hashValue(0x61746d6fu, s.groundRadius);
@@ -69,36 +70,40 @@ uint64_t transmittanceKey(const AtmosphereSettings& s) {
     for (int c = 0; c < 3; ++c) {
         h = hashValue(h, s.rayleighScattering[c]);
         h = hashValue(h, s.ozoneAbsorption[c]);
-        h = hashValue(h, s.groundAlbedo[c]);
     }
     h = hashValue(h, s.rayleighScaleHeight);
     h = hashValue(h, s.mieScattering);
     h = hashValue(h, s.mieAbsorption);
     h = hashValue(h, s.mieScaleHeight);
-    h = hashValue(h, s.mieAnisotropy);
     h = hashValue(h, s.ozoneCenterHeight);
     h = hashValue(h, s.ozoneHalfWidth);
     h = hashValue(h, s.transmittanceLutSize.x);
     h = hashValue(h, s.transmittanceLutSize.y);
     return hashValue(h, s.transmittanceSteps);
 }
+// Multiple scattering: the transmittance's, the ground's albedo (its phase is isotropic: not g), its size,
+// directions and steps; and whether it is used.
 uint64_t multipleScatteringKey(const AtmosphereSettings& s) {
     using core::hashValue;
     uint64_t h = hashValue(transmittanceKey(s), s.multipleScatteringLutSize.x);
+    for (int c = 0; c < 3; ++c)
+        h = hashValue(h, s.groundAlbedo[c]);
     h = hashValue(h, s.multipleScatteringLutSize.y);
     h = hashValue(h, s.multipleScatteringDirections);
     h = hashValue(h, s.multipleScatteringSteps);
     return hashValue(h, s.multipleScattering);
 }
+// Sky view and aerial perspective: the multiple scattering's, Mie's g, their sizes and steps.
 uint64_t skyViewSettingsKey(const AtmosphereSettings& s) {
     using core::hashValue;
-    uint64_t h = hashValue(multipleScatteringKey(s), s.skyViewLutSize.x);
+    uint64_t h = hashValue(multipleScatteringKey(s), s.mieAnisotropy);
+    h = hashValue(h, s.skyViewLutSize.x);
     h = hashValue(h, s.skyViewLutSize.y);
     return hashValue(h, s.skyViewSteps);
 }
 uint64_t aerialSettingsKey(const AtmosphereSettings& s) {
     using core::hashValue;
-    uint64_t h = multipleScatteringKey(s);
+    uint64_t h = hashValue(multipleScatteringKey(s), s.mieAnisotropy);
     for (int a = 0; a < 3; ++a)
         h = hashValue(h, s.aerialPerspectiveLutSize[a]);
     h = hashValue(h, s.aerialPerspectiveDistance);

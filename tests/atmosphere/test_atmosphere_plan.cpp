@@ -1,0 +1,141 @@
+// The atmosphere's frame plan (docs/effects/atmosphere.md#frame-plan): the first frame builds the four
+// LUTs; a still camera and sun record only the apply pass; the sun or the camera moving beyond the
+// documented thresholds rebuild the sky-view and aerial-perspective LUTs (the camera's height the sky
+// view, its position and frustum the aerial perspective), media changes what depends on them; the recorded
+// passes are the plan's; every LUT's bytes.
+#include "fog_harness.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace test {
+namespace {
+
+std::vector<std::string> passNames(const postfx::FramePlan& plan) {
+    std::vector<std::string> names;
+    for (const postfx::PlannedPass& p : plan.passes)
+        names.push_back(p.name);
+    return names;
+}
+
+const std::string kT = "atmosphere.transmittance", kMs = "atmosphere.multiple_scattering",
+                  kSky = "atmosphere.sky_view", kAp = "atmosphere.aerial_perspective",
+                  kApply = "atmosphere.apply";
+
+class AtmospherePlanTest : public GpuTest {
+protected:
+    void SetUp() override {
+        GpuTest::SetUp();
+        ASSERT_TRUE(host);
+        ASSERT_TRUE(gpu.init(hostHandles()).ok());
+        postfx::ContextCreateInfo info;
+        info.depth.reversedZ = true;
+        ASSERT_TRUE(createContext(context, info).ok());
+        frame.atmosphere.enabled = true;
+        frame.sun.toSun = {0.8f, 0.6f, 0.0f};
+        frame.sun.illuminance = postfx::Vec3(1e5f);
+        setCamera({0.0, 10.0, 0.0}, {1.0, 0.0, 0.0});
+        im.width = 16;
+        im.height = 8;
+        im.colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+        im.color.assign(16 * 8 * 4, 0.0f);
+        im.depth.assign(16 * 8, 0.0f);
+        im.depth[0] = 0.5f;  // one geometry pixel
+    }
+
+    void setCamera(glm::dvec3 position, glm::dvec3 forward) {
+        frame.camera = testCamera(position, 60.0f, 2.0f, 0.1f, 1e5f, true);
+        frame.camera.view = glm::mat4(glm::lookAt(position, position + forward, glm::dvec3(0.0, 1.0, 0.0)));
+    }
+
+    // Plans and records the frame; the recorded passes (timings) must be the plan's.
+    std::vector<std::string> planAndRun() {
+        frame.frameIndex = frameIndex++;
+        postfx::FramePlan plan;
+        postfx::Status planned = postfx::Status::success();
+        FogHarness harness(*host, gpu);
+        harness.onBeforeRecord = [&](const postfx::FrameInfo& f) { planned = context->plan(f, plan); };
+        std::vector<float> out;
+        const postfx::Status s = harness.run(*context, im, frame, out);
+        EXPECT_TRUE(s.ok()) << s.message;
+        EXPECT_TRUE(planned.ok()) << planned.message;
+        std::vector<postfx::PassTiming> timings;
+        EXPECT_TRUE(context->readPassTimings(frame.frameIndex, timings).ok());
+        std::vector<std::string> recorded;
+        for (const postfx::PassTiming& t : timings)
+            recorded.push_back(t.name);
+        EXPECT_EQ(recorded, passNames(plan)) << "frame " << frame.frameIndex;
+        last = plan;
+        return passNames(plan);
+    }
+
+    postfx::core::Gpu gpu;
+    std::unique_ptr<postfx::Context> context;
+    postfx::FrameInfo frame;
+    FogHarnessImages im;
+    postfx::FramePlan last;
+    uint64_t frameIndex = 0;
+};
+
+using Passes = std::vector<std::string>;
+
+TEST_F(AtmospherePlanTest, StillRecordsOnlyApplyAndChangesRebuildWhatDependsOnThem) {
+    EXPECT_EQ(planAndRun(), (Passes{kT, kMs, kSky, kAp, kApply}));
+    // The LUTs' bytes (rgba16f) and the uniforms.
+    for (const auto& [name, bytes] : {std::pair<std::string, uint64_t>{kT, 256 * 64 * 8},
+                                      {kMs, 32 * 32 * 8},
+                                      {kSky, 192 * 108 * 8},
+                                      {kAp, 32 * 32 * 32 * 8},
+                                      {"atmosphere.aerial_transmittance", 32 * 32 * 32 * 8}}) {
+        const postfx::PlannedResource* r = nullptr;
+        for (const postfx::PlannedResource& x : last.resources)
+            if (x.name == name) r = &x;
+        ASSERT_TRUE(r) << name;
+        EXPECT_EQ(r->bytes, bytes) << name;
+    }
+    EXPECT_EQ(planAndRun(), (Passes{kApply})) << "still";
+    EXPECT_EQ(planAndRun(), (Passes{kApply})) << "still, again";
+
+    // The sun: below the threshold (1e-3 rad) nothing, beyond it both view LUTs.
+    frame.sun.toSun =
+        glm::vec3(glm::rotate(glm::mat4(1.0f), 5e-4f, glm::vec3(0, 0, 1)) * glm::vec4(0.8f, 0.6f, 0, 0));
+    EXPECT_EQ(planAndRun(), (Passes{kApply})) << "sun turned 5e-4 rad";
+    frame.sun.toSun = {0.6f, 0.8f, 0.0f};
+    EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "sun moved";
+    frame.sun.illuminance = postfx::Vec3(5e4f);
+    EXPECT_EQ(planAndRun(), (Passes{kApply})) << "the sun's illuminance is applied, not stored";
+
+    // The camera: turning or moving sideways the aerial perspective; rising the sky view too.
+    setCamera({0.0, 10.0, 0.0}, {1.0, 0.0, 0.2});
+    EXPECT_EQ(planAndRun(), (Passes{kAp, kApply})) << "camera turned";
+    setCamera({0.5, 10.0, 0.0}, {1.0, 0.0, 0.2});
+    EXPECT_EQ(planAndRun(), (Passes{kApply})) << "camera moved 0.5 m";
+    setCamera({20.0, 10.0, 0.0}, {1.0, 0.0, 0.2});
+    EXPECT_EQ(planAndRun(), (Passes{kAp, kApply})) << "camera moved 20 m sideways";
+    setCamera({20.0, 30.0, 0.0}, {1.0, 0.0, 0.2});
+    EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "camera rose 20 m";
+
+    // Media: the phase only the view LUTs, the ground albedo multiple scattering too, the air all four.
+    frame.atmosphere.mieAnisotropy = 0.7f;
+    EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "mie_anisotropy";
+    frame.atmosphere.groundAlbedo = postfx::Vec3(0.2f);
+    EXPECT_EQ(planAndRun(), (Passes{kMs, kSky, kAp, kApply})) << "ground_albedo";
+    frame.atmosphere.rayleighScaleHeight = 7000.0f;
+    EXPECT_EQ(planAndRun(), (Passes{kT, kMs, kSky, kAp, kApply})) << "rayleigh_scale_height";
+    frame.atmosphere.multipleScattering = false;
+    EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "multiple scattering off";
+    EXPECT_EQ(planAndRun(), (Passes{kApply})) << "still";
+
+    // From space (above the band) each sky pixel is marched: no sky-view LUT.
+    setCamera({20.0, 2e5, 0.0}, {1.0, -0.5, 0.2});
+    EXPECT_EQ(planAndRun(), (Passes{kAp, kApply})) << "in space";
+    // Off: nothing.
+    frame.atmosphere.enabled = false;
+    EXPECT_TRUE(planAndRun().empty());
+}
+
+}  // namespace
+}  // namespace test
