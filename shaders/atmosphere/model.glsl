@@ -5,6 +5,8 @@
 #ifndef POSTFX_ATMOSPHERE_MODEL_GLSL
 #define POSTFX_ATMOSPHERE_MODEL_GLSL
 
+#include "atmosphere/transmittance_lut.glsl"
+
 const float kAtmospherePi = 3.14159265358979;
 
 struct AtmosphereMedium {
@@ -75,10 +77,9 @@ float texelToUnit(float u, uint n) {
     return (u - 0.5 / float(n)) / (1.0 - 1.0 / float(n));
 }
 
-// A direction at radius r with cosine μ meets the ground (Bruneton 2017, RayIntersectsGround).
+// A direction at radius r with cosine μ meets the ground.
 bool atmosphereHitsGround(float r, float mu) {
-    float g = atmo.radii.x;
-    return mu < 0.0 && (r <= g || (g - r) * (g + r) + r * r * mu * mu >= 0.0);
+    return rayMeetsGround(r, mu, atmo.radii.x);
 }
 
 // Distance from radius r <= top along μ to the top boundary: -rμ + √(top² - r²(1 - μ²)).
@@ -87,18 +88,9 @@ float atmosphereDistanceToTop(float r, float mu) {
     return max(0.0, -r * mu + sqrt(max(0.0, (t - r) * (t + r) + r * r * mu * mu)));
 }
 
-// Transmittance LUT (Bruneton's horizon mapping): x_μ = (d - d_min)/(d_max - d_min), x_r = ρ/H with
-// H = √(top² - ground²), ρ = √(r² - ground²), d the distance to the top, d_min = top - r, d_max = ρ + H.
+// Transmittance LUT (transmittance_lut.glsl).
 vec2 transmittanceUv(float r, float mu) {
-    float g = atmo.radii.x, t = atmo.radii.y;
-    r = clamp(r, g, t);
-    float H = sqrt(atmo.radii.z);
-    float rho = sqrt(max(0.0, (r - g) * (r + g)));
-    float d = atmosphereDistanceToTop(r, mu);
-    float dMin = t - r, dMax = rho + H;
-    vec2 x = vec2(dMax > dMin ? (d - dMin) / (dMax - dMin) : 0.0, rho / H);
-    return vec2(unitToTexel(clamp(x.x, 0.0, 1.0), atmo.transmittanceLut.x),
-                unitToTexel(x.y, atmo.transmittanceLut.y));
+    return transmittanceLutUv(r, mu, atmo.radii.x, atmo.radii.y, vec2(atmo.transmittanceLut.xy));
 }
 // The inverse, for the LUT's texels: x = (r, μ).
 vec2 transmittanceParams(vec2 uv) {

@@ -27,6 +27,9 @@ PFX_CONST(uint, kFogBindingHistoryOut, 8);  // storage image, color format: accu
 PFX_CONST(uint, kFogBindingDistanceIn, 9);  // storage image r32f: previous surface distance [m], ∞: none
 PFX_CONST(uint, kFogBindingDistance, 10);   // storage image r32f: this frame's surface distance [m]
 PFX_CONST(uint, kFogBindingTemporal, 11);   // uniform buffer: TemporalUniforms
+// With the atmosphere on (docs/effects/atmosphere.md): its transmittance LUT, for the sun's light at each
+// sample (fog/atmosphere_light.glsl); the froxel fog binds it at the same number.
+PFX_CONST(uint, kFogBindingAtmosphere, 12);  // sampler2D rgba16f: the atmosphere's transmittance LUT
 // A history texel is used for a pixel when the distance its ray ended at (min(surface, max distance))
 // is within this fraction of the distance from the previous camera to the pixel's point (disocclusion).
 PFX_CONST(float, kFogTemporalDistanceTolerance, 0.1f);
@@ -57,6 +60,7 @@ PFX_CONST(uint, kFogFlagSelfShadow, 16u);
 PFX_CONST(uint, kFogFlagAnalyticTail, 32u);
 PFX_CONST(uint, kFogFlagDepthReversedZ, 64u);
 PFX_CONST(uint, kFogFlagSkipEmptySpace, 128u);
+PFX_CONST(uint, kFogFlagAtmosphere, 256u);  // the sun's light through the atmosphere's transmittance LUT
 
 struct FogUniforms {
     mat4 clipToView;      // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))
@@ -74,6 +78,10 @@ struct FogUniforms {
     uvec4 extent;         // x, y: output size [px], z: steps, w: frame index (mod 2^32)
     uvec4 scatterExtent;  // x, y: size of the march [px]: extent.xy · resolution scale, rounded up
     uvec4 flags;          // x: kFogFlag* bits
+    // kFogFlagAtmosphere: x: the planet's ground radius, y: the atmosphere's top radius [m], zw: the
+    // transmittance LUT's size [texels]; planetCamera.xyz: the camera's planet-centred position [m].
+    vec4 planet;
+    vec4 planetCamera;
 };
 
 // ---- the fog's noise generation pass (shaders/fog/noise_generate.comp; formula: common/noise.glsl) ----
@@ -82,7 +90,7 @@ struct NoisePush {  // push constants of noise_generate.comp
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(FogUniforms) == 2 * 64 + 13 * 16, "FogUniforms must match std140");
+static_assert(sizeof(FogUniforms) == 2 * 64 + 15 * 16, "FogUniforms must match std140");
 static_assert(sizeof(NoisePush) == 16, "NoisePush must match the shader's push constants");
 }  // namespace postfx::gpu
 #endif

@@ -5,6 +5,8 @@
 #ifndef POSTFX_FOG_MARCH_GLSL
 #define POSTFX_FOG_MARCH_GLSL
 
+#include "fog/atmosphere_light.glsl"
+
 struct FogScatter {
     vec3 inScattered;     // L: radiance scattered toward the camera along the ray
     float transmittance;  // T: from the camera to the surface (or through the whole medium)
@@ -48,9 +50,10 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
         vec3 x = dir * (interval.x + (float(k) + offset) * dt);
         float sigmaT = extinction(x);
         if (sigmaT <= 0.0) continue;
-        float visibility = shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y);
+        vec3 sunLight = sunPhase * (shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y)) *
+                        atmosphereSunTransmittance(x);
         float opticalDepth = sigmaT * dt;
-        inScattered += integrateStep(transmittance, albedo * (sunPhase * visibility + ambient), opticalDepth);
+        inScattered += integrateStep(transmittance, albedo * (sunLight + ambient), opticalDepth);
         transmittance *= exp(-opticalDepth);
         if (transmittance < fog.march.x) {
             cutOff = true;
@@ -59,7 +62,9 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
     }
 
     // Analytic tail: height fog from max distance to the surface (or infinity), no noise, no shadow map.
-    if (!cutOff) addAnalyticTail(dir, surfaceDistance, sunPhase, inScattered, transmittance);
+    if (!cutOff)
+        addAnalyticTail(dir, surfaceDistance, sunPhase * atmosphereSunTransmittance(dir * maxDistance), inScattered,
+                        transmittance);
     return FogScatter(inScattered, transmittance);
 }
 

@@ -16,6 +16,7 @@ layout(binding = kFroxelBindingIntegrated) uniform sampler3D integratedVolume;
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
 #include "fog/medium.glsl"
+#include "fog/atmosphere_light.glsl"
 #include "fog/ray.glsl"
 #include "fog/composite.glsl"
 #include "froxel_fog/grid.glsl"
@@ -66,6 +67,7 @@ void main() {
     vec3 inScattered = volume.rgb / froxel.jitter.w;
     float transmittance = volume.a;
     vec3 sunPhase = fog.sunIlluminance.rgb * henyeyGreensteinDirections(ray.dir, fog.toSun.xyz, fog.medium.z);
-    addAnalyticTail(ray.dir, ray.surfaceDistance, sunPhase, inScattered, transmittance);
+    addAnalyticTail(ray.dir, ray.surfaceDistance, sunPhase * atmosphereSunTransmittance(ray.dir * fog.medium.w),
+                    inScattered, transmittance);
     imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, transmittance, inScattered), color.a));
 }

@@ -34,6 +34,8 @@ PFX_CONST(uint, kFroxelBindingIntegrated,
 // volume (RGBA32F, fetched texel by texel; the scatter pass writes the other of two) and TemporalUniforms.
 PFX_CONST(uint, kFroxelBindingHistory, 10);   // sampler3D rgba32f: previous accumulated scatter volume
 PFX_CONST(uint, kFroxelBindingTemporal, 11);  // uniform buffer: TemporalUniforms
+// sampler2D: the atmosphere's transmittance LUT (fog/atmosphere_light.glsl), with the atmosphere on
+PFX_CONST(uint, kFroxelBindingAtmosphere, kFogBindingAtmosphere);
 
 // Flags in FroxelUniforms.counts.y
 PFX_CONST(uint, kFroxelFlagLogSlices, 1u);  // depth distribution Log (else Power)

@@ -28,6 +28,7 @@ layout(binding = kFroxelBindingScatter, rgba16f) uniform writeonly image3D scatt
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
 #include "fog/medium.glsl"
+#include "fog/atmosphere_light.glsl"
 #include "froxel_fog/grid.glsl"
 #include "froxel_fog/lights.glsl"
 
@@ -163,7 +164,7 @@ void main() {
         vec3 sun = fog.sunIlluminance.rgb;
         if (any(greaterThan(sun, vec3(0.0))))
             light += sun * henyeyGreensteinDirections(dir, fog.toSun.xyz, fog.medium.z) *
-                     shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y);
+                     shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y) * atmosphereSunTransmittance(x);
 #ifdef LOCAL_LIGHTS
         light += localLightsScatter(id, x, dir);
 #endif

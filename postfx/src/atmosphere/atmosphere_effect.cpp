@@ -215,6 +215,12 @@ core::ImageDesc lutDesc(VkImageType type, uint32_t x, uint32_t y, uint32_t z = 1
 
 }  // namespace
 
+SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& b, core::ImageRef standIn) {
+    const core::ImageRef lut = b.frame().atmosphere.enabled ? b.find(kTransmittanceLut) : core::ImageRef{};
+    if (lut.valid()) return {lut, Use::Sampled};
+    return {standIn, Use::BoundOnly};
+}
+
 double lutStorageScale(const AtmosphereSettings& s) {
     double tau = 0.0;
     for (int c = 0; c < 3; ++c)

@@ -20,6 +20,15 @@ inline constexpr core::ResourceId kSkyViewLut{"atmosphere.sky_view"};           
 inline constexpr core::ResourceId kApScatteringLut{"atmosphere.aerial_perspective"};         // rgba16f 3D
 inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmittance"};    // rgba16f 3D
 
+// For an effect lit by the sun (docs/effects/atmosphere.md, "The sun for every effect"): the transmittance
+// LUT the atmosphere declared earlier this frame, sampled; with the atmosphere off, `standIn` bound only
+// (the pipeline's layout has the binding; the shader's kFogFlagAtmosphere is off).
+struct SunTransmittanceLut {
+    core::ImageRef image;
+    core::Use use = core::Use::BoundOnly;
+};
+SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& builder, core::ImageRef standIn);
+
 // The luminance LUTs' storage scale (AtmosphereUniforms::skyView.w): the multiple-scattering, sky-view and
 // aerial-perspective LUTs hold luminance per unit illuminance times this, 1 / the largest vertical
 // scattering optical depth of a channel, so their texels stay normal half floats (about 0.01 to 1) for

@@ -1,5 +1,6 @@
 #include "fog/fog_effect.h"
 
+#include "atmosphere/atmosphere_effect.h"
 #include "core/checks.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
@@ -21,13 +22,14 @@ constexpr core::Binding kShadowMap{gpu::kFogBindingShadowMap, VK_DESCRIPTOR_TYPE
 constexpr core::Binding kNoiseTexture{gpu::kFogBindingNoise, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
 constexpr core::Binding kUniformBuffer{gpu::kFogBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
 constexpr core::Binding kScatterImage{gpu::kFogBindingScatter, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-constexpr core::Binding kRaymarchBindings[] = {kColorIn,   kColorOut,     kDepth,
-                                               kShadowMap, kNoiseTexture, kUniformBuffer};
-constexpr core::Binding kReducedBindings[] = {kDepth, kShadowMap, kNoiseTexture, kUniformBuffer,
-                                              kScatterImage};
+constexpr core::Binding kAtmosphere{gpu::kFogBindingAtmosphere, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+constexpr core::Binding kRaymarchBindings[] = {kColorIn,      kColorOut,      kDepth,     kShadowMap,
+                                               kNoiseTexture, kUniformBuffer, kAtmosphere};
+constexpr core::Binding kReducedBindings[] = {kDepth,         kShadowMap,    kNoiseTexture,
+                                              kUniformBuffer, kScatterImage, kAtmosphere};
 constexpr core::Binding kDistance{gpu::kFogBindingDistance, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-constexpr core::Binding kReducedTemporalBindings[] = {kDepth,         kShadowMap,    kNoiseTexture,
-                                                      kUniformBuffer, kScatterImage, kDistance};
+constexpr core::Binding kReducedTemporalBindings[] = {
+    kDepth, kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage, kDistance, kAtmosphere};
 constexpr core::Binding kUpsampleBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kScatterImage};
 constexpr core::Binding kHistoryIn{gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
 constexpr core::Binding kHistoryOut{gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
@@ -147,6 +149,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = noise.enabled ? Use::Sampled : Use::BoundOnly;
     // Full size without temporal: one pass marches and composites.
+    const atmosphere::SunTransmittanceLut sunLut = atmosphere::sunTransmittanceLut(b, depth);
     if (!reduced && !temporal) {
         const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
         b.pass(kRaymarch[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
@@ -155,6 +158,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
             .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
             .bind(gpu::kFogBindingUniforms, uniforms)
+            .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
             .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);
         return Status::success();
     }
@@ -179,6 +183,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFogBindingUniforms, uniforms)
+        .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
         .bind(gpu::kFogBindingScatter, scatter, Use::StorageWrite);
     core::ImageRef result = scatter;
     if (temporal) {

@@ -52,6 +52,14 @@ gpu::FogUniforms buildMediumUniforms(const FogMedium& s, const FrameInfo& frame,
     if (s.selfShadow) flags |= gpu::kFogFlagSelfShadow;
     if (s.analyticTail) flags |= gpu::kFogFlagAnalyticTail;
     if (depth.reversedZ) flags |= gpu::kFogFlagDepthReversedZ;
+    // The sun through the atmosphere (fog/atmosphere_light.glsl): its transmittance LUT at each sample.
+    const AtmosphereSettings& a = frame.atmosphere;
+    if (a.enabled) {
+        flags |= gpu::kFogFlagAtmosphere;
+        u.planet = glm::vec4(a.groundRadius, a.topRadius, float(a.transmittanceLutSize.x),
+                             float(a.transmittanceLutSize.y));
+        u.planetCamera = glm::vec4(glm::vec3(camera + glm::dvec3(0.0, a.groundRadius, 0.0)), 0.0f);
+    }
     u.flags = glm::uvec4(flags, 0u, 0u, 0u);
     return u;
 }

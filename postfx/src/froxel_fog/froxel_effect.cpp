@@ -1,5 +1,6 @@
 #include "froxel_fog/froxel_effect.h"
 
+#include "atmosphere/atmosphere_effect.h"
 #include "fog/fog_settings.h"
 #include "fog/medium_noise.h"
 #include "froxel_fog/froxel_uniforms.h"
@@ -31,24 +32,29 @@ constexpr core::Binding kScatterImage{gpu::kFroxelBindingScatter, kStorage};
 constexpr core::Binding kIntegratedImage{gpu::kFroxelBindingIntegrated, kStorage};
 constexpr core::Binding kIntegratedSampled{gpu::kFroxelBindingIntegrated, kSampled};
 
+constexpr core::Binding kAtmosphere{gpu::kFroxelBindingAtmosphere, kSampled};
+
 constexpr core::Binding kLightListBindings[] = {kUniformBuffer, kLightBuffer, kLightListImage};
-constexpr core::Binding kScatterBindings[] = {kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage};
-constexpr core::Binding kScatterLightBindings[] = {kShadowMap, kNoiseTexture, kUniformBuffer, kLightBuffer,
-                                                   kScatterImage};
-constexpr core::Binding kScatterListBindings[] = {kShadowMap,   kNoiseTexture,   kUniformBuffer,
-                                                  kLightBuffer, kLightListImage, kScatterImage};
+constexpr core::Binding kScatterBindings[] = {kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage,
+                                              kAtmosphere};
+constexpr core::Binding kScatterLightBindings[] = {kShadowMap,   kNoiseTexture, kUniformBuffer,
+                                                   kLightBuffer, kScatterImage, kAtmosphere};
+constexpr core::Binding kScatterListBindings[] = {
+    kShadowMap, kNoiseTexture, kUniformBuffer, kLightBuffer, kLightListImage, kScatterImage, kAtmosphere};
 // With temporal accumulation: the history volume and the temporal uniforms too.
 constexpr core::Binding kHistorySampled{gpu::kFroxelBindingHistory, kSampled};
 constexpr core::Binding kTemporalBuffer{gpu::kFroxelBindingTemporal, kUniform};
-constexpr core::Binding kScatterTemporalBindings[] = {kShadowMap,    kNoiseTexture,   kUniformBuffer,
-                                                      kScatterImage, kHistorySampled, kTemporalBuffer};
-constexpr core::Binding kScatterLightTemporalBindings[] = {
-    kShadowMap, kNoiseTexture, kUniformBuffer, kLightBuffer, kScatterImage, kHistorySampled, kTemporalBuffer};
+constexpr core::Binding kScatterTemporalBindings[] = {
+    kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage, kHistorySampled, kTemporalBuffer, kAtmosphere};
+constexpr core::Binding kScatterLightTemporalBindings[] = {kShadowMap,      kNoiseTexture, kUniformBuffer,
+                                                           kLightBuffer,    kScatterImage, kHistorySampled,
+                                                           kTemporalBuffer, kAtmosphere};
 constexpr core::Binding kScatterListTemporalBindings[] = {kShadowMap,      kNoiseTexture,   kUniformBuffer,
                                                           kLightBuffer,    kLightListImage, kScatterImage,
-                                                          kHistorySampled, kTemporalBuffer};
+                                                          kHistorySampled, kTemporalBuffer, kAtmosphere};
 constexpr core::Binding kIntegrateBindings[] = {kUniformBuffer, kScatterImage, kIntegratedImage};
-constexpr core::Binding kApplyBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kIntegratedSampled};
+constexpr core::Binding kApplyBindings[] = {kColorIn,       kColorOut,          kDepth,
+                                            kUniformBuffer, kIntegratedSampled, kAtmosphere};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
 
 const core::ComputePipelineDesc kLightListPass{"froxel_fog.light_lists", spirv::froxel_fog_light_lists_comp,
@@ -194,6 +200,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const core::ImageRef shadow = shadowRead ? b.host(HostImage::ShadowMap) : depth;
     const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = s.noise.enabled ? Use::Sampled : Use::BoundOnly;
+    const atmosphere::SunTransmittanceLut sunLut = atmosphere::sunTransmittanceLut(b, depth);
 
     core::ImageRef lightLists;
     if (lists) {
@@ -224,7 +231,8 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     if (temporal)
         b.bind(gpu::kFroxelBindingHistory, history, Use::Sampled, SamplerKind::NearestClamp)
             .bind(gpu::kFroxelBindingTemporal, temporalUniforms);
-    b.bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
+    b.bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
+        .bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
 
     b.pass(kIntegratePass[temporal ? 1 : 0], groupsFor(grid.x), groupsFor(grid.y), 1)
         .bind(gpu::kFroxelBindingUniforms, uniforms)
@@ -237,6 +245,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFroxelBindingDepth, depth, Use::Sampled)
         .bind(gpu::kFroxelBindingUniforms, uniforms)
         .bind(gpu::kFroxelBindingIntegrated, integrated, Use::Sampled, SamplerKind::LinearClamp)
+        .bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
         .bind(gpu::kFroxelBindingColorOut, target, Use::StorageWrite);
     return Status::success();
 }
