@@ -82,13 +82,15 @@ TEST(AtmosphereTables, PsiTableMatchesDirectPsiOffGrid) {
             const glm::dvec3 fromTable = table.at(r, muS);
             // Relative to the largest channel; at night (Ψ ≈ 0), to a thousandth of the noon value.
             const glm::dvec3 noon = table.at(r, 1.0);
-            const double scale = std::max({exact.x, exact.y, exact.z, 1e-3 * std::max({noon.x, noon.y, noon.z})});
+            const double scale =
+                std::max({exact.x, exact.y, exact.z, 1e-3 * std::max({noon.x, noon.y, noon.z})});
             for (int c = 0; c < 3; ++c)
                 worst = std::max(worst, std::abs(fromTable[c] - exact[c]) / scale);
         }
-    std::printf("[ measured ] Psi table against direct Psi off the grid: worst error %.3g of the largest "
-                "channel\n",
-                worst);
+    std::printf(
+        "[ measured ] Psi table against direct Psi off the grid: worst error %.3g of the largest "
+        "channel\n",
+        worst);
     EXPECT_LT(worst, 0.04);  // measured 0.025 (the sun just below the horizon, where Ψ falls steeply)
     // On a node the table holds the direct integral (up to the transmittance table's error).
     const glm::dvec3 node = table.at(m.groundRadius, 1.0);

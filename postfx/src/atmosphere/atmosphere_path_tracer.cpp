@@ -101,7 +101,7 @@ struct Tracer {
                 const double albedo = m.groundAlbedo[c];
                 if (nDotL > 0.0) sum += w * albedo / kPi * nDotL * sunT(x);
                 w *= albedo;
-                x = n * (m.groundRadius + 1e-4);  // off the surface
+                x = n * (m.groundRadius + 1e-4);                  // off the surface
                 next = around(n, std::sqrt(rng.uniform()), rng);  // cosine-weighted: weight albedo
             } else {
                 const Medium md = mediumAt(m, glm::length(x) - m.groundRadius);
@@ -156,8 +156,8 @@ void parallelFor(uint64_t count, uint32_t threads, const Task& task) {
         for (uint64_t i; (i = next.fetch_add(1)) < count;)
             task(i);
     };
-    threads = uint32_t(std::min<uint64_t>(threads ? threads : std::max(1u, std::thread::hardware_concurrency()),
-                                          std::max<uint64_t>(count, 1)));
+    threads = uint32_t(std::min<uint64_t>(
+        threads ? threads : std::max(1u, std::thread::hardware_concurrency()), std::max<uint64_t>(count, 1)));
     std::vector<std::thread> pool;
     try {
         for (uint32_t t = 1; t < threads; ++t)
@@ -210,13 +210,16 @@ PathTracerResult pathTraceViewRay(const Model& m, const TransmittanceTable& tran
                     const double target = -std::log1p(-rng.uniform() * collide);
                     const auto it = std::upper_bound(tau.begin(), tau.end(), target,
                                                      [c](double v, const glm::dvec3& e) { return v < e[c]; });
-                    const auto k = uint32_t(std::clamp<std::ptrdiff_t>(it - tau.begin() - 1, 0, kViewNodes - 1));
-                    const double f = sigma[k][c] > 0.0 ? std::clamp((target - tau[k][c]) / (sigma[k][c] * dt), 0.0, 1.0)
-                                                       : 0.5;
+                    const auto k =
+                        uint32_t(std::clamp<std::ptrdiff_t>(it - tau.begin() - 1, 0, kViewNodes - 1));
+                    const double f = sigma[k][c] > 0.0
+                                         ? std::clamp((target - tau[k][c]) / (sigma[k][c] * dt), 0.0, 1.0)
+                                         : 0.5;
                     const glm::dvec3 p = origin + (seg.tBegin + (k + f) * dt) * dir;
                     x += tracer.continuePath(p, dir, collide, false, rng);
                 }
-                if (seg.hitsGround) x += tracer.continuePath(origin + seg.tEnd * dir, dir, reachGround, true, rng);
+                if (seg.hitsGround)
+                    x += tracer.continuePath(origin + seg.tEnd * dir, dir, reachGround, true, rng);
                 s += x;
                 s2 += x * x;
             }

@@ -165,7 +165,9 @@ glm::dvec3 multipleScatteringPsi(const Model& m, double r, double muS, const Psi
     glm::dvec3 out(0.0);
     psiForSuns(
         m, r, std::span<const double>(&muS, 1), o,
-        [&](const glm::dvec3& p, const glm::dvec3& s) { return sunTransmittance(m, p, s, o.transmittanceSteps); },
+        [&](const glm::dvec3& p, const glm::dvec3& s) {
+            return sunTransmittance(m, p, s, o.transmittanceSteps);
+        },
         std::span<glm::dvec3>(&out, 1));
     return out;
 }
@@ -300,13 +302,15 @@ ViewRayResult integrateViewRay(const Model& m, const glm::dvec3& origin, const g
         const glm::dvec3 p = origin + (seg.tBegin + (s + 0.5) * dt) * dir;
         const double r = glm::length(p);
         const Medium md = mediumAt(m, r - m.groundRadius);
-        const glm::dvec3 tSun = o.transmittanceTable ? o.transmittanceTable->sun(p, sun.toSun)
-                                                     : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
+        const glm::dvec3 tSun = o.transmittanceTable
+                                    ? o.transmittanceTable->sun(p, sun.toSun)
+                                    : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
         // In-scattered radiance per unit length at p, per unit illuminance.
         glm::dvec3 S = tSun * (md.rayleighScattering * phaseR + md.mieScattering * phaseM);
         if (o.multipleScattering) {
             const double muS = glm::dot(p / r, sun.toSun);
-            S += md.scattering * (o.psiTable ? o.psiTable->at(r, muS) : multipleScatteringPsi(m, r, muS, o.psi));
+            S += md.scattering *
+                 (o.psiTable ? o.psiTable->at(r, muS) : multipleScatteringPsi(m, r, muS, o.psi));
         }
         L += T * S * stepIntegral(md.extinction, dt);
         T *= expNeg(md.extinction * dt);
@@ -314,8 +318,9 @@ ViewRayResult integrateViewRay(const Model& m, const glm::dvec3& origin, const g
     if (o.ground && seg.hitsGround && seg.tEnd <= o.maxDistance) {
         const glm::dvec3 p = origin + seg.tEnd * dir;
         const double nDotL = std::max(0.0, glm::dot(glm::normalize(p), sun.toSun));
-        const glm::dvec3 tSun = o.transmittanceTable ? o.transmittanceTable->sun(p, sun.toSun)
-                                                     : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
+        const glm::dvec3 tSun = o.transmittanceTable
+                                    ? o.transmittanceTable->sun(p, sun.toSun)
+                                    : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
         L += T * tSun * nDotL * m.groundAlbedo / kPi;
     }
     res.luminance = L * sun.illuminance;

@@ -73,8 +73,9 @@ private:
 
 // Ψ (multipleScatteringPsi) over (μ_s, altitude): muSSize × heightSize nodes at x = (1 + sign(μ_s)·√|μ_s|)/2
 // = i/(n - 1) and y = √((r - ground)/(top - ground)) = j/(n - 1): finer than the LUT's linear mapping where
-// Ψ changes fastest (the sun near the horizon, the ground), each from `psi`'s directions and steps with every sample's sun transmittance read from a
-// TransmittanceTable (psi.transmittanceSteps is not used). Bilinear lookup, clamped to the grid.
+// Ψ changes fastest (the sun near the horizon, the ground), each from `psi`'s directions and steps with every
+// sample's sun transmittance read from a TransmittanceTable (psi.transmittanceSteps is not used). Bilinear
+// lookup, clamped to the grid.
 struct PsiTableOptions {
     uint32_t muSSize = 64, heightSize = 64;  // each >= 2
     PsiOptions psi{256, 100, 0};

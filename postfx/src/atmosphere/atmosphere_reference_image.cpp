@@ -34,7 +34,8 @@ Status validate(const AtmosphereInputs& in) {
     const uint64_t pixels = uint64_t(in.width) * in.height;
     if (Status s = checkCount("AtmosphereInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s)
         return s;
-    if (Status s = checkCount("AtmosphereInputs.depth", in.depth.size(), pixels, "width·height"); !s) return s;
+    if (Status s = checkCount("AtmosphereInputs.depth", in.depth.size(), pixels, "width·height"); !s)
+        return s;
     for (size_t i = 0; i < in.depth.size(); ++i)
         if (!std::isfinite(in.depth[i]))
             return invalid("AtmosphereInputs.depth: value " + std::to_string(i) + " is not finite");
@@ -47,7 +48,8 @@ Status validate(const AtmosphereInputs& in) {
         return invalid("AtmosphereInputs.stepsPerPixel: " + std::to_string(in.stepsPerPixel) +
                        " is outside [1, " + std::to_string(kMaxStepsPerPixel) + "]");
     const auto n = uint32_t(std::lround(std::sqrt(double(in.psiDirections))));
-    if (in.psiDirections < atmosphere::kMinDirections || in.psiDirections > 65536 || n * n != in.psiDirections)
+    if (in.psiDirections < atmosphere::kMinDirections || in.psiDirections > 65536 ||
+        n * n != in.psiDirections)
         return invalid("AtmosphereInputs.psiDirections: " + std::to_string(in.psiDirections) +
                        " is not a perfect square in [4, 65536]");
     if (in.psiSteps == 0 || in.psiSteps > 4096)
@@ -112,7 +114,8 @@ Status renderAtmosphere(const AtmosphereInputs& in, std::vector<float>& out) {
 
     const glm::dmat4 clipToView = detail::clipToView(in.camera);
     const double farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
-    const dvec3 origin = atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, dvec3(in.camera.position)));
+    const dvec3 origin =
+        atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, dvec3(in.camera.position)));
     atmosphere::Sun sun;
     sun.toSun = glm::normalize(dvec3(in.sun.toSun));
     sun.illuminance = dvec3(in.sun.illuminance);

@@ -143,7 +143,7 @@ void marchPixel(const Model& m, const Ray& ray, const dvec3& sunPhase, Radiance&
         const double h = detail::heightTerm(m.camera.y + x.y, m.heightFalloff, m.baseHeight);
         const double sigmaT = m.density * h * noiseAt(m, x);
         if (sigmaT == 0.0) continue;  // empty step: adds nothing, T unchanged
-        dvec3 sun(0.0);             // V·Tsun; not looked up when the sun adds nothing
+        dvec3 sun(0.0);               // V·Tsun; not looked up when the sun adds nothing
         if (sunPhase != dvec3(0.0)) {
             double v = detail::shadowVisibility(m.shadow, m.camera + x);
             if (m.selfShadow) v *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);

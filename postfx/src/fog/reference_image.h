@@ -66,7 +66,8 @@ struct MediumModel {
 inline glm::dvec3 atmosphereSunTransmittance(const MediumModel& m, const glm::dvec3& x) {
     if (!m.atmosphere) return glm::dvec3(1.0);
     const atmosphere::Model& a = m.atmosphere->model();
-    return m.atmosphere->sun(atmosphere::clampAboveGround(a, atmosphere::planetCentred(a, m.camera + x)), m.toSun);
+    return m.atmosphere->sun(atmosphere::clampAboveGround(a, atmosphere::planetCentred(a, m.camera + x)),
+                             m.toSun);
 }
 
 // Fills `m` from a reference's inputs (FogInputs, FroxelFogInputs: the same field names) and its medium.
@@ -102,7 +103,8 @@ void fillMediumModel(MediumModel& m, const Inputs& in, const FogMedium& s, uint3
                 in.shadowWorldToClip, in.shadowReversedZ, double(in.shadowDepthBias),
                 shadowKernel};
     m.atmosphere = nullptr;
-    if (in.atmosphere.enabled) m.atmosphere = atmosphere::sharedTransmittanceTable(atmosphere::modelFrom(in.atmosphere));
+    if (in.atmosphere.enabled)
+        m.atmosphere = atmosphere::sharedTransmittanceTable(atmosphere::modelFrom(in.atmosphere));
 }
 
 // Runs `rowTask(j)` for rows 0..rows-1 on `threads` threads (0: all hardware threads). Rows are
