@@ -3,6 +3,7 @@
 // data, so that the difference between the two is integration and precision error only.
 #pragma once
 
+#include <postfx/atmosphere.h>
 #include <postfx/export.h>
 #include <postfx/fog.h>
 #include <postfx/froxel_fog.h>
@@ -28,6 +29,10 @@ struct FogInputs {
     Vec3 ambient{0.0f};
     double timeSeconds = 0.0;
     FogSettings settings;
+    // With atmosphere.enabled the sun's illuminance is outside the atmosphere: at each sample it is
+    // attenuated by the atmosphere's transmittance toward the sun (atmosphereSunTransmittance, from a fine
+    // table in double) at the sample's position clamped above the ground. Validated when enabled.
+    AtmosphereSettings atmosphere;
 
     // Shadow map texels (row-major, top row = v 0), empty for none.
     std::span<const float> shadowDepth;
@@ -62,6 +67,7 @@ struct FroxelFogInputs {
     double timeSeconds = 0.0;
     FroxelFogSettings settings;          // its volumes are read through settings.volumes
     std::span<const LocalLight> lights;  // at most kMaxLocalLights, each checked as FrameInfo's
+    AtmosphereSettings atmosphere;       // as FogInputs::atmosphere: the sun attenuated at each sample
 
     // Shadow map texels (row-major, top row = v 0), empty for none; read as the ray-marched fog reads
     // them with a 1×1 kernel.
@@ -86,6 +92,33 @@ struct FroxelFogInputs {
 // discretisation), docs/effects/froxel-fog.md. InvalidArgument naming the field for bad settings,
 // lights or inputs.
 POSTFX_API Status renderFroxelFog(const FroxelFogInputs& inputs, std::vector<float>& out);
+
+// Everything the atmosphere reference (docs/effects/atmosphere.md, "Reference") reads.
+struct AtmosphereInputs {
+    uint32_t width = 0, height = 0;
+    std::span<const float> color;  // RGBA, width·height·4, row-major, top row first
+    std::span<const float> depth;  // width·height depth values as the GPU samples them
+    DepthConvention depthConvention;
+
+    CameraInput camera;  // position: world [m], y = 0 the ground
+    SunInput sun;        // illuminance outside the atmosphere
+    AtmosphereSettings settings;
+
+    uint32_t stepsPerPixel = 512;  // midpoint steps along each pixel's ray inside the atmosphere; >= 1
+    // Ψ (multiple scattering) from a fine table in double: directions (a perfect square) and steps of each
+    // node's integral, and the table's nodes over (μ_s, altitude); see atmosphere_reference.h, PsiTable.
+    uint32_t psiDirections = 256, psiSteps = 100;
+    uint32_t psiTableMuS = 64, psiTableHeights = 64;
+    uint32_t threads = 0;  // 0: all hardware threads
+};
+
+// Renders the atmosphere's model without LUTs, in double, per pixel (docs/effects/atmosphere.md,
+// "Reference"), into `out` (RGBA, color's layout; alpha passes through). Pixels without geometry (depth at
+// the far plane): the sky along the view ray to the atmosphere's edge, plus the host color and the sun disk
+// through the ray's transmittance; where the ray meets the planet the lit ground instead (it hides the host
+// color and the disk). Geometry pixels: color·T + in-scattered light from the camera to the surface. With
+// settings.enabled false `out` is the color. InvalidArgument naming the field for bad inputs.
+POSTFX_API Status renderAtmosphere(const AtmosphereInputs& inputs, std::vector<float>& out);
 
 // The local-light terms of the model (docs/effects/froxel-fog.md#local-lights), exposed for tests.
 // Illuminance [lx] at world position `x` from `light`, before the phase function:

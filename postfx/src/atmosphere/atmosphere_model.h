@@ -24,6 +24,8 @@ struct Model {
     glm::dvec3 ozoneAbsorption{0.650e-6, 1.881e-6, 0.085e-6};
     double ozoneCenterHeight = 25000.0, ozoneHalfWidth = 15000.0;
     glm::dvec3 groundAlbedo{0.3};
+
+    bool operator==(const Model&) const = default;
 };
 Model modelFrom(const AtmosphereSettings& settings);
 

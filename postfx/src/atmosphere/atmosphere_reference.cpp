@@ -2,8 +2,14 @@
 #include "atmosphere/atmosphere_reference.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
 #include <numbers>
+#include <span>
+#include <thread>
+#include <vector>
 
 namespace postfx::atmosphere {
 namespace {
@@ -51,13 +57,29 @@ glm::dvec3 sunTransmittance(const Model& m, const glm::dvec3& position, const gl
     return transmittanceToEdge(m, position, toSun, steps);
 }
 
-glm::dvec3 multipleScatteringPsi(const Model& m, double r, double muS, const PsiOptions& o) {
+namespace {
+
+// Ψ at radius r for each sun cosine of `muS` into `out` (multipleScatteringPsi's integral), every sample's
+// sun transmittance from `sunT(position, toSun)`. Each direction is marched once; its samples serve every
+// sun. The stratified pattern is symmetric about the sun's vertical plane (azimuth φ_i and φ_{n-1-i} =
+// 2π - φ_i give the same terms): half of it is marched, each column counted twice.
+template <class SunT>
+void psiForSuns(const Model& m, double r, std::span<const double> muS, const PsiOptions& o, const SunT& sunT,
+                std::span<glm::dvec3> out) {
     const glm::dvec3 x(0.0, r, 0.0);
-    muS = std::clamp(muS, -1.0, 1.0);
-    const glm::dvec3 toSun(std::sqrt(1.0 - muS * muS), muS, 0.0);
+    const size_t suns = muS.size();
+    std::vector<glm::dvec3> toSun(suns), l2(suns, glm::dvec3(0.0));
+    for (size_t k = 0; k < suns; ++k) {
+        const double c = std::clamp(muS[k], -1.0, 1.0);
+        toSun[k] = glm::dvec3(std::sqrt(1.0 - c * c), c, 0.0);
+    }
     const auto n = uint32_t(std::lround(std::sqrt(double(o.directions))));
-    glm::dvec3 l2(0.0), fms(0.0);
+    std::vector<glm::dvec3> points(o.steps), weights(o.steps);
+    glm::dvec3 fms(0.0);
     for (uint32_t i = 0; i < n; ++i) {
+        const uint32_t mirror = n - 1 - i;
+        if (mirror < i) break;
+        const double columnWeight = mirror == i ? 1.0 : 2.0;
         for (uint32_t j = 0; j < n; ++j) {
             // Stratified uniform directions: azimuth 2π·a, cos(polar) = 1 - 2b (Hillaire's 8×8 pattern).
             const double a = (i + 0.5) / n, b = (j + 0.5) / n;
@@ -69,30 +91,200 @@ glm::dvec3 multipleScatteringPsi(const Model& m, double r, double muS, const Psi
             // A ray that starts on the ground ends there at once: its ground bounce still counts.
             if (seg.tEnd <= seg.tBegin && !seg.hitsGround) continue;
             const double dt = std::max(0.0, seg.tEnd - seg.tBegin) / o.steps;
-            glm::dvec3 T(1.0), L(0.0), F(0.0);
+            glm::dvec3 T(1.0), F(0.0);
             for (uint32_t s = 0; s < o.steps; ++s) {
                 const glm::dvec3 p = x + (seg.tBegin + (s + 0.5) * dt) * dir;
                 const Medium md = mediumAt(m, altitudeOf(m, p));
                 const glm::dvec3 w = T * stepIntegral(md.extinction, dt);  // ∫ T dt over the step
-                L +=
-                    w * md.scattering * sunTransmittance(m, p, toSun, o.transmittanceSteps) * kIsotropicPhase;
+                points[s] = p;
+                weights[s] = w * md.scattering * columnWeight;
                 F += w * md.scattering;
                 T *= expNeg(md.extinction * dt);
             }
-            if (seg.hitsGround) {
-                const glm::dvec3 p = x + seg.tEnd * dir;
-                const glm::dvec3 normal = glm::normalize(p);
-                const double nDotL = std::max(0.0, glm::dot(normal, toSun));
-                L += T * sunTransmittance(m, p, toSun, o.transmittanceSteps) * nDotL * m.groundAlbedo / kPi;
+            fms += F * columnWeight;
+            const glm::dvec3 ground = seg.hitsGround ? x + seg.tEnd * dir : glm::dvec3(0.0);
+            const glm::dvec3 normal = seg.hitsGround ? glm::normalize(ground) : glm::dvec3(0.0);
+            for (size_t k = 0; k < suns; ++k) {
+                glm::dvec3 L(0.0);
+                for (uint32_t s = 0; s < o.steps; ++s)
+                    if (weights[s] != glm::dvec3(0.0)) L += weights[s] * sunT(points[s], toSun[k]);
+                L *= kIsotropicPhase;
+                if (seg.hitsGround) {
+                    const double nDotL = std::max(0.0, glm::dot(normal, toSun[k]));
+                    if (nDotL > 0.0)
+                        L += columnWeight * T * sunT(ground, toSun[k]) * nDotL * m.groundAlbedo / kPi;
+                }
+                l2[k] += L;
             }
-            l2 += L;
-            fms += F;
         }
     }
     const double count = double(n) * n;
-    l2 /= count;
     fms /= count;
-    return l2 / (glm::dvec3(1.0) - fms);  // Σ_k f_ms^k = 1/(1 - f_ms), f_ms < 1 (eq. 9)
+    for (size_t k = 0; k < suns; ++k)
+        out[k] = (l2[k] / count) / (glm::dvec3(1.0) - fms);  // Σ_k f_ms^k = 1/(1 - f_ms), f_ms < 1 (eq. 9)
+}
+
+// Runs task(i) for i in [0, count) on `threads` threads (0: all hardware threads).
+template <class Task>
+void parallelFor(uint32_t count, uint32_t threads, const Task& task) {
+    std::atomic<uint32_t> next{0};
+    auto work = [&] {
+        for (uint32_t i; (i = next.fetch_add(1)) < count;)
+            task(i);
+    };
+    threads = std::min(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), count);
+    std::vector<std::thread> pool;
+    try {
+        for (uint32_t t = 1; t < threads; ++t)
+            pool.emplace_back(work);
+    } catch (const std::exception&) {
+        // Fewer threads than asked for: the ones running (and this one) do all the work.
+    }
+    work();
+    for (std::thread& t : pool)
+        t.join();
+}
+
+double clamp01(double x) {
+    return std::clamp(x, 0.0, 1.0);
+}
+
+// Bilinear lookup of a w×h grid of nodes at unit coordinates (x, y) in [0, 1].
+glm::dvec3 bilinear(const std::vector<glm::dvec3>& v, uint32_t w, uint32_t h, double x, double y) {
+    const double fx = clamp01(x) * (w - 1), fy = clamp01(y) * (h - 1);
+    const uint32_t x0 = std::min(uint32_t(fx), w - 2), y0 = std::min(uint32_t(fy), h - 2);
+    const double ax = fx - x0, ay = fy - y0;
+    const glm::dvec3* row0 = &v[size_t(y0) * w + x0];
+    const glm::dvec3* row1 = row0 + w;
+    return (1.0 - ay) * ((1.0 - ax) * row0[0] + ax * row0[1]) + ay * ((1.0 - ax) * row1[0] + ax * row1[1]);
+}
+
+}  // namespace
+
+glm::dvec3 multipleScatteringPsi(const Model& m, double r, double muS, const PsiOptions& o) {
+    glm::dvec3 out(0.0);
+    psiForSuns(
+        m, r, std::span<const double>(&muS, 1), o,
+        [&](const glm::dvec3& p, const glm::dvec3& s) {
+            return sunTransmittance(m, p, s, o.transmittanceSteps);
+        },
+        std::span<glm::dvec3>(&out, 1));
+    return out;
+}
+
+TransmittanceTable::TransmittanceTable(const Model& m, const TransmittanceTableOptions& o)
+    : model_(m), size_(glm::max(o.size, glm::uvec2(2))) {
+    tau_.resize(size_t(size_.x) * size_.y);
+    const uint32_t steps = std::max(1u, o.steps);
+    parallelFor(size_.y, o.threads, [&](uint32_t j) {
+        for (uint32_t i = 0; i < size_.x; ++i) {
+            const RadiusCosine rc =
+                transmittanceParamsFromUnit(m, {double(i) / (size_.x - 1), double(j) / (size_.y - 1)});
+            // Along the ray to the top, the ground ignored (the horizon's node is tangent to it).
+            const double d = distanceToTop(m, rc.r, rc.mu), dt = d / steps;
+            glm::dvec3 tau(0.0);
+            for (uint32_t s = 0; s < steps; ++s) {
+                const double t = (s + 0.5) * dt;
+                const double rt = std::sqrt(std::max(0.0, rc.r * rc.r + t * t + 2.0 * rc.r * rc.mu * t));
+                tau += mediumAt(m, rt - m.groundRadius).extinction * dt;
+            }
+            tau_[size_t(j) * size_.x + i] = tau;
+        }
+    });
+}
+
+glm::dvec3 TransmittanceTable::toTop(double r, double mu) const {
+    const glm::dvec2 unit = transmittanceUnitFromParams(model_, r, mu);
+    return expNeg(bilinear(tau_, size_.x, size_.y, unit.x, unit.y));
+}
+
+glm::dvec3 TransmittanceTable::sun(const glm::dvec3& position, const glm::dvec3& toSun) const {
+    glm::dvec3 p = position;
+    double r = glm::length(p);
+    if (r > model_.topRadius) {
+        const SphereHit top = raySphere(p, toSun, model_.topRadius);
+        if (!top.hit || top.tFar <= 0.0) return glm::dvec3(1.0);
+        p += std::max(0.0, top.tNear) * toSun;
+        r = model_.topRadius;
+    }
+    r = std::max(r, model_.groundRadius);
+    const double len = glm::length(p);
+    const double mu = len > 0.0 ? std::clamp(glm::dot(p, toSun) / len, -1.0, 1.0) : toSun.y;
+    if (rayIntersectsGround(model_, r, mu)) return glm::dvec3(0.0);
+    return toTop(r, mu);
+}
+
+PsiTable::PsiTable(const Model& m, const TransmittanceTable& transmittance, const PsiTableOptions& o)
+    : model_(m), options_(o), muSSize_(std::max(2u, o.muSSize)), heightSize_(std::max(2u, o.heightSize)) {
+    psi_.resize(size_t(muSSize_) * heightSize_);
+    std::vector<double> muS(muSSize_);
+    for (uint32_t i = 0; i < muSSize_; ++i) {
+        const double u = 2.0 * double(i) / (muSSize_ - 1) - 1.0;
+        muS[i] = u * std::abs(u);
+    }
+    PsiOptions psi = o.psi;
+    psi.steps = std::max(1u, psi.steps);
+    psi.directions = std::max(1u, psi.directions);
+    const auto sunT = [&](const glm::dvec3& p, const glm::dvec3& s) { return transmittance.sun(p, s); };
+    parallelFor(heightSize_, o.threads, [&](uint32_t j) {
+        const double y = double(j) / (heightSize_ - 1);
+        const double r = m.groundRadius + y * y * (m.topRadius - m.groundRadius);
+        psiForSuns(m, r, muS, psi, sunT, std::span<glm::dvec3>(&psi_[size_t(j) * muSSize_], muSSize_));
+    });
+}
+
+glm::dvec3 PsiTable::at(double r, double muS) const {
+    const double x = 0.5 + 0.5 * std::copysign(std::sqrt(std::min(1.0, std::abs(muS))), muS);
+    const double y = std::sqrt(clamp01((r - model_.groundRadius) / (model_.topRadius - model_.groundRadius)));
+    return bilinear(psi_, muSSize_, heightSize_, x, y);
+}
+
+bool PsiTable::builtWith(const PsiTableOptions& o) const {
+    return o.muSSize == options_.muSSize && o.heightSize == options_.heightSize &&
+           o.psi.directions == options_.psi.directions && o.psi.steps == options_.psi.steps;
+}
+
+namespace {
+
+// A few recent tables per kind, keyed by their model.
+template <class Table>
+struct TableCache {
+    std::mutex mutex;
+    std::vector<std::shared_ptr<const Table>> recent;  // most recent last
+    static constexpr size_t kKept = 4;
+
+    template <class Matches, class Build>
+    std::shared_ptr<const Table> get(const Matches& matches, const Build& build) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        for (size_t i = 0; i < recent.size(); ++i)
+            if (matches(*recent[i])) {
+                std::shared_ptr<const Table> t = recent[i];
+                recent.erase(recent.begin() + std::ptrdiff_t(i));
+                recent.push_back(t);
+                return t;
+            }
+        std::shared_ptr<const Table> t = build();
+        if (recent.size() >= kKept) recent.erase(recent.begin());
+        recent.push_back(t);
+        return t;
+    }
+};
+
+}  // namespace
+
+std::shared_ptr<const TransmittanceTable> sharedTransmittanceTable(const Model& m) {
+    static TableCache<TransmittanceTable> cache;
+    return cache.get([&](const TransmittanceTable& t) { return t.model() == m; },
+                     [&] { return std::make_shared<const TransmittanceTable>(m); });
+}
+
+std::shared_ptr<const PsiTable> sharedPsiTable(const Model& m, const PsiTableOptions& options) {
+    static TableCache<PsiTable> cache;
+    return cache.get([&](const PsiTable& t) { return t.model() == m && t.builtWith(options); },
+                     [&] {
+                         const std::shared_ptr<const TransmittanceTable> t = sharedTransmittanceTable(m);
+                         return std::make_shared<const PsiTable>(m, *t, options);
+                     });
 }
 
 ViewRayResult integrateViewRay(const Model& m, const glm::dvec3& origin, const glm::dvec3& dir,
@@ -110,18 +302,26 @@ ViewRayResult integrateViewRay(const Model& m, const glm::dvec3& origin, const g
         const glm::dvec3 p = origin + (seg.tBegin + (s + 0.5) * dt) * dir;
         const double r = glm::length(p);
         const Medium md = mediumAt(m, r - m.groundRadius);
-        const glm::dvec3 tSun = sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
+        const glm::dvec3 tSun = o.transmittanceTable
+                                    ? o.transmittanceTable->sun(p, sun.toSun)
+                                    : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
         // In-scattered radiance per unit length at p, per unit illuminance.
         glm::dvec3 S = tSun * (md.rayleighScattering * phaseR + md.mieScattering * phaseM);
-        if (o.multipleScattering)
-            S += md.scattering * multipleScatteringPsi(m, r, glm::dot(p / r, sun.toSun), o.psi);
+        if (o.multipleScattering) {
+            const double muS = glm::dot(p / r, sun.toSun);
+            S += md.scattering *
+                 (o.psiTable ? o.psiTable->at(r, muS) : multipleScatteringPsi(m, r, muS, o.psi));
+        }
         L += T * S * stepIntegral(md.extinction, dt);
         T *= expNeg(md.extinction * dt);
     }
     if (o.ground && seg.hitsGround && seg.tEnd <= o.maxDistance) {
         const glm::dvec3 p = origin + seg.tEnd * dir;
         const double nDotL = std::max(0.0, glm::dot(glm::normalize(p), sun.toSun));
-        L += T * sunTransmittance(m, p, sun.toSun, o.transmittanceSteps) * nDotL * m.groundAlbedo / kPi;
+        const glm::dvec3 tSun = o.transmittanceTable
+                                    ? o.transmittanceTable->sun(p, sun.toSun)
+                                    : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
+        L += T * tSun * nDotL * m.groundAlbedo / kPi;
     }
     res.luminance = L * sun.illuminance;
     res.transmittance = T;

@@ -10,6 +10,8 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <vector>
 
 namespace postfx::atmosphere {
 
@@ -39,6 +41,66 @@ struct PsiOptions {
 };
 glm::dvec3 multipleScatteringPsi(const Model& m, double r, double muS, const PsiOptions& options = {});
 
+// The reference's fine tables (docs/effects/atmosphere.md, "Reference"): caches in double of what the
+// reference would otherwise integrate again at every sample, far finer than the GPU's LUTs. Each is built
+// once per Model, multithreaded, and looked up bilinearly.
+
+// Optical depth to the top boundary over (x_μ, x_r) of the transmittance LUT's parameterisation
+// (transmittanceUnitFromParams), size.x × size.y nodes at x = i/(size - 1), each marched with `steps`
+// midpoint steps over [0, distanceToTop(r, μ)]. The lookup interpolates τ, then takes exp(-τ).
+struct TransmittanceTableOptions {
+    glm::uvec2 size{256, 128};  // each >= 2
+    uint32_t steps = 300;
+    uint32_t threads = 0;  // 0: all hardware threads
+};
+class TransmittanceTable {
+public:
+    explicit TransmittanceTable(const Model& m, const TransmittanceTableOptions& options = {});
+    // exp(-τ) from radius r (clamped to [ground, top]) along cosine μ to the top, the ground not tested
+    // (directions below the horizon read the horizon's column).
+    glm::dvec3 toTop(double r, double mu) const;
+    // sunTransmittance's equivalent at planet-centred `position` (|toSun| = 1): 0 where the ray meets the
+    // ground; from outside the atmosphere the ray's entry point's value (1 when it misses the atmosphere);
+    // a position below the ground is read on it.
+    glm::dvec3 sun(const glm::dvec3& position, const glm::dvec3& toSun) const;
+    const Model& model() const { return model_; }
+
+private:
+    Model model_;
+    glm::uvec2 size_;
+    std::vector<glm::dvec3> tau_;  // size.x·size.y, x_μ fastest
+};
+
+// Ψ (multipleScatteringPsi) over (μ_s, altitude): muSSize × heightSize nodes at x = (1 + sign(μ_s)·√|μ_s|)/2
+// = i/(n - 1) and y = √((r - ground)/(top - ground)) = j/(n - 1): finer than the LUT's linear mapping where
+// Ψ changes fastest (the sun near the horizon, the ground), each from `psi`'s directions and steps with every
+// sample's sun transmittance read from a TransmittanceTable (psi.transmittanceSteps is not used). Bilinear
+// lookup, clamped to the grid.
+struct PsiTableOptions {
+    uint32_t muSSize = 64, heightSize = 64;  // each >= 2
+    PsiOptions psi{256, 100, 0};
+    uint32_t threads = 0;  // 0: all hardware threads
+};
+class PsiTable {
+public:
+    PsiTable(const Model& m, const TransmittanceTable& transmittance, const PsiTableOptions& options = {});
+    glm::dvec3 at(double r, double muS) const;
+    const Model& model() const { return model_; }
+    // Whether the table was built with the same grid, directions and steps as `o` asks for.
+    bool builtWith(const PsiTableOptions& o) const;
+
+private:
+    Model model_;
+    PsiTableOptions options_;
+    uint32_t muSSize_, heightSize_;
+    std::vector<glm::dvec3> psi_;  // muSSize·heightSize, μ_s fastest
+};
+
+// Tables for `m` (the transmittance table with its default options), built on first use and shared (a few
+// recent ones are kept; thread-safe).
+std::shared_ptr<const TransmittanceTable> sharedTransmittanceTable(const Model& m);
+std::shared_ptr<const PsiTable> sharedPsiTable(const Model& m, const PsiTableOptions& options = {});
+
 // The sun: a directional light of illuminance `illuminance` [lux] outside the atmosphere.
 struct Sun {
     glm::dvec3 toSun{0.0, 1.0, 0.0};
@@ -53,6 +115,10 @@ struct ViewRayOptions {
     PsiOptions psi;
     // Add the lit ground where the ray ends on it (within maxDistance): T·Tsun·max(0, n·s)·albedo/π·E.
     bool ground = false;
+    // Fine tables instead of the per-sample integrals (the exact path when null): each sample's Tsun from
+    // `transmittanceTable` (transmittanceSteps unused), Ψ from `psiTable` (psi unused). Not owned.
+    const TransmittanceTable* transmittanceTable = nullptr;
+    const PsiTable* psiTable = nullptr;
 };
 
 // Luminance reaching `origin` along `dir` [cd/m² for illuminance in lux] and the transmittance of the

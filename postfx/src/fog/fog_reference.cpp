@@ -43,6 +43,7 @@ Status validate(const FogInputs& in) {
             return invalid("FogInputs.depth: value " + std::to_string(i) + " is not finite");
     if (Status s = fog::validateSettings(in.settings); !s) return s;
     if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
+    if (Status s = validateAtmosphereSettings(in.atmosphere); !s) return s;
     if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
     if (!allFinite(clipToView(in.camera)))
         return invalid("camera.projection: projection · view rotation is not invertible");
@@ -142,10 +143,11 @@ void marchPixel(const Model& m, const Ray& ray, const dvec3& sunPhase, Radiance&
         const double h = detail::heightTerm(m.camera.y + x.y, m.heightFalloff, m.baseHeight);
         const double sigmaT = m.density * h * noiseAt(m, x);
         if (sigmaT == 0.0) continue;  // empty step: adds nothing, T unchanged
-        double sun = 0.0;             // V·Tsun; not looked up when the sun adds nothing
+        dvec3 sun(0.0);               // V·Tsun; not looked up when the sun adds nothing
         if (sunPhase != dvec3(0.0)) {
-            sun = detail::shadowVisibility(m.shadow, m.camera + x);
-            if (m.selfShadow) sun *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
+            double v = detail::shadowVisibility(m.shadow, m.camera + x);
+            if (m.selfShadow) v *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
+            sun = v > 0.0 ? v * detail::atmosphereSunTransmittance(m, x) : dvec3(0.0);
         }
         addSegment(m, sunPhase * sun + m.ambient, sigmaT * dt, r);
     }
@@ -161,7 +163,8 @@ void tailContribution(const Model& m, const Ray& ray, const dvec3& sunPhase, Rad
     double sun = 1.0;
     if (m.selfShadow)
         sun = detail::sunTransmittance(m.density, std::exp(exponent0), m.heightFalloff, m.toSun.y);
-    addSegment(m, sunPhase * sun + m.ambient, tau, r);
+    const dvec3 atmosphere = detail::atmosphereSunTransmittance(m, t0 * ray.d);
+    addSegment(m, sunPhase * sun * atmosphere + m.ambient, tau, r);
 }
 
 // (L, T) along a pixel's ray: the march, then the analytic tail beyond max_distance.

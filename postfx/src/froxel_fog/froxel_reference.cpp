@@ -45,6 +45,7 @@ Status validate(const FroxelFogInputs& in) {
             !s)
             return s;
     if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
+    if (Status s = validateAtmosphereSettings(in.atmosphere); !s) return s;
     if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
     if (!core::allFinite(detail::clipToView(in.camera)))
         return invalid("camera.projection: projection · view rotation is not invertible");
@@ -156,10 +157,11 @@ void marchPixel(const Model& m, const detail::PixelRay& ray, const dvec3& sunPha
         for (const FogVolume& v : m.volumes)
             sigmaT += double(v.density) * fogVolumeWeight(v, DVec3(x));
         if (sigmaT == 0.0) continue;
-        double sun = 0.0;
+        dvec3 sun(0.0);
         if (sunPhase != dvec3(0.0)) {
-            sun = detail::shadowVisibility(m.shadow, m.camera + x);
-            if (m.selfShadow) sun *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
+            double v = detail::shadowVisibility(m.shadow, m.camera + x);
+            if (m.selfShadow) v *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
+            sun = v > 0.0 ? v * detail::atmosphereSunTransmittance(m, x) : dvec3(0.0);
         }
         addSegment(m, sunPhase * sun + m.ambient + localLights(m, x, ray.d), sigmaT * dt, r);
     }
@@ -175,7 +177,8 @@ void tailContribution(const Model& m, const detail::PixelRay& ray, const dvec3& 
     double sun = 1.0;
     if (m.selfShadow)
         sun = detail::sunTransmittance(m.density, std::exp(exponent0), m.heightFalloff, m.toSun.y);
-    addSegment(m, sunPhase * sun + m.ambient, tau, r);
+    const dvec3 atmosphere = detail::atmosphereSunTransmittance(m, t0 * ray.d);
+    addSegment(m, sunPhase * sun * atmosphere + m.ambient, tau, r);
 }
 
 Radiance scatterAlong(const Model& m, const detail::PixelRay& ray) {
