@@ -217,8 +217,8 @@ core::ImageDesc lutDesc(VkImageType type, uint32_t x, uint32_t y, uint32_t z = 1
 
 SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& b, core::ImageRef standIn) {
     const core::ImageRef lut = b.frame().atmosphere.enabled ? b.find(kTransmittanceLut) : core::ImageRef{};
-    if (lut.valid()) return {lut, Use::Sampled};
-    return {standIn, Use::BoundOnly};
+    if (lut.valid()) return {lut, Use::Sampled, SamplerKind::LinearClamp};
+    return {standIn, Use::BoundOnly, SamplerKind::NearestClamp};
 }
 
 double lutStorageScale(const AtmosphereSettings& s) {

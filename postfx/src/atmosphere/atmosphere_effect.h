@@ -26,6 +26,8 @@ inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmi
 struct SunTransmittanceLut {
     core::ImageRef image;
     core::Use use = core::Use::BoundOnly;
+    core::SamplerKind sampler = core::SamplerKind::NearestClamp;  // linear for the LUT (a depth stand-in
+                                                                  // may not filter linearly)
 };
 SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& builder, core::ImageRef standIn);
 

@@ -158,7 +158,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
             .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
             .bind(gpu::kFogBindingUniforms, uniforms)
-            .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
+            .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
             .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);
         return Status::success();
     }
@@ -183,7 +183,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFogBindingUniforms, uniforms)
-        .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
+        .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
         .bind(gpu::kFogBindingScatter, scatter, Use::StorageWrite);
     core::ImageRef result = scatter;
     if (temporal) {

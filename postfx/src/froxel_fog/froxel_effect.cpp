@@ -231,7 +231,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     if (temporal)
         b.bind(gpu::kFroxelBindingHistory, history, Use::Sampled, SamplerKind::NearestClamp)
             .bind(gpu::kFroxelBindingTemporal, temporalUniforms);
-    b.bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
+    b.bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
         .bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
 
     b.pass(kIntegratePass[temporal ? 1 : 0], groupsFor(grid.x), groupsFor(grid.y), 1)
@@ -245,7 +245,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFroxelBindingDepth, depth, Use::Sampled)
         .bind(gpu::kFroxelBindingUniforms, uniforms)
         .bind(gpu::kFroxelBindingIntegrated, integrated, Use::Sampled, SamplerKind::LinearClamp)
-        .bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, SamplerKind::LinearClamp)
+        .bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
         .bind(gpu::kFroxelBindingColorOut, target, Use::StorageWrite);
     return Status::success();
 }
