@@ -20,7 +20,8 @@ constexpr VkPipelineStageFlags kUniformStages =
 constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
 shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions& options,
-                                        const glm::mat4& proj, const ShadowFit& fit, bool shadows) {
+                                        const glm::mat4& proj, const ShadowFit& fit, bool shadows,
+                                        const AtmosphereLighting& atmosphere) {
     const Camera& cam = scene.camera;
     glm::mat4 viewRel = cameraView(cam);
     viewRel[3] = glm::vec4(0, 0, 0, 1);  // rotation only: positions are camera-relative
@@ -32,11 +33,13 @@ shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions&
     u.cameraPosition = glm::vec4(cam.position, 1.0f);
     u.toSun = glm::vec4(glm::normalize(scene.sun.direction), shadows ? 1.0f : 0.0f);
     u.sunIlluminance = glm::vec4(scene.sun.illuminance, 0.0f);
-    u.ambient = glm::vec4(scene.ambient, 0.0f);
-    u.sky = glm::vec4(scene.sky, 0.0f);
+    u.ambient = glm::vec4(atmosphere.ambient, 0.0f);
+    u.sky = glm::vec4(atmosphere.sky, 0.0f);
     u.depthParams = glm::vec4(options.reversedZ ? 0.0f : 1.0f, 1.0f / float(options.shadowMapSize),
                               fit.texelWorldSize, float(scene.lights.size()));
     u.extent = glm::uvec4(options.width, options.height, 0, 0);
+    u.sunOpticalDepthLow = glm::vec4(atmosphere.opticalDepthLow, atmosphere.altitudeLow);
+    u.sunOpticalDepthHigh = glm::vec4(atmosphere.opticalDepthHigh, atmosphere.altitudeHigh);
     return u;
 }
 
@@ -81,7 +84,8 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     in.camera.projection = projection(scene);
     in.sun.toSun = scene.sun.direction;
     in.sun.illuminance = scene.sun.illuminance;
-    in.ambient = scene.ambient;
+    // The surfaces' ambient: scene.ambient, or the sky's with the atmosphere's ambient_from_sky.
+    in.ambient = atmosphereLighting.update(scene).ambient;
     if (shadows) {
         const ImageInfo& s = shadowInfo.image;
         in.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout, s.usage};
@@ -95,6 +99,7 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     }
     in.fog = scene.fog;
     in.froxelFog = froxelFogSettings(scene);
+    in.atmosphere = scene.atmosphere;
     return in;
 }
 
@@ -128,6 +133,7 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     frame.shadowMap = in.shadowMap;
     frame.fog = in.fog;
     frame.froxelFog = in.froxelFog;  // its volumes point into scene.froxelVolumes
+    frame.atmosphere = in.atmosphere;
     return frame;
 }
 
@@ -184,7 +190,8 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     shadowInfo.texelWorldSize = fit.texelWorldSize;
 
     // Frame uniforms: overwrite after the previous frame's readers (WAR), then publish to this frame's.
-    const shared::FrameUniforms u = makeFrameUniforms(scene, options, projection(scene), fit, shadows);
+    const shared::FrameUniforms u =
+        makeFrameUniforms(scene, options, projection(scene), fit, shadows, atmosphereLighting.update(scene));
     bufferBarrier(cmd, frameUniforms, kUniformStages, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdUpdateBuffer(cmd, frameUniforms.buffer, 0, sizeof(u), &u);

@@ -2,6 +2,7 @@
 // (one frame's commands).
 #pragma once
 
+#include "host/atmosphere_lighting.h"
 #include "host/camera_math.h"
 #include "host/gpu_resources.h"
 #include "host/lighting_pass.h"
@@ -27,6 +28,7 @@ struct PostfxInputs {
     postfx::FogSettings fog;
     // froxelFogSettings(scene): its volumes point into the scene's froxelVolumes.
     postfx::FroxelFogSettings froxelFog;
+    postfx::AtmosphereSettings atmosphere;
 };
 
 struct Renderer::Impl {
@@ -62,6 +64,9 @@ struct Renderer::Impl {
     std::array<VkFence, kFramesInFlight> fences{};
     GpuBuffer readback;
     bool broken = false;  // a submission failed: the fences can no longer be trusted
+    // The surfaces' sun transmittance, ambient and sky through the scene's atmosphere, recomputed only when
+    // the sun or the atmosphere change.
+    mutable AtmosphereLightingCache atmosphereLighting;
     // requestCameraCut(): the next recorded frame is a camera cut (FrameInfo::cameraCut).
     bool cameraCutRequested = false;
 

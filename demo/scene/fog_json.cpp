@@ -1,7 +1,9 @@
 // Scene files: `effects` and `effects.fog` <-> postfx::FogSettings (the froxel fog: froxel_fog_json.cpp;
-// the medium keys both share: medium_json.cpp). Keep docs/scene-format.md#effects in sync.
+// the atmosphere: atmosphere_json.cpp; the medium keys both fogs share: medium_json.cpp). Keep
+// docs/scene-format.md#effects in sync.
 #include "scene/fog_json.h"
 
+#include "scene/atmosphere_json.h"
 #include "scene/froxel_fog_json.h"
 #include "scene/json_read.h"
 #include "scene/medium_json.h"
@@ -12,7 +14,7 @@ namespace {
 
 using namespace json_read;
 
-constexpr const char* kEffectsKeys[] = {"fog", "froxel_fog"};
+constexpr const char* kEffectsKeys[] = {"fog", "froxel_fog", "atmosphere"};
 // The ray-marched fog's own keys (besides "enabled" and the medium's).
 constexpr const char* kFogKeys[] = {"steps",
                                     "jitter",
@@ -102,9 +104,12 @@ void readEffects(const json& effects, const std::string& path, Scene& scene) {
     scene.fog = postfx::FogSettings{};
     scene.froxelFog = postfx::FroxelFogSettings{};
     scene.froxelVolumes.clear();
+    scene.atmosphere = postfx::AtmosphereSettings{};
     if (const json* f = find(effects, "fog")) scene.fog = readFog(*f, child(path, "fog"));
     if (const json* f = find(effects, "froxel_fog"))
         readFroxelFog(*f, child(path, "froxel_fog"), scene.froxelFog, scene.froxelVolumes);
+    if (const json* a = find(effects, "atmosphere"))
+        scene.atmosphere = readAtmosphere(*a, child(path, "atmosphere"));
     // postfx draws one fog per frame (Context::record rejects both): the file says which.
     if (scene.fog.enabled && scene.froxelFog.enabled) {
         fail(path, child(path, "fog") + " and " + child(path, "froxel_fog") +
@@ -114,7 +119,8 @@ void readEffects(const json& effects, const std::string& path, Scene& scene) {
 
 json effectsToJson(const Scene& scene) {
     return json{{"fog", fogToJson(scene.fog)},
-                {"froxel_fog", froxelFogToJson(scene.froxelFog, scene.froxelVolumes)}};
+                {"froxel_fog", froxelFogToJson(scene.froxelFog, scene.froxelVolumes)},
+                {"atmosphere", atmosphereToJson(scene.atmosphere)}};
 }
 
 }  // namespace demo

@@ -4,6 +4,7 @@
 
 #include "scene/light.h"
 
+#include <postfx/atmosphere.h>
 #include <postfx/fog.h>
 #include <postfx/froxel_fog.h>
 #include <glm/glm.hpp>
@@ -98,6 +99,12 @@ struct Scene {
     postfx::FroxelFogSettings froxelFog;
     // effects.froxel_fog.volumes: its local fog volumes, at most postfx::kMaxFogVolumes.
     std::vector<postfx::FogVolume> froxelVolumes;
+    // effects.atmosphere: postfx's sky and atmosphere (docs/effects/atmosphere.md); disabled unless the file
+    // has it. While enabled, sun.illuminance is the sun's outside the atmosphere: the renderer attenuates
+    // the surfaces' sun by the atmosphere's transmittance, draws `sky` as black (space: postfx draws the
+    // sky over it) and, with ambientFromSky, takes the ambient from the sky's irradiance instead of
+    // `ambient` (host/atmosphere_lighting.h).
+    postfx::AtmosphereSettings atmosphere;
     // `frame_time`: frame n is at time n · frameTime [s], for the motion of the camera and lights and for
     // postfx (FrameInfo::timeSeconds); (0, 1]. Kept in double, so that the default is exactly 1/60 s.
     double frameTime = kDefaultFrameTime;

@@ -55,6 +55,12 @@ struct FrameUniforms {
     // z: shadow normal offset [m] (world size of one shadow texel); w: number of local lights
     vec4 depthParams;
     uvec4 extent;  // xy: HDR image size [pixels]
+    // The sun's optical depth through postfx's atmosphere (host/atmosphere_lighting.h): rgb at altitude w
+    // [m] of sunOpticalDepthLow and of sunOpticalDepthHigh; lighting.comp interpolates it linearly in the
+    // lit point's altitude (world y, clamped to [low.w, high.w]) and multiplies sunIlluminance by
+    // exp(-depth). All 0 without the atmosphere.
+    vec4 sunOpticalDepthLow;
+    vec4 sunOpticalDepthHigh;
 };
 
 // Local lights (scene `lights`, postfx::LocalLight), at most kMaxDemoLights (= postfx::kMaxLocalLights;
@@ -116,7 +122,7 @@ struct TonemapPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 7 * 16, "FrameUniforms must match std140");
+static_assert(sizeof(FrameUniforms) == 3 * 64 + 9 * 16, "FrameUniforms must match std140");
 static_assert(sizeof(LightsUniforms) == 16384, "LightsUniforms must match std140 and fit 16 KiB");
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match std430 push constants");
 static_assert(sizeof(TonemapPush) == 32, "TonemapPush must match std430 push constants");

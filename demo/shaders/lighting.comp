@@ -1,6 +1,9 @@
 // Deferred sun + ambient + local-light lighting into the HDR radiance image, per RGB channel:
-//   L = albedo/π · (E · max(0, n·l) · visibility + Σ_lights I · falloff · spot · max(0, n·l_i))
+//   L = albedo/π · (E · T_atm · max(0, n·l) · visibility + Σ_lights I · falloff · spot · max(0, n·l_i))
 //       + albedo · ambient;  no geometry: L = sky.
+// T_atm: the sun's transmittance through postfx's atmosphere at the point, exp(-τ) with τ interpolated
+// linearly in altitude between two altitudes the host evaluated exactly (host/atmosphere_lighting.h: an
+// approximation, docs/effects/atmosphere.md "The demo"); 1 without the atmosphere (τ = 0).
 // Local lights cast no shadows; falloff and spot factor are demo_shared.h's (localLightFalloff, spotFactor).
 #version 450
 #extension GL_GOOGLE_include_directive : require
@@ -42,7 +45,10 @@ void main() {
         float nDotL = max(dot(n, frame.toSun.xyz), 0.0);
         float visibility = 1.0;
         if (frame.toSun.w > 0.5 && nDotL > 0.0) visibility = sunVisibility(world, n, nDotL);
-        vec3 irradiance = frame.sunIlluminance.rgb * (nDotL * visibility);
+        float altitudeSpan = frame.sunOpticalDepthHigh.w - frame.sunOpticalDepthLow.w;
+        float a = clamp((world.y - frame.sunOpticalDepthLow.w) / altitudeSpan, 0.0, 1.0);
+        vec3 sunTransmittance = exp(-mix(frame.sunOpticalDepthLow.rgb, frame.sunOpticalDepthHigh.rgb, a));
+        vec3 irradiance = frame.sunIlluminance.rgb * sunTransmittance * (nDotL * visibility);
         uint lightCount = uint(frame.depthParams.w);
         for (uint i = 0u; i < lightCount; ++i) {
             GpuLight light = lightList.lights[i];

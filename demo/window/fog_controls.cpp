@@ -176,6 +176,14 @@ bool FogControls::build(Scene& scene) {
 
     ImGui::PushID("sun");
     if (ImGui::CollapsingHeader("Sun")) {
+        // The Atmosphere panel moves the sun too: follow the scene's direction when it differs.
+        if (glm::dot(scene.sun.direction, scene.sun.direction) > 0.0f &&
+            glm::length(glm::normalize(scene.sun.direction) - sunDirection()) > 1e-4f) {
+            Sun current = fileSun_;
+            current.direction = scene.sun.direction;
+            current.illuminance = scene.sun.illuminance;
+            takeSun(current);
+        }
         bool direction = false;
         direction |= ImGui::SliderFloat("elevation [deg]", &elevationDeg_, 0.0f, 90.0f, "%.1f", kClamp);
         tooltip("angle above the horizon");

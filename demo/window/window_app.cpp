@@ -4,6 +4,7 @@
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
 #include "scene/motion.h"
+#include "window/atmosphere_controls.h"
 #include "window/fly_camera.h"
 #include "window/fog_controls.h"
 #include "window/froxel_fog_controls.h"
@@ -41,7 +42,11 @@ bool sameExtent(VkExtent2D a, VkExtent2D b) {
 class App {
 public:
     explicit App(const AppOptions& options, const Scene& scene)
-        : options_(options), scene_(scene), fileCamera_(scene.camera), fogControls_(scene) {}
+        : options_(options),
+          scene_(scene),
+          fileCamera_(scene.camera),
+          fogControls_(scene),
+          atmosphereControls_(scene) {}
     ~App() { destroy(); }
 
     bool init(std::string& error);
@@ -82,9 +87,10 @@ private:
     VkExtent2D renderExtent_{0, 0};
     TonemapPass tonemap_;
     std::unique_ptr<UiOverlay> ui_;
-    FogControls fogControls_;              // edits scene_.fog and scene_.sun from the overlay's panel
-    FroxelFogControls froxelFogControls_;  // edits scene_.froxelFog and scene_.froxelVolumes
-    LightControls lightControls_;          // edits scene_.lights
+    FogControls fogControls_;                // edits scene_.fog and scene_.sun from the overlay's panel
+    FroxelFogControls froxelFogControls_;    // edits scene_.froxelFog and scene_.froxelVolumes
+    LightControls lightControls_;            // edits scene_.lights
+    AtmosphereControls atmosphereControls_;  // edits scene_.atmosphere, scene_.sun.direction, the camera's y
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers_{};
     std::array<VkFence, kFramesInFlight> fences_{};              // signalled when the slot's frame completed
     std::array<VkSemaphore, kFramesInFlight> imageAvailable_{};  // acquire -> the slot's submission
@@ -317,6 +323,7 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
             fogControls_.build(scene_);
             froxelFogControls_.build(scene_);
             lightControls_.build(scene_);
+            atmosphereControls_.build(scene_);
         });
     }
 

@@ -633,7 +633,8 @@ TEST(DemoSceneParse, NestingUpToTheLimitIsAccepted) {
     const Parsed p =
         parse(withRaw("/effects", "{\"a\":" + std::string(62, '[') + std::string(62, ']') + "}"));
     EXPECT_FALSE(p.ok);
-    EXPECT_EQ(p.error.rfind("effects.a: unknown key (expected fog or froxel_fog)", 0), 0u) << p.error;
+    EXPECT_EQ(p.error.rfind("effects.a: unknown key (expected fog, froxel_fog or atmosphere)", 0), 0u)
+        << p.error;
 }
 
 // ---- robustness ---------------------------------------------------------------------------------

@@ -224,7 +224,7 @@ TEST(FogScene, EveryKeyRoundTrips) {
     // Every key is written, with the value read.
     const json& fog = out["effects"]["fog"];
     const json in = everyKey();
-    EXPECT_EQ(out["effects"].size(), 2u);  // fog and froxel_fog (off), every key of both written
+    EXPECT_EQ(out["effects"].size(), 3u);  // fog, froxel_fog and atmosphere (off), every key written
     EXPECT_EQ(fog.size(), in.size());
     EXPECT_EQ(fog["noise"].size(), in["noise"].size());
     for (const auto& [key, value] : in.items()) {
@@ -326,7 +326,7 @@ std::vector<FogRejection> fogRejections() {
         // unknown keys, at every level
         {"UnknownEffect",
          {{"clouds", json::object()}},
-         "effects.clouds: unknown key (expected fog or froxel_fog)"},
+         "effects.clouds: unknown key (expected fog, froxel_fog or atmosphere)"},
         {"UnknownFogKey", fog("/colour", {1, 1, 1}),
          "effects.fog.colour: unknown key (expected enabled, density, albedo, anisotropy, height_falloff, "
          "base_height, max_distance, self_shadow, analytic_tail, noise, steps, jitter, resolution_scale, "

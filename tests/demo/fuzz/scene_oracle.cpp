@@ -78,7 +78,8 @@ std::string frameProblem(const Scene& scene, double timeSeconds, VkExtent2D exte
     }
     frame.fog = scene.fog;
     frame.froxelFog = froxelFogSettings(scene);  // as renderer_frame.cpp passes it
-    std::vector<postfx::LocalLight> lights;      // as renderer_frame.cpp passes them
+    frame.atmosphere = scene.atmosphere;
+    std::vector<postfx::LocalLight> lights;  // as renderer_frame.cpp passes them
     for (const Light& l : scene.lights)
         lights.push_back(toLocalLight(l));
     frame.lights = lights.data();
@@ -177,6 +178,9 @@ std::string renderProblem(const Scene& scene) {
         if (postfx::Status st = postfx::validateFroxelFogSettings(froxelFogSettings(scene)); !st)
             return "postfx rejects the froxel fog: " + st.message;
     }
+    // The atmosphere as postfx checks it (whether or not enabled, as the loader does).
+    if (postfx::Status st = postfx::validateAtmosphereSettings(scene.atmosphere); !st)
+        return "postfx rejects the atmosphere: " + st.message;
     return "";
 }
 
