@@ -27,7 +27,8 @@ struct AtmosphereView {
     double terrainDistance = 0;
 };
 
-// ground_sun30 (camera 300 m up, the sun at 30° off to the side), ground_sunset (sun at 5° ahead),
+// ground_sun30 (camera 300 m up, the sun at 30° off to the side), ground_sunset (sun at 5° ahead), both
+// with the ground plane as geometry up to 30 km (inside the aerial-perspective LUT's default 32 km),
 // space_sun30 (camera 100 km up looking down at the horizon, no geometry).
 std::vector<AtmosphereView> atmosphereViews();
 

@@ -194,7 +194,11 @@ bool writeAtmosphereMarkdown(const std::string& path, const AtmosphereInfo& info
     }
 
     out << "## Targets\n\nIssue 19 on the H100 at 1920×1080: each the slowest view's row at postfx's default "
-           "settings.\n\n| target | row | measured in this run | status |\n|---|---|---|---|\n";
+           "settings; this run: "
+        << run.device << ", " << run.width << "×" << run.height << ".";
+    if (run.width != 1920 || run.height != 1080)
+        out << " **Not 1920×1080: the statuses below are not the targets'.**";
+    out << "\n\n| target | row | measured in this run | status |\n|---|---|---|---|\n";
     for (const AtmosphereTarget& t : atmosphereTargets(rows)) {
         out << "| " << t.name << " | "
             << (t.row ? t.row->view + ", " + situationName(t.row->situation) : std::string("not measured"))

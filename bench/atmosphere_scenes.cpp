@@ -29,8 +29,8 @@ std::string size2(const postfx::UVec2& s) {
 
 std::vector<AtmosphereView> atmosphereViews() {
     std::vector<AtmosphereView> views(3);
-    views[0] = {"ground_sun30", 300.0, 5.0, 30.0, 30.0, 60000.0};
-    views[1] = {"ground_sunset", 300.0, 5.0, 5.0, 0.0, 60000.0};
+    views[0] = {"ground_sun30", 300.0, 5.0, 30.0, 30.0, 30000.0};
+    views[1] = {"ground_sunset", 300.0, 5.0, 5.0, 0.0, 30000.0};
     // 100 km up, the horizon about 10° below: the camera pitched down to it.
     views[2] = {"space_sun30", 100000.0, -10.0, 30.0, 40.0, 0.0};
     return views;
