@@ -5,6 +5,7 @@
 // on the same frames. Writes results.csv,
 // results.md and plot.svg. With --froxel: the froxel fog's sweep beside the ray-marched fog instead
 // (bench/froxel_run.h).
+#include "atmosphere_run.h"
 #include "conclusions.h"
 #include "froxel_run.h"
 #include "motion.h"
@@ -120,6 +121,25 @@ const char* kUsage =
     "                         and slice count, not postfx's default grid\n"
     "  --bandwidth G          memory bandwidth [GB/s] for the apply pass's floor [the copy bandwidth the\n"
     "                         run measures]\n"
+    "atmosphere (--atmosphere; docs/accuracy-cost/README.md, \"Atmosphere (--atmosphere)\"): sky scenes "
+    "(camera\n"
+    "near the ground with the sun at 30 and 5 degrees, terrain in the lower part; 100 km up), each pass's "
+    "GPU\n"
+    "time in frames that rebuild nothing (still), the view-dependent LUTs (camera, sun) or every LUT "
+    "(media),\n"
+    "and the error against reference (a) (postfx::reference::renderAtmosphere) for a sweep of LUT sizes and\n"
+    "sample counts, one knob at a time. Writes results.csv and results.md; the fog sweep's options do not\n"
+    "apply, --size, --warmup*, --frames, --reference-steps [512; quick: 128], --error-stride, --out\n"
+    "[docs/accuracy-cost/atmosphere], --quick and --validation do.\n"
+    "  --atmosphere           this mode\n"
+    "  --atmosphere-views LIST  ground_sun30, ground_sunset, space_sun30 [all]\n"
+    "  --atmosphere-sweep-views LIST  the views the sweep runs on [all measured; quick: ground_sunset]\n"
+    "  --atmosphere-sweep KNOB=a,b,...  a knob's values (repeatable; 'none' sweeps nothing): "
+    "transmittance_size\n"
+    "                         [64x16,128x32,256x64,512x128], transmittance_steps [10,20,40,80], ms_size\n"
+    "                         [16,32,64], ms_directions [16,64,256], ms_steps [10,20,40], sky_view_size\n"
+    "                         [96x54,192x108,384x216], sky_view_steps [10,30,60], ap_size [16,32,64] (N^3),\n"
+    "                         ap_steps_per_slice [1,2,4]; quick: one value of five knobs\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
 
 struct Args {
@@ -147,6 +167,12 @@ struct Args {
     std::string froxelTargetScene;
     double bandwidth = NAN;
     bool froxelQuick = false;  // --froxel --quick
+    // --atmosphere
+    bool atmosphere = false;
+    std::vector<std::string> atmosphereViews, atmosphereSweepViews;
+    std::vector<std::pair<std::string, std::vector<std::string>>> atmosphereSweep;  // --atmosphere-sweep
+    bool atmosphereSweepNone = false;
+    bool quick = false;
     // In motion
     bool motion = true;
     std::vector<std::string> motionScenes;  // empty: the default
@@ -267,6 +293,27 @@ Args parseArgs(int argc, char** argv) {
             args.runner.validation = true;
         } else if (a == "--froxel") {
             args.froxel = true;
+        } else if (a == "--atmosphere") {
+            args.atmosphere = true;
+        } else if (a == "--atmosphere-views") {
+            args.atmosphereViews = cli::splitList(value());
+            if (args.atmosphereViews.empty()) throw cli::UsageError{"--atmosphere-views is empty"};
+        } else if (a == "--atmosphere-sweep-views") {
+            args.atmosphereSweepViews = cli::splitList(value());
+            if (args.atmosphereSweepViews.empty()) throw cli::UsageError{"--atmosphere-sweep-views is empty"};
+        } else if (a == "--atmosphere-sweep") {
+            const std::string text = value();
+            const size_t eq = text.find('=');
+            if (text == "none") {
+                args.atmosphereSweepNone = true;
+            } else if (eq == std::string::npos || cli::splitList(text.substr(eq + 1)).empty() ||
+                       !std::count(bench::atmosphereKnobs().begin(), bench::atmosphereKnobs().end(),
+                                   text.substr(0, eq))) {
+                throw cli::UsageError{"--atmosphere-sweep '" + text +
+                                      "': expected KNOB=a,b,... or none (see --help)"};
+            } else {
+                args.atmosphereSweep.emplace_back(text.substr(0, eq), cli::splitList(text.substr(eq + 1)));
+            }
         } else if (a == "--froxel-grids") {
             const std::string text = value();
             args.froxelSweep.grids.clear();
@@ -354,6 +401,15 @@ Args parseArgs(int argc, char** argv) {
             throw cli::UsageError{"--froxel-target-scene '" + args.froxelTargetScene +
                                   "' is not in --scenes"};
     }
+    if (args.froxel && args.atmosphere)
+        throw cli::UsageError{"--froxel and --atmosphere: one mode at a time"};
+    if (args.atmosphere) {
+        if (!outGiven) args.out = "docs/accuracy-cost/atmosphere";
+        if (!refGiven) args.referenceSteps = quick ? 128 : 512;
+        refGiven = true;
+        if (quick && args.atmosphereSweepViews.empty()) args.atmosphereSweepViews = {"ground_sunset"};
+    }
+    args.quick = quick;
     if (quick) {
         if (!sizeGiven) args.runner.width = 64, args.runner.height = 36;
         if (!warmupGiven) args.runner.warmup = 1;
@@ -471,8 +527,32 @@ int runFroxel(const Args& args, const std::string& command) {
     return bench::runFroxel(f, command, utcNow());
 }
 
+int runAtmosphere(const Args& args, const std::string& command) {
+    bench::AtmosphereRunArgs a;
+    a.runner = args.runner;
+    a.referenceSteps = args.referenceSteps;
+    a.errorStride = args.errorStride;
+    a.out = args.out;
+    a.views = args.atmosphereViews;
+    a.sweepViews = args.atmosphereSweepViews;
+    if (args.quick) {
+        a.psiDirections = 64;  // reference (a)'s Ψ table, coarser: seconds on lavapipe's machine
+        a.psiSteps = 40;
+    }
+    a.sweep = bench::defaultAtmosphereSweep(args.quick);
+    if (args.atmosphereSweepNone) a.sweep.values.clear();
+    for (const auto& [knob, values] : args.atmosphereSweep) {
+        auto it = std::find_if(a.sweep.values.begin(), a.sweep.values.end(),
+                               [&](const auto& kv) { return kv.first == knob; });
+        if (it == a.sweep.values.end()) it = a.sweep.values.insert(a.sweep.values.end(), {knob, {}});
+        it->second = values;
+    }
+    return bench::runAtmosphere(a, command, utcNow());
+}
+
 int run(const Args& args, const std::string& command) {
     if (args.froxel) return runFroxel(args, command);
+    if (args.atmosphere) return runAtmosphere(args, command);
     std::string error;
     // Plan everything first: a bad scene name fails before the GPU work.
     std::vector<ScenePlan> plans;

@@ -8,7 +8,9 @@
 // BenchFroxelSmoke does the same for `postfx-bench --froxel --quick` (its CSV's rows and passes, the
 // report's sections). Both check the in-motion measurement's motion.csv (every row, finite errors, the
 // sequences' references following the camera, the switched-off light gone) and its report sections.
-// ctest runs the two suites as two tests.
+// BenchAtmosphereSmoke: `postfx-bench --atmosphere --quick` (its CSV's rows, the frame plan each situation
+// records, finite errors against reference (a), the report's sections).
+// ctest runs the suites as separate tests.
 // usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
 #include <gtest/gtest.h>
 #include <postfx/fog.h>
@@ -583,6 +585,138 @@ TEST_F(BenchFroxelSmoke, MarkdownHasTheTargetsLightListsAndComparison) {
                                 "## Froxel fog against the ray-marched fog at equal error",
                                 "### fog_default, one frame", "### fog_default, mean of 16 frames",
                                 "## froxel_lights", "## fog_default: light-count sweep", "| device | "})
+        EXPECT_NE(md.find(section), std::string::npos) << section;
+}
+
+// postfx-bench --atmosphere --quick: three views × four situations at postfx's defaults and the quick
+// sweep's five points on ground_sunset (bench/atmosphere_bench.h).
+const std::vector<std::string> kAtmosphereColumns = {
+    "view",
+    "situation",
+    "knob",
+    "value",
+    "transmittance_size",
+    "transmittance_steps",
+    "ms_size",
+    "ms_directions",
+    "ms_steps",
+    "sky_view_size",
+    "sky_view_steps",
+    "ap_size",
+    "ap_steps_per_slice",
+    "width",
+    "height",
+    "warmup",
+    "frames",
+    "gpu_ms_median",
+    "gpu_ms_p10",
+    "gpu_ms_p90",
+    "gpu_ms_min",
+    "gpu_ms_max",
+    "transmittance_ms",
+    "multiple_scattering_ms",
+    "sky_view_ms",
+    "aerial_perspective_ms",
+    "apply_ms",
+    "pass_frames",
+    "sky_pixels",
+    "sky_rel_rmse",
+    "sky_max_abs",
+    "geometry_pixels",
+    "geometry_rel_rmse",
+    "geometry_max_abs",
+    "all_rel_rmse",
+    "non_finite",
+};
+const std::vector<std::string> kAtmosphereViews = {"ground_sun30", "ground_sunset", "space_sun30"};
+const size_t kAtmosphereSweepRows = 5;  // --quick: one value of five knobs, on ground_sunset
+
+class BenchAtmosphereSmoke : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        out_ = gOut + "/atmosphere";
+        std::filesystem::remove_all(out_);
+        const std::string command =
+            "'" + gBench + "' --atmosphere --quick --size 64x36 --validation --out '" + out_ + "'";
+        std::printf("running: %s\n", command.c_str());
+        std::fflush(stdout);
+        status_ = std::system(command.c_str());
+    }
+    static int status_;
+    static std::string out_;
+};
+int BenchAtmosphereSmoke::status_ = -1;
+std::string BenchAtmosphereSmoke::out_;
+
+// Which passes the row's timed frames recorded, from pass_frames ("atmosphere.apply=2;..."): each must
+// have been recorded in every timed frame.
+std::vector<std::string> recordedPasses(const Row& row) {
+    std::vector<std::string> passes;
+    std::stringstream s(row.at("pass_frames"));
+    std::string item;
+    while (std::getline(s, item, ';')) {
+        const size_t eq = item.find('=');
+        EXPECT_EQ(item.substr(eq + 1), row.at("frames")) << item;
+        passes.push_back(item.substr(0, eq));
+    }
+    return passes;
+}
+
+TEST_F(BenchAtmosphereSmoke, CsvHasEveryRowWithThePlanAndFiniteErrors) {
+    ASSERT_EQ(status_, 0) << "postfx-bench --atmosphere failed (its output is above)";
+    std::vector<std::string> header;
+    std::vector<Row> rows;
+    bool sawDevice = false;
+    ASSERT_TRUE(readCsv(out_ + "/results.csv", header, rows, sawDevice)) << out_ << "/results.csv";
+    EXPECT_TRUE(sawDevice);
+    ASSERT_EQ(header, kAtmosphereColumns);
+    ASSERT_EQ(rows.size(), kAtmosphereViews.size() * 4 + kAtmosphereSweepRows);
+    std::map<std::string, double> defaultSky;  // view -> sky error at the defaults
+    for (const Row& row : rows) {
+        const std::string what =
+            row.at("view") + " " + row.at("situation") + " " + row.at("knob") + "=" + row.at("value");
+        EXPECT_EQ(row.at("width"), "64");
+        EXPECT_EQ(row.at("height"), "36");
+        EXPECT_EQ(row.at("non_finite"), "0") << what;
+        EXPECT_GT(number(row.at("gpu_ms_median")), 0.0) << what;  // lavapipe has timestamps
+        const double sky = number(row.at("sky_rel_rmse"));
+        EXPECT_TRUE(std::isfinite(sky)) << what;
+        EXPECT_LT(sky, 0.1) << what;
+        const bool ground = row.at("view") != "space_sun30";
+        EXPECT_EQ(number(row.at("geometry_pixels")) > 0, ground) << what;
+        if (ground) {
+            EXPECT_LT(number(row.at("geometry_rel_rmse")), 0.1) << what;
+        }
+        if (row.at("knob") == "default") {
+            defaultSky[row.at("view")] = sky;
+        } else {
+            EXPECT_EQ(row.at("situation"), "media") << what;
+            EXPECT_EQ(row.at("view"), "ground_sunset") << what;
+        }
+        // The frame plan: still records apply only; camera the aerial perspective too; sun the sky view
+        // (where the camera is low enough to use it) too; media every LUT.
+        const std::vector<std::string> passes = recordedPasses(row);
+        auto has = [&](const char* pass) {
+            return std::count(passes.begin(), passes.end(), std::string("atmosphere.") + pass) > 0;
+        };
+        const std::string situation = row.at("situation");
+        EXPECT_TRUE(has("apply")) << what;
+        EXPECT_EQ(has("transmittance"), situation == "media") << what;
+        EXPECT_EQ(has("multiple_scattering"), situation == "media") << what;
+        EXPECT_EQ(has("aerial_perspective"), situation != "still") << what;
+        EXPECT_EQ(has("sky_view"), ground && (situation == "sun" || situation == "media")) << what;
+    }
+    ASSERT_EQ(defaultSky.size(), kAtmosphereViews.size());
+}
+
+TEST_F(BenchAtmosphereSmoke, MarkdownHasTheTargetsPlanAndSweep) {
+    ASSERT_EQ(status_, 0);
+    const std::string md = readFile(out_ + "/results.md");
+    for (const char* section :
+         {"| device | ", "| command | ", "## Targets", "Not 1920×1080", "still camera and sun ≤ 0.02 ms",
+          "moving camera or sun ≤ 0.06 ms", "full rebuild after a media change ≤ 0.15 ms",
+          "## What each frame rebuilds", "## LUT sizes and sample counts", "### ground_sunset",
+          "| transmittance_steps=10 |"})
         EXPECT_NE(md.find(section), std::string::npos) << section;
 }
 
