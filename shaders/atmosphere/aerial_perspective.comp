@@ -3,7 +3,8 @@
 // 2020 section 5.4. A volume over the frustum of the camera it was built for (apClipToView, apCamera):
 // texel (x, y, k) holds the in-scattered luminance per unit sun illuminance and the transmittance from
 // where the ray enters the atmosphere (the camera, inside it) to the end of slice k, at depth
-// (k + 1)/slices · distance, marched with (k + 1) · apLut.w uniform steps (the reference code's).
+// (k + 1)/slices · distance, marched with (k + 1) · apLut.w uniform steps (the reference code's), through
+// the planet's sphere.
 #extension GL_GOOGLE_include_directive : require
 
 #include "atmosphere/atmosphere_shared.h"
@@ -29,11 +30,15 @@ void main() {
     vec4 p = atmo.apClipToView * vec4(ndc, 0.5, 1.0);
     vec3 dir = normalize(p.xyz / p.w);
     vec3 origin = atmo.apCamera.xyz;
-    vec3 seg = atmosphereSegment(origin, dir);
+    // The host's geometry ends a geometry pixel's ray, not the planet's sphere: the march goes on below the
+    // ground (in the ground's medium) to where the ray leaves the top, so terrain below the sphere (a flat
+    // world's plane far away) gets its aerial perspective.
+    vec2 top = atmosphereRaySphere(origin, dir, atmo.radii.y);
+    float tBegin = max(top.x, 0.0);
     float sliceEnd = float(texel.z + 1u) / float(atmo.apLut.z) * atmo.apCamera.w;
-    float tEnd = min(seg.x + sliceEnd, seg.y);
+    float tEnd = min(tBegin + sliceEnd, top.y);
     AtmosphereMarch march =
-        atmosphereMarch(origin, dir, seg.x, tEnd, (texel.z + 1u) * atmo.apLut.w, false, atmo.toSun.xyz);
+        atmosphereMarch(origin, dir, tBegin, tEnd, (texel.z + 1u) * atmo.apLut.w, false, atmo.toSun.xyz);
     imageStore(apScatteringOut, ivec3(texel),
                vec4(min(march.luminance * atmo.skyView.w, vec3(65504.0)), 1.0));
     imageStore(apTransmittanceOut, ivec3(texel), vec4(march.transmittance, 1.0));

@@ -18,7 +18,8 @@ vec3 atmosphereSunTransmittance(vec3 x) {
     float ground = fog.planet.x, top = fog.planet.y;
     if (rayMeetsGround(r, mu, ground)) return vec3(0.0);
     if (r >= top) return vec3(1.0);
-    return textureLod(atmosphereTransmittance, transmittanceLutUv(r, mu, ground, top, fog.planet.zw), 0.0).rgb;
+    return textureLod(atmosphereTransmittance, transmittanceLutUv(r, mu, ground, top, fog.planet.zw), 0.0)
+        .rgb;
 }
 
 #endif

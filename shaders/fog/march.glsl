@@ -63,8 +63,8 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
 
     // Analytic tail: height fog from max distance to the surface (or infinity), no noise, no shadow map.
     if (!cutOff)
-        addAnalyticTail(dir, surfaceDistance, sunPhase * atmosphereSunTransmittance(dir * maxDistance), inScattered,
-                        transmittance);
+        addAnalyticTail(dir, surfaceDistance, sunPhase * atmosphereSunTransmittance(dir * maxDistance),
+                        inScattered, transmittance);
     return FogScatter(inScattered, transmittance);
 }
 

@@ -67,7 +67,8 @@ void main() {
     vec3 inScattered = volume.rgb / froxel.jitter.w;
     float transmittance = volume.a;
     vec3 sunPhase = fog.sunIlluminance.rgb * henyeyGreensteinDirections(ray.dir, fog.toSun.xyz, fog.medium.z);
-    addAnalyticTail(ray.dir, ray.surfaceDistance, sunPhase * atmosphereSunTransmittance(ray.dir * fog.medium.w),
-                    inScattered, transmittance);
+    addAnalyticTail(ray.dir, ray.surfaceDistance,
+                    sunPhase * atmosphereSunTransmittance(ray.dir * fog.medium.w), inScattered,
+                    transmittance);
     imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, transmittance, inScattered), color.a));
 }

@@ -164,7 +164,8 @@ void main() {
         vec3 sun = fog.sunIlluminance.rgb;
         if (any(greaterThan(sun, vec3(0.0))))
             light += sun * henyeyGreensteinDirections(dir, fog.toSun.xyz, fog.medium.z) *
-                     shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y) * atmosphereSunTransmittance(x);
+                     shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y) *
+                     atmosphereSunTransmittance(x);
 #ifdef LOCAL_LIGHTS
         light += localLightsScatter(id, x, dir);
 #endif

@@ -10,6 +10,8 @@
 #include "fog_harness.h"
 #include "image_compare.h"
 
+#include <postfx/reference.h>
+
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
@@ -251,34 +253,25 @@ TEST_F(AtmosphereGpuTest, ThinRayleighZenithMatchesSingleScatteringClosedForm) {
     }
 }
 
-// The model per pixel in double (single scattering: the multiple-scattering term has its own LUT test),
-// as renderAtmosphere's reference (a): sky pixels to the top or the lit ground, geometry pixels over
-// the host's color to their surface.
-std::vector<float> referenceImage(const postfx::FrameInfo& frame, const FogHarnessImages& im,
-                                  double distance) {
-    const atm::Model m = atm::modelFrom(frame.atmosphere);
-    const glm::dvec3 origin = atm::clampAboveGround(m, atm::planetCentred(m, frame.camera.position));
-    atm::Sun sun;
-    sun.toSun = glm::normalize(glm::dvec3(frame.sun.toSun));
-    sun.illuminance = glm::dvec3(frame.sun.illuminance);
-    atm::ViewRayOptions o;
-    o.steps = 600;
-    o.transmittanceSteps = 300;
-    o.multipleScattering = false;
-    o.ground = distance <= 0.0;
-    if (distance > 0.0) o.maxDistance = distance;
-    std::vector<float> out(im.color.size());
-    for (uint32_t j = 0; j < im.height; ++j)
-        for (uint32_t i = 0; i < im.width; ++i) {
-            const glm::dvec3 dir = pixelDirection(frame.camera, i, j, im.width, im.height);
-            const atm::ViewRayResult r = atm::integrateViewRay(m, origin, dir, sun, o);
-            const bool ground = distance <= 0.0 && atm::atmosphereSegment(m, origin, dir).hitsGround;
-            for (int c = 0; c < 4; ++c) {
-                const size_t k = (size_t(j) * im.width + i) * 4 + c;
-                const double behind = ground ? 0.0 : im.color[k];
-                out[k] = c == 3 ? im.color[k] : float(behind * r.transmittance[c] + r.luminance[c]);
-            }
-        }
+// Reference (a): the model without LUTs per pixel in double (postfx::reference::renderAtmosphere), with
+// multiple scattering from its fine Ψ table when the frame has it on.
+std::vector<float> referenceImage(const postfx::FrameInfo& frame, const FogHarnessImages& im) {
+    postfx::reference::AtmosphereInputs in;
+    in.width = im.width;
+    in.height = im.height;
+    in.color = im.color;
+    in.depth = im.depth;
+    in.depthConvention.reversedZ = true;
+    in.camera = frame.camera;
+    in.sun = frame.sun;
+    in.settings = frame.atmosphere;
+    in.stepsPerPixel = 600;
+    in.psiTableMuS = 32;
+    in.psiTableHeights = 32;
+    in.psiDirections = 64;
+    std::vector<float> out;
+    const postfx::Status s = postfx::reference::renderAtmosphere(in, out);
+    EXPECT_TRUE(s.ok()) << s.message;
     return out;
 }
 
@@ -292,10 +285,28 @@ TEST_F(AtmosphereGpuTest, SkyPixelsMatchReferenceAtSunElevations) {
         frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.1, 0.3}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
         const FogHarnessImages im = images(frame.camera, 16, 8);
         const std::vector<float> out = render(frame, im);
-        const std::vector<float> ref = referenceImage(frame, im, 0.0);
+        const std::vector<float> ref = referenceImage(frame, im);
         const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.05, 1e-6);
         std::printf("[ atmosphere ] sky, sun at %.0f deg: GPU vs reference %s\n", elevation,
                     stats.summary().c_str());
+        EXPECT_EQ(stats.nonFinite, 0u);
+        EXPECT_LT(stats.relativeRmse, 0.03) << "sun elevation " << elevation;
+    }
+}
+
+// The same with multiple scattering: the LUTs' Ψ (32×32, 64 directions) against the reference's fine
+// table, noon and sunset.
+TEST_F(AtmosphereGpuTest, SkyWithMultipleScatteringMatchesReference) {
+    for (double elevation : {30.0, 2.0}) {
+        postfx::FrameInfo frame = skyFrame(elevation);
+        frame.atmosphere.sunAngularRadiusDeg = 0.0f;
+        frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.1, 0.3}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
+        const FogHarnessImages im = images(frame.camera, 16, 8);
+        const std::vector<float> out = render(frame, im);
+        const std::vector<float> ref = referenceImage(frame, im);
+        const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.05, 1e-6);
+        std::printf("[ atmosphere ] sky with multiple scattering, sun at %.0f deg: GPU vs reference %s\n",
+                    elevation, stats.summary().c_str());
         EXPECT_EQ(stats.nonFinite, 0u);
         EXPECT_LT(stats.relativeRmse, 0.03) << "sun elevation " << elevation;
     }
@@ -310,13 +321,39 @@ TEST_F(AtmosphereGpuTest, AerialPerspectiveMatchesReference) {
         FogHarnessImages im = images(frame.camera, 16, 8, distance);
         std::fill(im.color.begin(), im.color.end(), 0.2f);
         const std::vector<float> out = render(frame, im);
-        const std::vector<float> ref = referenceImage(frame, im, distance);
+        const std::vector<float> ref = referenceImage(frame, im);
         const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.02, 1e-3);
         std::printf("[ atmosphere ] aerial perspective at %.0f m: GPU vs reference %s\n", distance,
                     stats.summary().c_str());
         EXPECT_EQ(stats.nonFinite, 0u);
         EXPECT_LT(stats.relativeRmse, 0.01) << distance << " m";
     }
+}
+
+// A flat world's ground plane y = 0 seen from 300 m, out to 60 km (beyond the LUT's 32 km: its last slice):
+// far pixels lie below the planet's sphere, whose curvature drops 280 m at 60 km, and still get their
+// aerial perspective (the march goes on below the sphere, as the reference's).
+TEST_F(AtmosphereGpuTest, AerialPerspectiveOfAFlatGroundPlane) {
+    postfx::FrameInfo frame = skyFrame(25.0);
+    frame.atmosphere.multipleScattering = false;
+    frame.atmosphere.aerialPerspectiveDistance = 64000.0f;
+    frame.camera = lookCamera({0.0, 300.0, 0.0}, {1.0, -0.08, 0.3}, {0.0, 1.0, 0.0}, 40.0f, 2.0f);
+    FogHarnessImages im = images(frame.camera, 16, 8);
+    for (uint32_t j = 0; j < im.height; ++j)
+        for (uint32_t i = 0; i < im.width; ++i) {
+            const glm::dvec3 d = pixelDirection(frame.camera, i, j, im.width, im.height);
+            const double t = d.y < 0.0 ? 300.0 / -d.y : 0.0;
+            if (t <= 0.0 || t > 6e4) continue;
+            im.depth[size_t(j) * im.width + i] = depthAtDistance(frame.camera, d, t);
+            for (int c = 0; c < 3; ++c)
+                im.color[(size_t(j) * im.width + i) * 4 + c] = 0.05f;
+        }
+    const std::vector<float> out = render(frame, im);
+    const std::vector<float> ref = referenceImage(frame, im);
+    const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.03, 1e-3);
+    std::printf("[ atmosphere ] flat ground plane to 60 km: GPU vs reference %s\n", stats.summary().c_str());
+    EXPECT_EQ(stats.nonFinite, 0u);
+    EXPECT_LT(stats.relativeRmse, 0.02);
 }
 
 // The camera rising through the top of the atmosphere, looking at the horizon: the images just below

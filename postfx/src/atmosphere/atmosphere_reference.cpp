@@ -290,7 +290,11 @@ std::shared_ptr<const PsiTable> sharedPsiTable(const Model& m, const PsiTableOpt
 ViewRayResult integrateViewRay(const Model& m, const glm::dvec3& origin, const glm::dvec3& dir,
                                const Sun& sun, const ViewRayOptions& o) {
     ViewRayResult res;
-    const AtmosphereSegment seg = atmosphereSegment(m, origin, dir);
+    AtmosphereSegment seg = atmosphereSegment(m, origin, dir);
+    if (o.throughGround && seg.hitsGround) {
+        seg.tEnd = raySphere(origin, dir, m.topRadius).tFar;
+        seg.hitsGround = false;
+    }
     const double tEnd = std::min(seg.tEnd, o.maxDistance);
     if ((tEnd <= seg.tBegin && !seg.hitsGround) || o.steps == 0) return res;
     const double cosViewSun = glm::dot(dir, sun.toSun);

@@ -115,6 +115,9 @@ struct ViewRayOptions {
     PsiOptions psi;
     // Add the lit ground where the ray ends on it (within maxDistance): T·Tsun·max(0, n·s)·albedo/π·E.
     bool ground = false;
+    // The ray ends at maxDistance (a host's surface), not on the planet's sphere: it goes on below the
+    // ground, in the ground's medium, to where it leaves the top (the aerial perspective of geometry).
+    bool throughGround = false;
     // Fine tables instead of the per-sample integrals (the exact path when null): each sample's Tsun from
     // `transmittanceTable` (transmittanceSteps unused), Ψ from `psiTable` (psi unused). Not owned.
     const TransmittanceTable* transmittanceTable = nullptr;

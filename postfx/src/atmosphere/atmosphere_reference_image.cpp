@@ -142,6 +142,7 @@ Status renderAtmosphere(const AtmosphereInputs& in, std::vector<float>& out) {
                 o.ground = true;
             } else {
                 o.maxDistance = ray.distance;
+                o.throughGround = true;
             }
             const atmosphere::ViewRayResult res = atmosphere::integrateViewRay(m, origin, ray.d, sun, o);
             dvec3 L = res.luminance;
