@@ -58,8 +58,10 @@ void aerialPerspective(vec3 x, out vec3 luminance, out vec3 transmittance) {
     vec4 clip = atmo.apViewToClip * vec4(xb, 1.0);
     vec2 uv = clip.w > 0.0 ? clamp(clip.xy / clip.w * 0.5 + 0.5, 0.0, 1.0) : vec2(0.5);
     vec3 dir = xb / max(distance, 1e-30);
-    vec3 seg = atmosphereSegment(atmo.apCamera.xyz, dir);
-    float w = max(distance - seg.x, 0.0) / atmo.apCamera.w;  // [0, 1] over the LUT's depth
+    // From space the LUT's slices start where each ray enters the atmosphere; inside it, at the camera.
+    float entry =
+        atmo.apOffset.w != 0.0 ? max(atmosphereRaySphere(atmo.apCamera.xyz, dir, atmo.radii.y).x, 0.0) : 0.0;
+    float w = max(distance - entry, 0.0) / atmo.apCamera.w;  // [0, 1] over the LUT's depth
     float slices = float(atmo.apLut.z);
     // Texel k holds the end of slice k; within the first slice (L, T) run from (0, 1) at the entry.
     float z = max(w * slices - 0.5, 0.5) / slices;

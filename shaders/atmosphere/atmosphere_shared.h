@@ -9,8 +9,11 @@
 namespace postfx::gpu {
 #endif
 
-PFX_CONST(uint, kAtmosphereGroupSize, 8);  // LUT and apply workgroups: 8×8 invocations (AP: 4×4×4)
-PFX_CONST(uint, kAtmosphereApGroupSize, 4);
+PFX_CONST(uint, kAtmosphereGroupSize, 8);  // transmittance, sky-view and apply workgroups: 8×8 invocations
+// The aerial-perspective LUT: one workgroup per (x, y) texel column, its invocations sharing the slices.
+PFX_CONST(uint, kAtmosphereApGroupSize, 32);
+// The sky-view LUT: each texel's ray split among this many invocations (a z of its workgroup).
+PFX_CONST(uint, kAtmosphereSkyViewSplit, 4);
 // The multiple-scattering LUT: one workgroup per texel, one invocation per direction (at most 1024).
 PFX_CONST(uint, kAtmosphereMsGroupSize, 64);
 

@@ -29,16 +29,19 @@ struct AtmosphereMarch {
 // Marches [tBegin, tEnd] of ray o + t·d with `steps` steps, each sampled at its middle. quadratic: the
 // step boundaries at tBegin + (tEnd - tBegin)·(i/steps)², short near the origin where a view ray from
 // the ground meets the densest air (as Hillaire's sky-view LUT); else uniform.
-AtmosphereMarch atmosphereMarch(vec3 o, vec3 d, float tBegin, float tEnd, uint steps, bool quadratic,
-                                vec3 toSun) {
+// Steps [first, last) of the `steps`: a part of the march, for passes that split a ray among invocations
+// (combined front to back: L = L0 + T0·L1, T = T0·T1).
+AtmosphereMarch atmosphereMarchPart(vec3 o, vec3 d, float tBegin, float tEnd, uint steps, uint first,
+                                    uint last, bool quadratic, vec3 toSun) {
     AtmosphereMarch result = AtmosphereMarch(vec3(0.0), vec3(1.0));
-    if (!(tEnd > tBegin) || steps == 0u) return result;
+    if (!(tEnd > tBegin) || steps == 0u || first >= last) return result;
     float cosViewSun = dot(d, toSun);
     float phaseR = rayleighPhase(cosViewSun);
     float phaseM = cornetteShanksPhase(cosViewSun, atmo.mie.w);
     float span = tEnd - tBegin;
-    float previous = 0.0;
-    for (uint i = 0u; i < steps; ++i) {
+    float x0 = float(first) / float(steps);
+    float previous = quadratic ? x0 * x0 : x0;
+    for (uint i = first; i < last; ++i) {
         float x = float(i + 1u) / float(steps);
         float next = quadratic ? x * x : x;
         float dt = (next - previous) * span;
@@ -57,6 +60,11 @@ AtmosphereMarch atmosphereMarch(vec3 o, vec3 d, float tBegin, float tEnd, uint s
         result.transmittance *= exp(-m.extinction * dt);
     }
     return result;
+}
+
+AtmosphereMarch atmosphereMarch(vec3 o, vec3 d, float tBegin, float tEnd, uint steps, bool quadratic,
+                                vec3 toSun) {
+    return atmosphereMarchPart(o, d, tBegin, tEnd, steps, 0u, steps, quadratic, toSun);
 }
 
 #endif

@@ -2,12 +2,15 @@
 // Pass 3 of the atmosphere (docs/effects/atmosphere.md, "Passes"): the sky-view LUT, Hillaire 2020
 // section 5.3. For the camera's radius and the sun's zenith angle it was built for (AtmosphereUniforms
 // skyView.xy), texel (azimuth from the sun, view zenith) holds the luminance per unit sun illuminance of
-// the view ray to the top or the ground, `skyViewLut.z` steps spaced quadratically from the camera.
+// the view ray to the top or the ground, `skyViewLut.z` steps spaced quadratically from the camera. Each
+// texel's steps are split among kAtmosphereSkyViewSplit invocations (z of the workgroup), composed front to
+// back (L = L0 + T0·L1, T = T0·T1): the pass is bound by each ray's chain of dependent fetches, not by work.
 #extension GL_GOOGLE_include_directive : require
 
 #include "atmosphere/atmosphere_shared.h"
 
-layout(local_size_x = kAtmosphereGroupSize, local_size_y = kAtmosphereGroupSize) in;
+layout(local_size_x = kAtmosphereGroupSize, local_size_y = kAtmosphereGroupSize,
+       local_size_z = kAtmosphereSkyViewSplit) in;
 
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
@@ -19,18 +22,38 @@ layout(binding = kAtmosphereBindingSkyView, rgba16f) uniform writeonly image2D s
 #include "atmosphere/model.glsl"
 #include "atmosphere/march.glsl"
 
+shared vec3 partL[kAtmosphereSkyViewSplit][kAtmosphereGroupSize * kAtmosphereGroupSize];
+shared vec3 partT[kAtmosphereSkyViewSplit][kAtmosphereGroupSize * kAtmosphereGroupSize];
+
 void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(texel, atmo.skyViewLut.xy))) return;
-    float r = atmo.skyView.x, muS = atmo.skyView.y;
-    vec2 view = skyViewParams(r, (vec2(texel) + 0.5) / vec2(atmo.skyViewLut.xy));
-    // The local frame: zenith +y, the sun in the x-y plane toward +x.
-    float sinView = sqrt(max(0.0, 1.0 - view.x * view.x));
-    float sinAzimuth = sqrt(max(0.0, 1.0 - view.y * view.y));
-    vec3 dir = vec3(sinView * view.y, view.x, sinView * sinAzimuth);
-    vec3 toSun = vec3(sqrt(max(0.0, 1.0 - muS * muS)), muS, 0.0);
-    vec3 origin = vec3(0.0, r, 0.0);
-    vec3 seg = atmosphereSegment(origin, dir);
-    AtmosphereMarch march = atmosphereMarch(origin, dir, seg.x, seg.y, atmo.skyViewLut.z, true, toSun);
-    imageStore(skyViewOut, ivec2(texel), vec4(min(march.luminance * atmo.skyView.w, vec3(65504.0)), 1.0));
+    uint part = gl_LocalInvocationID.z;
+    uint slot = gl_LocalInvocationID.y * kAtmosphereGroupSize + gl_LocalInvocationID.x;
+    bool inside = all(lessThan(texel, atmo.skyViewLut.xy));
+    AtmosphereMarch march = AtmosphereMarch(vec3(0.0), vec3(1.0));
+    if (inside) {
+        float r = atmo.skyView.x, muS = atmo.skyView.y;
+        vec2 view = skyViewParams(r, (vec2(texel) + 0.5) / vec2(atmo.skyViewLut.xy));
+        // The local frame: zenith +y, the sun in the x-y plane toward +x.
+        float sinView = sqrt(max(0.0, 1.0 - view.x * view.x));
+        float sinAzimuth = sqrt(max(0.0, 1.0 - view.y * view.y));
+        vec3 dir = vec3(sinView * view.y, view.x, sinView * sinAzimuth);
+        vec3 toSun = vec3(sqrt(max(0.0, 1.0 - muS * muS)), muS, 0.0);
+        vec3 origin = vec3(0.0, r, 0.0);
+        vec3 seg = atmosphereSegment(origin, dir);
+        uint steps = atmo.skyViewLut.z;
+        uint first = part * steps / kAtmosphereSkyViewSplit,
+             last = (part + 1u) * steps / kAtmosphereSkyViewSplit;
+        march = atmosphereMarchPart(origin, dir, seg.x, seg.y, steps, first, last, true, toSun);
+    }
+    partL[part][slot] = march.luminance;
+    partT[part][slot] = march.transmittance;
+    barrier();
+    if (part != 0u || !inside) return;
+    vec3 L = vec3(0.0), T = vec3(1.0);
+    for (uint i = 0u; i < kAtmosphereSkyViewSplit; ++i) {
+        L += T * partL[i][slot];
+        T *= partT[i][slot];
+    }
+    imageStore(skyViewOut, ivec2(texel), vec4(min(L * atmo.skyView.w, vec3(65504.0)), 1.0));
 }

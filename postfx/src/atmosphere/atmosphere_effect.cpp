@@ -167,7 +167,8 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     u.albedo = glm::vec4(s.groundAlbedo, s.ozoneHalfWidth);
     u.camera = glm::vec4(glm::vec3(camera), float(glm::length(camera)));
     u.apCamera = glm::vec4(glm::vec3(v.aerial.camera), s.aerialPerspectiveDistance);
-    u.apOffset = glm::vec4(glm::vec3(camera - v.aerial.camera), 0.0f);
+    u.apOffset =
+        glm::vec4(glm::vec3(camera - v.aerial.camera), glm::length(v.aerial.camera) >= t ? 1.0f : 0.0f);
     const glm::dvec3 toSun = glm::normalize(glm::dvec3(frame.sun.toSun));
     // The disk: cos α, and 1 / its solid angle 2π(1 - cos α) = 4π sin²(α/2) (no cancellation); none for α =
     // 0.
@@ -324,8 +325,7 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     const uint64_t apKey = viewKey(v.aerial);
     const core::ImageRef apScattering = b.persistentImage(kApScatteringLut, apDesc, apKey);
     const core::ImageRef apTransmittance = b.persistentImage(kApTransmittanceLut, apDesc, apKey);
-    const uint32_t g3 = gpu::kAtmosphereApGroupSize;
-    b.pass(kApPass, groupsFor(ap.x, g3), groupsFor(ap.y, g3), groupsFor(ap.z, g3));
+    b.pass(kApPass, ap.x, ap.y, 1);
     bindLuts();
     b.bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::StorageWrite)
         .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::StorageWrite);
