@@ -1,6 +1,6 @@
-// Renderer::renderReference: the GPU frame up to lighting, read back, and postfx's CPU fog reference
-// over it (postfx::reference::renderFog, or renderFroxelFog for the froxel fog) with the same inputs the
-// GPU frame gave postfx.
+// Renderer::renderReference: the GPU frame up to lighting, read back, and postfx's CPU references over it
+// in the composite order: the atmosphere (postfx::reference::renderAtmosphere, reference (a)), then the fog
+// (renderFog, or renderFroxelFog for the froxel fog), with the same inputs the GPU frame gave postfx.
 #include "host/renderer.h"
 #include "host/renderer_impl.h"
 
@@ -198,6 +198,27 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         out.width = w;
         out.height = h;
     }
+    // The atmosphere first (the composite order: the farthest first), then the fog over its result.
+    if (in.atmosphere.enabled) {
+        postfx::reference::AtmosphereInputs ai;
+        ai.width = out.width;
+        ai.height = out.height;
+        ai.color = color;
+        ai.depth = depth;
+        ai.depthConvention.reversedZ = r.options.reversedZ;
+        ai.depthConvention.infiniteFar = r.options.infiniteFar;
+        ai.camera = in.camera;
+        ai.camera.projection = projection;
+        ai.sun = in.sun;
+        ai.settings = in.atmosphere;
+        ai.stepsPerPixel = stepsPerPixel;
+        std::vector<float> withAtmosphere;
+        if (const postfx::Status s = postfx::reference::renderAtmosphere(ai, withAtmosphere); !s.ok()) {
+            error = "atmosphere reference: " + s.message;
+            return false;
+        }
+        color = std::move(withAtmosphere);
+    }
     if (!fog) {
         out.rgba = std::move(color);
         return true;
@@ -234,6 +255,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
             fi.noise = noiseTexels01;
             fi.noiseSize = noiseSize;
         }
+        fi.atmosphere = in.atmosphere;  // the sun through it at each sample
         fi.stepsPerPixel = stepsPerPixel;
         fi.threads = 0;  // all hardware threads
     };
