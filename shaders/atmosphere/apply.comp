@@ -72,15 +72,16 @@ void aerialPerspective(vec3 x, out vec3 luminance, out vec3 transmittance) {
     transmittance = mix(vec3(1.0), T, first);
 }
 
-// The sky-view LUT's luminance per unit illuminance along unit d from the camera.
-vec3 skyViewLuminance(vec3 d) {
-    vec3 up = normalize(atmo.camera.xyz);
-    float cosView = dot(d, up);
-    vec3 sunHorizontal = atmo.toSun.xyz - up * dot(atmo.toSun.xyz, up);
+// The sky-view LUT's luminance per unit illuminance along unit d, cosView = dot(d, the camera's zenith).
+vec3 skyViewLuminance(vec3 d, float cosView) {
+    vec3 up = atmo.camera.xyz / atmo.camera.w;
     vec3 viewHorizontal = d - up * cosView;
-    float lengths = length(sunHorizontal) * length(viewHorizontal);
-    float cosAzimuth = lengths > 1e-12 ? dot(sunHorizontal, viewHorizontal) / lengths : 1.0;
-    return textureLod(skyViewLut, skyViewUv(atmo.skyView.x, cosView, cosAzimuth), 0.0).rgb / atmo.skyView.w;
+    float viewLength = length(viewHorizontal);
+    float cosAzimuth = atmo.sunHorizontal.w != 0.0 && viewLength > 1e-6
+                           ? dot(atmo.sunHorizontal.xyz, viewHorizontal) / viewLength
+                           : 1.0;
+    vec2 uv = skyViewUvAtHorizon(atmo.skyHorizon.x, atmo.skyHorizon.y, cosView, cosAzimuth);
+    return textureLod(skyViewLut, uv, 0.0).rgb / atmo.skyView.w;
 }
 
 void main() {
@@ -101,24 +102,40 @@ void main() {
     } else {
         vec3 d = normalize(x);
         vec3 o = atmo.camera.xyz;
-        vec3 seg = atmosphereSegment(o, d);
-        bool ground = seg.z != 0.0;
-        // T of the view ray through the atmosphere, from the transmittance LUT: to the top from where it
-        // enters; to the ground as T(ground → top along -d) / T(entry → top along -d).
-        vec3 entry = o + seg.x * d;
-        vec3 T = vec3(1.0);
-        if (seg.y > seg.x) {
+        float r = atmo.camera.w, g = atmo.radii.x;
+        float mu = dot(o, d) / r;
+        float blend = atmo.radii.w;
+        bool ground;
+        vec3 L = vec3(0.0), T = vec3(1.0), q = vec3(0.0);
+        if (blend == 0.0) {
+            // The camera inside the atmosphere, below the band: the sky-view LUT, T from the transmittance
+            // LUT: to the top, or to the ground as T(ground → top along -d) / T(camera → top along -d).
+            ground = rayMeetsGround(r, mu, g);
+            L = skyViewLuminance(d, mu);
             if (ground) {
-                vec3 num = transmittanceToTop(o + seg.y * d, -d), den = transmittanceToTop(entry, -d);
+                float t = max(0.0, -r * mu - sqrt(max(0.0, (g - r) * (g + r) + r * r * mu * mu)));
+                q = o + t * d;
+                vec3 num = transmittanceToTop(q, -d), den = transmittanceToTop(o, -d);
                 T = all(greaterThan(den, vec3(0.0))) ? clamp(num / den, 0.0, 1.0) : vec3(0.0);
             } else {
-                T = transmittanceToTop(entry, d);
+                T = textureLod(transmittanceLut, transmittanceUv(r, mu), 0.0).rgb;
             }
-        }
-        vec3 L = vec3(0.0);
-        float blend = atmo.radii.w;
-        if (blend < 1.0) L = skyViewLuminance(d);
-        if (blend > 0.0) {
+        } else {
+            // High up or in space: each pixel's ray marched from where it enters the atmosphere, blended
+            // with the sky-view LUT in the band below (radii.w).
+            vec3 seg = atmosphereSegment(o, d);
+            ground = seg.z != 0.0;
+            q = o + seg.y * d;
+            vec3 entry = o + seg.x * d;
+            if (seg.y > seg.x) {
+                if (ground) {
+                    vec3 num = transmittanceToTop(q, -d), den = transmittanceToTop(entry, -d);
+                    T = all(greaterThan(den, vec3(0.0))) ? clamp(num / den, 0.0, 1.0) : vec3(0.0);
+                } else {
+                    T = transmittanceToTop(entry, d);
+                }
+            }
+            if (blend < 1.0) L = skyViewLuminance(d, mu);
             AtmosphereMarch march =
                 atmosphereMarch(o, d, seg.x, seg.y, atmo.skyViewLut.z, true, atmo.toSun.xyz);
             L = mix(L, march.luminance, blend);
@@ -126,7 +143,6 @@ void main() {
         }
         vec3 background = color.rgb;
         if (ground) {
-            vec3 q = o + seg.y * d;
             float nDotL = max(0.0, dot(normalize(q), atmo.toSun.xyz));
             L += T * sunTransmittanceAt(q, atmo.toSun.xyz) * nDotL * atmo.albedo.rgb / kAtmospherePi;
             background = vec3(0.0);  // the planet hides what lies beyond it

@@ -63,6 +63,11 @@ struct AtmosphereUniforms {
     // scale of the luminance LUTs (multiple scattering, sky view, aerial perspective): they hold luminance
     // per unit illuminance times this, so that thin and dense atmospheres both stay normal half floats
     vec4 skyView;
+    // The sky-view LUT's per-frame constants for the apply pass: x: the horizon's angle β from the nadir at
+    // skyView.x's radius, y: π - β; sunHorizontal.xyz: the sun's direction across the camera's local
+    // horizontal plane (unit; w 0 when the sun is at the zenith or nadir: every azimuth is the sun's)
+    vec4 skyHorizon;
+    vec4 sunHorizontal;
     uvec4 transmittanceLut;  // xy: size, z: steps
     uvec4 msLut;             // xy: size, z: directions per side (n of n×n), w: steps
     uvec4 skyViewLut;        // xy: size, z: steps
@@ -72,7 +77,7 @@ struct AtmosphereUniforms {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(AtmosphereUniforms) == 3 * 64 + 17 * 16, "AtmosphereUniforms must match std140");
+static_assert(sizeof(AtmosphereUniforms) == 3 * 64 + 19 * 16, "AtmosphereUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

@@ -121,14 +121,17 @@ float skyViewHorizonBeta(float r) {
     r = max(r, g);
     return acos(clamp(sqrt(max(0.0, (r - g) * (r + g))) / r, -1.0, 1.0));
 }
-vec2 skyViewUv(float r, float cosViewZenith, float cosAzimuth) {
-    float beta = skyViewHorizonBeta(r);
-    float zenithHorizon = kAtmospherePi - beta;
+// β and Z = π - β given (per frame, for the apply pass).
+vec2 skyViewUvAtHorizon(float beta, float zenithHorizon, float cosViewZenith, float cosAzimuth) {
     float theta = acos(clamp(cosViewZenith, -1.0, 1.0));
     float v = theta < zenithHorizon ? 0.5 * (1.0 - sqrt(max(0.0, 1.0 - theta / zenithHorizon)))
                                     : 0.5 + 0.5 * sqrt(clamp((theta - zenithHorizon) / beta, 0.0, 1.0));
     float u = sqrt(clamp(0.5 - 0.5 * cosAzimuth, 0.0, 1.0));
     return vec2(unitToTexel(u, atmo.skyViewLut.x), unitToTexel(v, atmo.skyViewLut.y));
+}
+vec2 skyViewUv(float r, float cosViewZenith, float cosAzimuth) {
+    float beta = skyViewHorizonBeta(r);
+    return skyViewUvAtHorizon(beta, kAtmospherePi - beta, cosViewZenith, cosAzimuth);
 }
 // The inverse: x = cos view zenith, y = cos azimuth.
 vec2 skyViewParams(float r, vec2 uv) {

@@ -181,6 +181,14 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const double muS = glm::dot(glm::normalize(v.skyView.camera), v.skyView.toSun);
     u.skyView =
         glm::vec4(float(skyRadius), float(muS), depth.reversedZ ? 0.0f : 1.0f, float(lutStorageScale(s)));
+    // The sky-view LUT's horizon (its radius's) and the sun across this camera's horizontal plane.
+    const double beta = std::acos(
+        std::clamp(std::sqrt(std::max(0.0, (skyRadius - g) * (skyRadius + g))) / skyRadius, -1.0, 1.0));
+    u.skyHorizon = glm::vec4(float(beta), float(M_PI - beta), 0.0f, 0.0f);
+    const glm::dvec3 up = glm::normalize(camera);
+    const glm::dvec3 sunAcross = toSun - up * glm::dot(toSun, up);
+    const double across = glm::length(sunAcross);
+    u.sunHorizontal = across > 1e-9 ? glm::vec4(glm::vec3(sunAcross / across), 1.0f) : glm::vec4(0.0f);
     u.transmittanceLut =
         glm::uvec4(s.transmittanceLutSize.x, s.transmittanceLutSize.y, s.transmittanceSteps, 0u);
     const auto side = uint32_t(std::lround(std::sqrt(double(s.multipleScatteringDirections))));
