@@ -379,5 +379,88 @@ TEST_F(AtmosphereGpuTest, CrossingTheTopShowsNoSeam) {
     }
 }
 
+// The fogs lit through the atmosphere: with it on, every fog sample's sun is the illuminance outside the
+// atmosphere times the transmittance LUT's T at the sample. Frame: the atmosphere (sky, aerial
+// perspective) then the fog, against reference (a) then the fog's reference with the same atmosphere,
+// for the sun low (10°, reddened) and the ray-marched and froxel fogs.
+TEST_F(AtmosphereGpuTest, FogsLitThroughTheAtmosphereMatchTheirReferences) {
+    for (bool froxel : {false, true}) {
+        postfx::FrameInfo frame = skyFrame(10.0);
+        frame.sun.illuminance = postfx::Vec3(1e4f);
+        frame.camera = lookCamera({0.0, 20.0, 0.0}, {1.0, 0.05, 0.4}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
+        FogHarnessImages im = images(frame.camera, 16, 8, 0.0);
+        for (uint32_t j = 0; j < 8; ++j)  // the lower half a wall at 40 m
+            for (uint32_t i = 0; j >= 4 && i < 16; ++i) {
+                im.depth[j * 16 + i] =
+                    depthAtDistance(frame.camera, pixelDirection(frame.camera, i, j, 16, 8), 40.0);
+                for (int c = 0; c < 3; ++c)
+                    im.color[(j * 16 + i) * 4 + c] = 0.2f;
+            }
+        postfx::FogMedium medium;
+        medium.density = 0.02f;
+        medium.heightFalloff = 0.0f;
+        medium.anisotropy = 0.3f;
+        medium.maxDistance = 60.0f;
+        medium.analyticTail = false;
+        if (froxel) {
+            static_cast<postfx::FogMedium&>(frame.froxelFog) = medium;
+            frame.froxelFog.enabled = true;
+            frame.froxelFog.grid = {16, 8, 64};
+            frame.froxelFog.temporal.enabled = false;
+            frame.froxelFog.jitter = false;
+        } else {
+            static_cast<postfx::FogMedium&>(frame.fog) = medium;
+            frame.fog.enabled = true;
+            frame.fog.steps = 128;
+            frame.fog.jitter = false;
+            frame.fog.transmittanceCutoff = 0.0f;
+            frame.fog.temporal.enabled = false;
+        }
+        const std::vector<float> out = render(frame, im);
+
+        FogHarnessImages afterSky = im;
+        afterSky.color = referenceImage(frame, im);
+        // The fog's reference over reference (a)'s image, its sun through the atmosphere (or not).
+        auto fogReference = [&](bool throughAtmosphere, std::vector<float>& result) {
+            postfx::AtmosphereSettings atmosphere = frame.atmosphere;
+            atmosphere.enabled = throughAtmosphere;
+            if (froxel) {
+                postfx::reference::FroxelFogInputs in;
+                in.width = im.width;
+                in.height = im.height;
+                in.color = afterSky.color;
+                in.depth = im.depth;
+                in.depthConvention.reversedZ = true;
+                in.camera = frame.camera;
+                in.sun = frame.sun;
+                in.settings = frame.froxelFog;
+                in.atmosphere = atmosphere;
+                return postfx::reference::renderFroxelFog(in, result);
+            }
+            postfx::reference::FogInputs in;
+            in.width = im.width;
+            in.height = im.height;
+            in.color = afterSky.color;
+            in.depth = im.depth;
+            in.depthConvention.reversedZ = true;
+            in.camera = frame.camera;
+            in.sun = frame.sun;
+            in.settings = frame.fog;
+            in.atmosphere = atmosphere;
+            return postfx::reference::renderFog(in, result);
+        };
+        std::vector<float> ref, unattenuated;
+        const postfx::Status s = fogReference(true, ref);
+        ASSERT_TRUE(fogReference(false, unattenuated).ok());
+        // The sun 10° up crosses ~5.6 air masses: without the atmosphere's T the fog is far brighter.
+        EXPECT_GT(compareImages(out, unattenuated, im.width, im.height, 0.05, 1e-3).relativeRmse, 0.2);
+        ASSERT_TRUE(s.ok()) << s.message;
+        const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.05, 1e-3);
+        std::printf("[ atmosphere ] %s fog lit through the atmosphere: GPU vs references %s\n",
+                    froxel ? "froxel" : "ray-marched", stats.summary().c_str());
+        EXPECT_EQ(stats.nonFinite, 0u);
+        EXPECT_LT(stats.relativeRmse, froxel ? 0.03 : 0.01);
+    }
+}
 }  // namespace
 }  // namespace test
