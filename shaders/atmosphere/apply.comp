@@ -80,6 +80,11 @@ vec3 skyViewLuminance(vec3 d, float cosView) {
     float cosAzimuth = atmo.sunHorizontal.w != 0.0 && viewLength > 1e-6
                            ? dot(atmo.sunHorizontal.xyz, viewHorizontal) / viewLength
                            : 1.0;
+    if ((atmo.flags.x & kAtmosphereFlagSkyViewSpace) != 0u) {
+        if (-cosView < cos(atmo.skyHorizon.y)) return vec3(0.0);  // misses the atmosphere
+        vec2 uv = skyViewSpaceUv(atmo.skyHorizon.x, atmo.skyHorizon.y, cosView, cosAzimuth);
+        return textureLod(skyViewLut, uv, 0.0).rgb / atmo.skyView.w;
+    }
     vec2 uv = skyViewUvAtHorizon(atmo.skyHorizon.x, atmo.skyHorizon.y, cosView, cosAzimuth);
     return textureLod(skyViewLut, uv, 0.0).rgb / atmo.skyView.w;
 }
@@ -107,7 +112,7 @@ void main() {
         float blend = atmo.radii.w;
         bool ground;
         vec3 L = vec3(0.0), T = vec3(1.0), q = vec3(0.0);
-        if (blend == 0.0) {
+        if (blend == 0.0 && r < atmo.radii.y) {
             // The camera inside the atmosphere, below the band: the sky-view LUT, T from the transmittance
             // LUT: to the top, or to the ground as T(ground → top along -d) / T(camera → top along -d).
             ground = rayMeetsGround(r, mu, g);
@@ -121,8 +126,8 @@ void main() {
                 T = textureLod(transmittanceLut, transmittanceUv(r, mu), 0.0).rgb;
             }
         } else {
-            // High up or in space: each pixel's ray marched from where it enters the atmosphere, blended
-            // with the sky-view LUT in the band below (radii.w).
+            // High up or in space: T from where the ray enters the atmosphere; L from the sky-view LUT (its
+            // space mapping above the top), each pixel's ray marched, or a blend of both (radii.w).
             vec3 seg = atmosphereSegment(o, d);
             ground = seg.z != 0.0;
             q = o + seg.y * d;
@@ -136,10 +141,12 @@ void main() {
                 }
             }
             if (blend < 1.0) L = skyViewLuminance(d, mu);
-            AtmosphereMarch march =
-                atmosphereMarch(o, d, seg.x, seg.y, atmo.skyViewLut.z, true, atmo.toSun.xyz);
-            L = mix(L, march.luminance, blend);
-            T = mix(T, march.transmittance, blend);
+            if (blend > 0.0) {
+                AtmosphereMarch march =
+                    atmosphereMarch(o, d, seg.x, seg.y, atmo.skyViewLut.z, true, atmo.toSun.xyz);
+                L = mix(L, march.luminance, blend);
+                T = mix(T, march.transmittance, blend);
+            }
         }
         vec3 background = color.rgb;
         if (ground) {

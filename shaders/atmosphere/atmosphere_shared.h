@@ -30,13 +30,18 @@ PFX_CONST(uint, kAtmosphereBindingDepth, 8);            // sampler2D: host depth
 // Flags in AtmosphereUniforms.flags.x
 PFX_CONST(uint, kAtmosphereFlagMultipleScattering, 1u);  // add σs·Ψ (Hillaire eq. 10)
 PFX_CONST(uint, kAtmosphereFlagDepthReversedZ, 2u);
-PFX_CONST(uint, kAtmosphereFlagSkyView, 4u);  // the sky-view LUT is built this frame (camera below the band)
+// The sky-view LUT maps the directions of a camera above the atmosphere (its "space" mapping: the
+// planet's disk and the limb, model.glsl skyViewSpaceUv) instead of those from inside it.
+PFX_CONST(uint, kAtmosphereFlagSkyViewSpace, 4u);
 
-// Sky pixels: the camera at or above this fraction of the atmosphere's thickness marches each pixel's
-// ray (as Hillaire's reference for views from space); below, the sky-view LUT; in between a blend
-// over kAtmosphereSkyViewBlend of the thickness, so crossing the top shows no seam (atmosphere.md#space).
+// Sky pixels (atmosphere.md#high-up-and-in-space), by the camera's altitude as a fraction of the
+// atmosphere's thickness: the sky-view LUT below kAtmosphereSkyViewMaxAltitude - kAtmosphereSkyViewBlend;
+// each pixel's ray marched from kAtmosphereSkyViewMaxAltitude to the top; the sky-view LUT's space mapping
+// from kAtmosphereSpaceViewMinAltitude up; linear blends in between. The march is continuous across the
+// top and the blends hide the two LUTs' own errors: no seam.
 PFX_CONST(float, kAtmosphereSkyViewMaxAltitude, 0.9f);
 PFX_CONST(float, kAtmosphereSkyViewBlend, 0.05f);
+PFX_CONST(float, kAtmosphereSpaceViewMinAltitude, 1.1f);
 
 // Rebuild thresholds (docs/effects/atmosphere.md#frame-plan): the sky-view and aerial-perspective LUTs
 // built for a camera and sun are reused while the camera moved less than kAtmosphereRebuildDistance,
@@ -63,9 +68,11 @@ struct AtmosphereUniforms {
     // scale of the luminance LUTs (multiple scattering, sky view, aerial perspective): they hold luminance
     // per unit illuminance times this, so that thin and dense atmospheres both stay normal half floats
     vec4 skyView;
-    // The sky-view LUT's per-frame constants for the apply pass: x: the horizon's angle β from the nadir at
-    // skyView.x's radius, y: π - β; sunHorizontal.xyz: the sun's direction across the camera's local
-    // horizontal plane (unit; w 0 when the sun is at the zenith or nadir: every azimuth is the sun's)
+    // The sky-view LUT's per-frame constants: from inside, x: the horizon's angle β from the nadir at
+    // skyView.x's radius, y: π - β; in space (kAtmosphereFlagSkyViewSpace), x: the planet's angular radius
+    // asin(ground / r), y: the atmosphere's asin(top / r), from the nadir; sunHorizontal.xyz: the sun's
+    // direction across the camera's local horizontal plane (unit; w 0 when the sun is at the zenith or nadir:
+    // every azimuth is the sun's)
     vec4 skyHorizon;
     vec4 sunHorizontal;
     uvec4 transmittanceLut;  // xy: size, z: steps

@@ -133,6 +133,33 @@ vec2 skyViewUv(float r, float cosViewZenith, float cosAzimuth) {
     float beta = skyViewHorizonBeta(r);
     return skyViewUvAtHorizon(beta, kAtmospherePi - beta, cosViewZenith, cosAzimuth);
 }
+// The sky-view LUT's space mapping, for a camera above the atmosphere (atmosphere.md#high-up-and-in-space):
+// the directions that meet the atmosphere, within the angle αt = asin(top / r) of the nadir, over v. The
+// planet's disk, nadir angle φ ∈ [0, αg], αg = asin(ground / r): v = (1 - √(1 - φ/αg))/2, crowded toward
+// its limb; the ring of air beyond it, φ ∈ [αg, αt]: v = (1 + √((φ - αg)/(αt - αg)))/2, crowded toward the
+// ground's limb where the air is densest. u as inside. Directions beyond αt miss the atmosphere (v > 1).
+vec2 skyViewSpaceUv(float alphaGround, float alphaTop, float cosViewZenith, float cosAzimuth) {
+    float phi = acos(clamp(-cosViewZenith, -1.0, 1.0));
+    float v = phi < alphaGround
+                  ? 0.5 * (1.0 - sqrt(max(0.0, 1.0 - phi / alphaGround)))
+                  : 0.5 + 0.5 * sqrt(clamp((phi - alphaGround) / (alphaTop - alphaGround), 0.0, 1.0));
+    float u = sqrt(clamp(0.5 - 0.5 * cosAzimuth, 0.0, 1.0));
+    return vec2(unitToTexel(u, atmo.skyViewLut.x), unitToTexel(v, atmo.skyViewLut.y));
+}
+// Its inverse: x = cos view zenith, y = cos azimuth.
+vec2 skyViewSpaceParams(float alphaGround, float alphaTop, vec2 uv) {
+    vec2 x = vec2(texelToUnit(uv.x, atmo.skyViewLut.x), texelToUnit(uv.y, atmo.skyViewLut.y));
+    float phi;
+    if (x.y < 0.5) {
+        float c = 1.0 - 2.0 * x.y;
+        phi = alphaGround * (1.0 - c * c);
+    } else {
+        float c = 2.0 * x.y - 1.0;
+        phi = alphaGround + (alphaTop - alphaGround) * c * c;
+    }
+    return vec2(-cos(phi), 1.0 - 2.0 * x.x * x.x);
+}
+
 // The inverse: x = cos view zenith, y = cos azimuth.
 vec2 skyViewParams(float r, vec2 uv) {
     float beta = skyViewHorizonBeta(r);

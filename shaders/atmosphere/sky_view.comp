@@ -1,10 +1,11 @@
 #version 450
 // Pass 3 of the atmosphere (docs/effects/atmosphere.md, "Passes"): the sky-view LUT, Hillaire 2020
 // section 5.3. For the camera's radius and the sun's zenith angle it was built for (AtmosphereUniforms
-// skyView.xy), texel (azimuth from the sun, view zenith) holds the luminance per unit sun illuminance of
-// the view ray to the top or the ground, `skyViewLut.z` steps spaced quadratically from the camera. Each
-// texel's steps are split among kAtmosphereSkyViewSplit invocations (z of the workgroup), composed front to
-// back (L = L0 + T0·L1, T = T0·T1): the pass is bound by each ray's chain of dependent fetches, not by work.
+// skyView.xy), texel (azimuth from the sun, view zenith; from space the space mapping's nadir angle) holds
+// the luminance per unit sun illuminance of the view ray to the top or the ground, `skyViewLut.z` steps
+// spaced quadratically from the camera. Each texel's steps are split among kAtmosphereSkyViewSplit
+// invocations (z of the workgroup), composed front to back (L = L0 + T0·L1, T = T0·T1): the pass is bound by
+// each ray's chain of dependent fetches, not by work.
 #extension GL_GOOGLE_include_directive : require
 
 #include "atmosphere/atmosphere_shared.h"
@@ -33,7 +34,10 @@ void main() {
     AtmosphereMarch march = AtmosphereMarch(vec3(0.0), vec3(1.0));
     if (inside) {
         float r = atmo.skyView.x, muS = atmo.skyView.y;
-        vec2 view = skyViewParams(r, (vec2(texel) + 0.5) / vec2(atmo.skyViewLut.xy));
+        vec2 uv = (vec2(texel) + 0.5) / vec2(atmo.skyViewLut.xy);
+        vec2 view = (atmo.flags.x & kAtmosphereFlagSkyViewSpace) != 0u
+                        ? skyViewSpaceParams(atmo.skyHorizon.x, atmo.skyHorizon.y, uv)
+                        : skyViewParams(r, uv);
         // The local frame: zenith +y, the sun in the x-y plane toward +x.
         float sinView = sqrt(max(0.0, 1.0 - view.x * view.x));
         float sinAzimuth = sqrt(max(0.0, 1.0 - view.y * view.y));

@@ -129,9 +129,13 @@ TEST_F(AtmospherePlanTest, StillRecordsOnlyApplyAndChangesRebuildWhatDependsOnTh
     EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "multiple scattering off";
     EXPECT_EQ(planAndRun(), (Passes{kApply})) << "still";
 
-    // From space (above the band) each sky pixel is marched: no sky-view LUT.
+    // Near the top (90 % to 100 % of the thickness) each sky pixel is marched: no sky-view LUT. From space,
+    // the sky-view LUT's space mapping.
+    setCamera({20.0, 95e3, 0.0}, {1.0, -0.5, 0.2});
+    EXPECT_EQ(planAndRun(), (Passes{kAp, kApply})) << "at 95 km";
     setCamera({20.0, 2e5, 0.0}, {1.0, -0.5, 0.2});
-    EXPECT_EQ(planAndRun(), (Passes{kAp, kApply})) << "in space";
+    EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "in space";
+    EXPECT_EQ(planAndRun(), (Passes{kApply})) << "in space, still";
     // Off: nothing.
     frame.atmosphere.enabled = false;
     EXPECT_TRUE(planAndRun().empty());

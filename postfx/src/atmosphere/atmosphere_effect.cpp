@@ -143,11 +143,14 @@ double sunZenithAngle(const LutView& v) {
 }
 
 // The camera's altitude as a fraction of the atmosphere's thickness -> the sky's blend from the
-// sky-view LUT (0) to marching each pixel (1).
+// sky-view LUT (0) to marching each pixel (1): 0 up to 85 %, 1 from 90 % to the top, back to 0 (the LUT's
+// space mapping) at 110 % (atmosphere_shared.h).
 double skyMarchBlend(const AtmosphereSettings& s, const glm::dvec3& camera) {
     const double fraction = (glm::length(camera) - s.groundRadius) / (double(s.topRadius) - s.groundRadius);
     const double end = gpu::kAtmosphereSkyViewMaxAltitude, width = gpu::kAtmosphereSkyViewBlend;
-    return std::clamp((fraction - (end - width)) / width, 0.0, 1.0);
+    if (fraction <= 1.0) return std::clamp((fraction - (end - width)) / width, 0.0, 1.0);
+    const double space = gpu::kAtmosphereSpaceViewMinAltitude;
+    return std::clamp((space - fraction) / (space - 1.0), 0.0, 1.0);
 }
 
 gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth,
@@ -177,14 +180,23 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     u.toSun = glm::vec4(glm::vec3(toSun), alpha > 0.0 ? float(std::cos(alpha)) : 2.0f);
     u.sun =
         glm::vec4(frame.sun.illuminance, alpha > 0.0 ? float(1.0 / (4.0 * M_PI * halfSin * halfSin)) : 0.0f);
-    const double skyRadius = std::clamp(glm::length(v.skyView.camera), g, t);
+    // The sky-view LUT's radius: inside the atmosphere clamped to it; above the top its space mapping.
+    const bool space = glm::length(v.skyView.camera) >= t;
+    const double skyRadius =
+        space ? glm::length(v.skyView.camera) : std::clamp(glm::length(v.skyView.camera), g, t);
     const double muS = glm::dot(glm::normalize(v.skyView.camera), v.skyView.toSun);
     u.skyView =
         glm::vec4(float(skyRadius), float(muS), depth.reversedZ ? 0.0f : 1.0f, float(lutStorageScale(s)));
-    // The sky-view LUT's horizon (its radius's) and the sun across this camera's horizontal plane.
-    const double beta = std::acos(
-        std::clamp(std::sqrt(std::max(0.0, (skyRadius - g) * (skyRadius + g))) / skyRadius, -1.0, 1.0));
-    u.skyHorizon = glm::vec4(float(beta), float(M_PI - beta), 0.0f, 0.0f);
+    // The sky-view LUT's horizon (its radius's: from inside β and π - β, from space the planet's and the
+    // atmosphere's angular radii) and the sun across this camera's horizontal plane.
+    if (space) {
+        u.skyHorizon =
+            glm::vec4(float(std::asin(g / skyRadius)), float(std::asin(t / skyRadius)), 0.0f, 0.0f);
+    } else {
+        const double beta = std::acos(
+            std::clamp(std::sqrt(std::max(0.0, (skyRadius - g) * (skyRadius + g))) / skyRadius, -1.0, 1.0));
+        u.skyHorizon = glm::vec4(float(beta), float(M_PI - beta), 0.0f, 0.0f);
+    }
     const glm::dvec3 up = glm::normalize(camera);
     const glm::dvec3 sunAcross = toSun - up * glm::dot(toSun, up);
     const double across = glm::length(sunAcross);
@@ -199,7 +211,8 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
                          s.aerialPerspectiveLutSize.z, s.aerialPerspectiveStepsPerSlice);
     u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u, 0u);
     u.flags = glm::uvec4((s.multipleScattering ? gpu::kAtmosphereFlagMultipleScattering : 0u) |
-                             (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u),
+                             (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u) |
+                             (space ? gpu::kAtmosphereFlagSkyViewSpace : 0u),
                          0u, 0u, 0u);
     return u;
 }
