@@ -132,7 +132,7 @@ const char* kUsage =
     "apply, --size, --warmup*, --frames, --reference-steps [512; quick: 128], --error-stride, --out\n"
     "[docs/accuracy-cost/atmosphere], --quick and --validation do.\n"
     "  --atmosphere           this mode\n"
-    "  --atmosphere-views LIST  ground_sun30, ground_sunset, space_sun30 [all]\n"
+    "  --atmosphere-views LIST  ground_sun30, ground_sunset, space_sun30, orbit_sun30 [all]\n"
     "  --atmosphere-sweep-views LIST  the views the sweep runs on [all measured; quick: ground_sunset]\n"
     "  --atmosphere-sweep KNOB=a,b,...  a knob's values (repeatable; 'none' sweeps nothing): "
     "transmittance_size\n"
