@@ -76,6 +76,16 @@ struct AtmosphereSettings {
     uint32_t aerialPerspectiveStepsPerSlice = 2;
 };
 
+// The atmosphere's LUTs, for Context::imageView and Context::recordImageReadback (a host that lights its own
+// surfaces through the atmosphere samples the transmittance LUT as postfx's effects do; docs/effects/
+// atmosphere.md, "Parameterisations"): held while the atmosphere runs, each RGBA16F. The luminance LUTs hold
+// luminance per unit sun illuminance times a storage scale (docs/effects/atmosphere.md, "Passes").
+inline constexpr ResourceName kAtmosphereTransmittanceLut{"atmosphere.transmittance"};
+inline constexpr ResourceName kAtmosphereMultipleScatteringLut{"atmosphere.multiple_scattering"};
+inline constexpr ResourceName kAtmosphereSkyViewLut{"atmosphere.sky_view"};
+inline constexpr ResourceName kAtmosphereAerialPerspectiveLut{"atmosphere.aerial_perspective"};
+inline constexpr ResourceName kAtmosphereAerialTransmittanceLut{"atmosphere.aerial_transmittance"};
+
 // Checks every setting against its documented range: InvalidArgument naming the first bad field with its
 // scene-file key ("atmosphere.top_radius: must be greater than ground_radius (6.36e+06)"). Checked whether
 // or not `enabled` is set.
