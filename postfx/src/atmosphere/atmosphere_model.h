@@ -1,6 +1,7 @@
 // The atmosphere model (docs/effects/atmosphere.md) in double precision: media, ray–sphere intersections,
-// phase functions and the LUTs' parameterisations with their inverses. The GLSL of the effect to come
-// mirrors these functions; the CPU reference (atmosphere_reference.h) and the unit tests use them.
+// phase functions and the LUTs' parameterisations with their inverses. The effect's GLSL
+// (shaders/atmosphere/model.glsl) mirrors these functions; the CPU reference (atmosphere_reference.h) and the
+// unit tests use them.
 //
 // Positions are planet-centred [m]: the planet's centre at the origin, y up; a world position x (y = 0 on
 // the ground) is x + (0, groundRadius, 0). r = |position| is the distance from the centre, μ the cosine of

@@ -1,4 +1,4 @@
-// Checks of AtmosphereSettings (postfx/atmosphere.h), shared by the effect to come and the CPU reference.
+// Checks of AtmosphereSettings (postfx/atmosphere.h), shared by the effect and the CPU reference.
 #pragma once
 
 #include <postfx/atmosphere.h>
