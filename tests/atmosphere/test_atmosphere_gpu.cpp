@@ -226,6 +226,56 @@ TEST_F(AtmosphereGpuTest, SkyViewLutMatchesReference) {
     std::printf("[ atmosphere ] sky-view LUT (single scattering): largest relative error %.2e\n", worst);
 }
 
+// Aerial-perspective texels (single scattering) against the view ray through each texel's centre marched
+// finely in double to its slice's end (through the planet's sphere, as the LUT's and reference (a)'s).
+TEST_F(AtmosphereGpuTest, AerialPerspectiveLutMatchesReference) {
+    postfx::FrameInfo frame = skyFrame(15.0);
+    frame.atmosphere.multipleScattering = false;
+    frame.camera = lookCamera({0.0, 800.0, 0.0}, {1.0, -0.05, 0.3}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
+    render(frame, images(frame.camera, 8, 4));
+    const LutImage scattering = readLut("atmosphere.aerial_perspective");
+    const LutImage transmittance = readLut("atmosphere.aerial_transmittance");
+    ASSERT_EQ(scattering.depth, 32u);
+    const atm::Model m = atm::modelFrom(frame.atmosphere);
+    const double scale = atm::lutStorageScale(frame.atmosphere);
+    const glm::dvec3 origin = atm::planetCentred(m, frame.camera.position);
+    glm::dmat4 rotation(frame.camera.view);
+    rotation[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    const glm::dmat4 clipToView = glm::inverse(glm::dmat4(frame.camera.projection) * rotation);
+    atm::Sun sun;
+    sun.toSun = glm::normalize(glm::dvec3(frame.sun.toSun));
+    atm::ViewRayOptions o;
+    o.steps = 2000;
+    o.transmittanceSteps = 300;
+    o.multipleScattering = false;
+    o.throughGround = true;
+    // The sun's transmittance as reference (a) takes it: below the sphere, the ground's (r clamped).
+    const auto table = atm::sharedTransmittanceTable(m);
+    o.transmittanceTable = table.get();
+    double worstL = 0.0, worstT = 0.0;
+    for (uint32_t z : {0u, 3u, 15u, 31u})
+        for (uint32_t y : {2u, 16u, 29u})
+            for (uint32_t x : {0u, 20u}) {
+                const glm::dvec2 ndc = (glm::dvec2(x, y) + 0.5) / 32.0 * 2.0 - 1.0;
+                const glm::dvec4 p = clipToView * glm::dvec4(ndc, 0.5, 1.0);
+                const glm::dvec3 dir = glm::normalize(glm::dvec3(p) / p.w);
+                o.maxDistance = (z + 1) / 32.0 * frame.atmosphere.aerialPerspectiveDistance;
+                const atm::ViewRayResult ref = atm::integrateViewRay(m, origin, dir, sun, o);
+                for (int c = 0; c < 3; ++c) {
+                    const double L = scattering.at(x, y, z)[c] / scale, T = transmittance.at(x, y, z)[c];
+                    const double relL = std::abs(L - ref.luminance[c]) / std::max(ref.luminance[c], 1e-9);
+                    worstL = std::max(worstL, relL);
+                    worstT = std::max(worstT, std::abs(T - ref.transmittance[c]));
+                    EXPECT_LT(relL, 0.02) << "texel " << x << "," << y << "," << z << " channel " << c;
+                    EXPECT_NEAR(T, ref.transmittance[c], 2e-3) << "texel " << x << "," << y << "," << z;
+                }
+            }
+    std::printf(
+        "[ atmosphere ] aerial-perspective LUT (single scattering): largest relative error of L %.2e, "
+        "largest |dT| %.2e\n",
+        worstL, worstT);
+}
+
 // An optically thin pure-Rayleigh sky seen straight up, the sun at zenith angle θs, albedo 0: single
 // scattering L = E·p_R(cos θs)·β·H·(1 - e^{-(top - ground)/H}) (T ≈ 1 everywhere; multiple scattering
 // is of order β² and the ground, black, adds nothing).
