@@ -157,8 +157,9 @@ bool FogControls::build(Scene& scene) {
     tooltip("both fogs, the fog volumes and the sun as the scene file has them (the camera and lights stay)");
 
     ImGui::PushID("fog");
-    // Open at first, unless the scene shows the froxel fog instead (once: later the user decides).
-    ImGui::SetNextItemOpen(!(scene.froxelFog.enabled && !scene.fog.enabled), ImGuiCond_Once);
+    // Open at first when the scene shows this fog, or no effect at all (once: later the user decides).
+    ImGui::SetNextItemOpen(scene.fog.enabled || (!scene.froxelFog.enabled && !scene.atmosphere.enabled),
+                           ImGuiCond_Once);
     if (ImGui::CollapsingHeader("Fog")) {
         postfx::FogSettings edited = scene.fog;
         if (buildFog(edited)) {

@@ -320,10 +320,11 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         // fog volumes, lights, sun and camera from scene_ every frame); their values are always valid for
         // postfx, and at most one of the two fogs is on.
         ui_->build(stats_, [this] {
+            // In the effects' composite order: the atmosphere (the farthest) first.
+            atmosphereControls_.build(scene_);
             fogControls_.build(scene_);
             froxelFogControls_.build(scene_);
             lightControls_.build(scene_);
-            atmosphereControls_.build(scene_);
         });
     }
 
