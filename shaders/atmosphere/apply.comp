@@ -6,7 +6,9 @@
 //   what the host drew there; one that does not shows the host's color (what lies beyond the atmosphere)
 //   through the atmosphere's transmittance, plus the sun disk: a uniform disk of the sun's angular radius
 //   and radiance E / solid angle, attenuated the same way.
-// Variants: COLOR_RGBA32F selects the storage format of the color images (default rgba16f).
+// Variants: COLOR_RGBA32F selects the storage format of the color images (default rgba16f); SKY_MARCH
+// marches sky pixels (the camera between 85 % and 110 % of the atmosphere's thickness, radii.w > 0): a
+// variant of its own, so the common pass does not carry the march's registers.
 #extension GL_GOOGLE_include_directive : require
 
 #include "atmosphere/atmosphere_shared.h"
@@ -141,12 +143,14 @@ void main() {
                 }
             }
             if (blend < 1.0) L = skyViewLuminance(d, mu);
+#ifdef SKY_MARCH
             if (blend > 0.0) {
                 AtmosphereMarch march =
                     atmosphereMarch(o, d, seg.x, seg.y, atmo.skyViewLut.z, true, atmo.toSun.xyz);
                 L = mix(L, march.luminance, blend);
                 T = mix(T, march.transmittance, blend);
             }
+#endif
         }
         vec3 background = color.rgb;
         if (ground) {

@@ -52,10 +52,12 @@ const core::ComputePipelineDesc kSkyViewPass{"atmosphere.sky_view", spirv::atmos
                                              kSkyViewBindings};
 const core::ComputePipelineDesc kApPass{"atmosphere.aerial_perspective",
                                         spirv::atmosphere_aerial_perspective_comp, kApBindings};
-// In the color format: RGBA16F and RGBA32F.
-const core::ComputePipelineDesc kApplyPass[2] = {
-    {"atmosphere.apply", spirv::atmosphere_apply_comp, kApplyBindings},
-    {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F, kApplyBindings}};
+// [march][rgba32]: marching sky pixels (the camera near the top) or not, in the color format.
+const core::ComputePipelineDesc kApplyPass[2][2] = {
+    {{"atmosphere.apply", spirv::atmosphere_apply_comp, kApplyBindings},
+     {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F, kApplyBindings}},
+    {{"atmosphere.apply", spirv::atmosphere_apply_comp_SKY_MARCH, kApplyBindings},
+     {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F_SKY_MARCH, kApplyBindings}}};
 
 uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kAtmosphereGroupSize) {
     return (size + groupSize - 1) / groupSize;
@@ -352,7 +354,9 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::StorageWrite);
 
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-    b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width), groupsFor(frame.color.extent.height), 1);
+    const bool march = skyMarchBlend(s, camera) > 0.0;
+    b.pass(kApplyPass[march][rgba32], groupsFor(frame.color.extent.width),
+           groupsFor(frame.color.extent.height), 1);
     bindLuts();
     b.bind(gpu::kAtmosphereBindingSkyView, skyView, skyViewUse, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
