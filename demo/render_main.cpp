@@ -176,7 +176,7 @@ int run(const Args& args) {
     const std::string device = host->deviceDescription();
     if (int status = kProgram.validationStatus(*host)) return status;
     if (args.reference) {
-        std::printf("postfx-render: wrote %s (%ux%u, frame %u with the fog reference) on %s\n",
+        std::printf("postfx-render: wrote %s (%ux%u, frame %u with the CPU references) on %s\n",
                     args.output.c_str(), args.render.width, args.render.height, args.render.frames - 1,
                     device.c_str());
     } else {

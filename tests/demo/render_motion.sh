@@ -41,7 +41,7 @@ grep -q "6 frames" "$dir/moving-6.out" || fail "moving-6: stdout does not say 6 
 cmp -s "$dir/moving-6.png" "$dir/still-6.png" && fail "frame 5 of the moving scene equals the still scene's"
 
 run reference "$moving" $size --frames 6 --reference --reference-steps 8 -o "$dir/reference.png"
-grep -q "frame 5 with the fog reference" "$dir/reference.out" || fail "reference: not of frame 5"
+grep -q "frame 5 with the CPU references" "$dir/reference.out" || fail "reference: not of frame 5"
 
 run plan "$moving" $size --frames 2 --print-plan
 grep -q '"passes"' "$dir/plan.out" || fail "plan: no passes printed"
