@@ -48,8 +48,9 @@ struct AtmosphereSettings {
     // Angular radius of the sun disk drawn on sky pixels [deg]; in [0, 45]; 0: no disk (the sun still
     // lights). 0.2678 is the sun's as seen from Earth.
     float sunAngularRadiusDeg = 0.2678f;
-    // The ambient term of what the atmosphere lights comes from the sky (an irradiance integrated from the
-    // sky) instead of FrameInfo's constant.
+    // For the host: its ambient should come from the sky (atmosphereSkyIrradiance below, / π) instead of a
+    // constant. postfx's effects take FrameInfo::ambient as the host gives it; the demo, with this on,
+    // gives them and its surfaces the sky's (docs/effects/atmosphere.md, "The demo").
     bool ambientFromSky = false;
 
     // LUTs: sizes [texels] and march steps, defaults as in the paper.
