@@ -9,6 +9,7 @@
 #include "core/gpu_resources.h"
 #include "fog_harness.h"
 #include "image_compare.h"
+#include "lut_readback.h"
 
 #include <postfx/reference.h>
 
@@ -34,9 +35,7 @@ postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dve
     return camera;
 }
 
-struct LutImage {
-    uint32_t width = 0, height = 0, depth = 0;
-    std::vector<float> rgba;
+struct LutImage : LutTexels {
     glm::dvec4 at(uint32_t x, uint32_t y, uint32_t z = 0) const {
         const size_t i = ((size_t(z) * height + y) * width + x) * 4;
         return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
@@ -79,31 +78,7 @@ protected:
         return out;
     }
 
-    LutImage readLut(const char* name) {
-        LutImage lut;
-        postfx::core::GpuBuffer buffer;
-        EXPECT_TRUE(
-            buffer.create(gpu, 64u << 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "lut readback").ok());
-        VkExtent3D extent{};
-        VkDeviceSize bytes = 0;
-        postfx::Status status;
-        std::string error;
-        EXPECT_TRUE(host->submitAndWait(
-            [&](VkCommandBuffer cmd) {
-                status = context->recordImageReadback({name}, cmd, buffer.handle(), 0, extent, bytes);
-            },
-            error))
-            << error;
-        EXPECT_TRUE(status.ok()) << status.message;
-        lut.width = extent.width;
-        lut.height = extent.height;
-        lut.depth = extent.depth;
-        const auto* half = static_cast<const uint16_t*>(buffer.mapped());
-        lut.rgba.resize(bytes / 2);
-        for (size_t i = 0; i < lut.rgba.size(); ++i)
-            lut.rgba[i] = glm::unpackHalf1x16(half[i]);
-        return lut;
-    }
+    LutImage readLut(const char* name) { return {readLutTexels(*host, gpu, *context, name)}; }
 
     postfx::FrameInfo skyFrame(double sunElevationDeg) const {
         postfx::FrameInfo frame;

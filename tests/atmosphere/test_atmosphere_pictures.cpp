@@ -10,6 +10,7 @@
 #include "atmosphere/atmosphere_effect.h"
 #include "core/gpu_resources.h"
 #include "fog_harness.h"
+#include "lut_readback.h"
 
 #include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -27,9 +28,7 @@
 namespace test {
 namespace {
 
-struct Lut {
-    uint32_t width = 0, height = 0, depth = 0;
-    std::vector<float> rgba;
+struct Lut : LutTexels {
     const float* at(uint32_t x, uint32_t y, uint32_t z = 0) const {
         return &rgba[((size_t(z) * height + y) * width + x) * 4];
     }
@@ -129,28 +128,7 @@ protected:
     }
 
     Lut read(const char* name) {
-        Lut lut;
-        postfx::core::GpuBuffer buffer;
-        EXPECT_TRUE(
-            buffer.create(gpu, 64u << 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "lut readback").ok());
-        VkExtent3D extent{};
-        VkDeviceSize bytes = 0;
-        postfx::Status status;
-        std::string error;
-        EXPECT_TRUE(host->submitAndWait(
-            [&](VkCommandBuffer cmd) {
-                status = context->recordImageReadback({name}, cmd, buffer.handle(), 0, extent, bytes);
-            },
-            error))
-            << error;
-        EXPECT_TRUE(status.ok()) << status.message;
-        lut.width = extent.width;
-        lut.height = extent.height;
-        lut.depth = extent.depth;
-        const auto* half = static_cast<const uint16_t*>(buffer.mapped());
-        lut.rgba.resize(bytes / 2);
-        for (size_t i = 0; i < lut.rgba.size(); ++i)
-            lut.rgba[i] = glm::unpackHalf1x16(half[i]);
+        const Lut lut{readLutTexels(*host, gpu, *context, name)};
         if (std::getenv("POSTFX_PICTURES_RAW")) {  // the texels as float, slices stacked vertically
             const std::string path = outDir + "/" + name + ".raw.exr";
             auto out = OIIO::ImageOutput::create(path);
