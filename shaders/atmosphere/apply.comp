@@ -1,14 +1,12 @@
 #version 450
 // Pass 5 of the atmosphere (docs/effects/atmosphere.md, "Composite"): every pixel of the host's color.
 // - Geometry: out = color·T + L·E from the aerial-perspective LUT at the surface's distance.
-// - No geometry: the sky. Luminance from the sky-view LUT, or (camera high up or in space) each pixel's
-//   ray marched, blended in between (radii.w). A ray that meets the planet shows its lit ground and hides
-//   what the host drew there; one that does not shows the host's color (what lies beyond the atmosphere)
-//   through the atmosphere's transmittance, plus the sun disk: a uniform disk of the sun's angular radius
-//   and radiance E / solid angle, attenuated the same way.
-// Variants: COLOR_RGBA32F selects the storage format of the color images (default rgba16f); SKY_MARCH
-// marches sky pixels (the camera between 85 % and 110 % of the atmosphere's thickness, radii.w > 0): a
-// variant of its own, so the common pass does not carry the march's registers.
+// - No geometry: the sky. Luminance from the sky-view LUT: its mapping from inside the atmosphere, its space
+//   mapping, or (just above the top) a blend of both by radii.w. A ray that meets the planet shows its lit
+//   ground and hides what the host drew there; one that does not shows the host's color (what lies beyond
+//   the atmosphere) through the atmosphere's transmittance, plus the sun disk: a uniform disk of the sun's
+//   angular radius and radiance E / solid angle, attenuated the same way.
+// Variant: COLOR_RGBA32F selects the storage format of the color images (default rgba16f).
 #extension GL_GOOGLE_include_directive : require
 
 #include "atmosphere/atmosphere_shared.h"
@@ -18,7 +16,7 @@ layout(local_size_x = kAtmosphereGroupSize, local_size_y = kAtmosphereGroupSize)
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
 layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
-layout(binding = kAtmosphereBindingSkyView) uniform sampler2D skyViewLut;
+layout(binding = kAtmosphereBindingSkyView) uniform sampler2DArray skyViewLut;
 layout(binding = kAtmosphereBindingApScattering) uniform sampler3D apScattering;
 layout(binding = kAtmosphereBindingApTransmittance) uniform sampler3D apTransmittance;
 layout(binding = kAtmosphereBindingDepth) uniform sampler2D depthTexture;
@@ -35,7 +33,7 @@ const float kColorMax = 65504.0;  // largest finite half: never write Inf
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
 #include "atmosphere/model.glsl"
-#include "atmosphere/march.glsl"
+#include "atmosphere/march.glsl"  // sunTransmittanceAt
 
 // out = color·T + L, as the fogs composite (fog/composite.glsl): ±Inf in the host's color counts as
 // ±kColorMax, the result is clamped to the format's range, a NaN channel of the host's stays NaN.
@@ -74,7 +72,8 @@ void aerialPerspective(vec3 x, out vec3 luminance, out vec3 transmittance) {
     transmittance = mix(vec3(1.0), T, first);
 }
 
-// The sky-view LUT's luminance per unit illuminance along unit d, cosView = dot(d, the camera's zenith).
+// The sky-view LUT's luminance per unit illuminance along unit d, cosView = dot(d, the camera's zenith):
+// layer 0 (the mapping from inside) weighted 1 - radii.w, layer 1 (the space mapping) radii.w.
 vec3 skyViewLuminance(vec3 d, float cosView) {
     vec3 up = atmo.camera.xyz / atmo.camera.w;
     vec3 viewHorizontal = d - up * cosView;
@@ -82,13 +81,17 @@ vec3 skyViewLuminance(vec3 d, float cosView) {
     float cosAzimuth = atmo.sunHorizontal.w != 0.0 && viewLength > 1e-6
                            ? dot(atmo.sunHorizontal.xyz, viewHorizontal) / viewLength
                            : 1.0;
-    if ((atmo.flags.x & kAtmosphereFlagSkyViewSpace) != 0u) {
-        if (-cosView < cos(atmo.skyHorizon.y)) return vec3(0.0);  // misses the atmosphere
-        vec2 uv = skyViewSpaceUv(atmo.skyHorizon.x, atmo.skyHorizon.y, cosView, cosAzimuth);
-        return textureLod(skyViewLut, uv, 0.0).rgb / atmo.skyView.w;
+    float space = atmo.radii.w;
+    vec3 L = vec3(0.0);
+    if (space < 1.0) {
+        vec2 uv = skyViewUvAtHorizon(atmo.skyHorizon.x, atmo.skyHorizon.y, cosView, cosAzimuth);
+        L = (1.0 - space) * textureLod(skyViewLut, vec3(uv, 0.0), 0.0).rgb;
     }
-    vec2 uv = skyViewUvAtHorizon(atmo.skyHorizon.x, atmo.skyHorizon.y, cosView, cosAzimuth);
-    return textureLod(skyViewLut, uv, 0.0).rgb / atmo.skyView.w;
+    if (space > 0.0 && -cosView >= cos(atmo.skyHorizon.w)) {  // else it misses the atmosphere
+        vec2 uv = skyViewSpaceUv(atmo.skyHorizon.z, atmo.skyHorizon.w, cosView, cosAzimuth);
+        L += space * textureLod(skyViewLut, vec3(uv, 1.0), 0.0).rgb;
+    }
+    return L / atmo.skyView.w;
 }
 
 void main() {
@@ -111,14 +114,12 @@ void main() {
         vec3 o = atmo.camera.xyz;
         float r = atmo.camera.w, g = atmo.radii.x;
         float mu = dot(o, d) / r;
-        float blend = atmo.radii.w;
         bool ground;
-        vec3 L = vec3(0.0), T = vec3(1.0), q = vec3(0.0);
-        if (blend == 0.0 && r < atmo.radii.y) {
-            // The camera inside the atmosphere, below the band: the sky-view LUT, T from the transmittance
-            // LUT: to the top, or to the ground as T(ground → top along -d) / T(camera → top along -d).
+        vec3 L = skyViewLuminance(d, mu), T = vec3(1.0), q = vec3(0.0);
+        if (r < atmo.radii.y) {
+            // The camera inside the atmosphere: T from the transmittance LUT: to the top, or to the ground
+            // as T(ground → top along -d) / T(camera → top along -d).
             ground = rayMeetsGround(r, mu, g);
-            L = skyViewLuminance(d, mu);
             if (ground) {
                 float t = max(0.0, -r * mu - sqrt(max(0.0, (g - r) * (g + r) + r * r * mu * mu)));
                 q = o + t * d;
@@ -128,8 +129,7 @@ void main() {
                 T = textureLod(transmittanceLut, transmittanceUv(r, mu), 0.0).rgb;
             }
         } else {
-            // High up or in space: T from where the ray enters the atmosphere; L from the sky-view LUT (its
-            // space mapping above the top), each pixel's ray marched, or a blend of both (radii.w).
+            // Above the top: T from where the ray enters the atmosphere.
             vec3 seg = atmosphereSegment(o, d);
             ground = seg.z != 0.0;
             q = o + seg.y * d;
@@ -142,15 +142,6 @@ void main() {
                     T = transmittanceToTop(entry, d);
                 }
             }
-            if (blend < 1.0) L = skyViewLuminance(d, mu);
-#ifdef SKY_MARCH
-            if (blend > 0.0) {
-                AtmosphereMarch march =
-                    atmosphereMarch(o, d, seg.x, seg.y, atmo.skyViewLut.z, true, atmo.toSun.xyz);
-                L = mix(L, march.luminance, blend);
-                T = mix(T, march.transmittance, blend);
-            }
-#endif
         }
         vec3 background = color.rgb;
         if (ground) {

@@ -20,7 +20,9 @@ PFX_CONST(uint, kAtmosphereMsGroupSize, 64);
 PFX_CONST(uint, kAtmosphereBindingUniforms, 0);         // uniform buffer: AtmosphereUniforms
 PFX_CONST(uint, kAtmosphereBindingTransmittance, 1);    // rgba16f 2D: T to the top (r, μ)
 PFX_CONST(uint, kAtmosphereBindingMultiScattering, 2);  // rgba16f 2D: Ψ per unit illuminance (μs, r)
-PFX_CONST(uint, kAtmosphereBindingSkyView, 3);          // rgba16f 2D: sky luminance per unit illuminance
+// rgba16f 2D array: sky luminance per unit illuminance; layer 0 the mapping from inside the atmosphere,
+// layer 1 the space mapping (model.glsl; atmosphere.md#high-up-and-in-space)
+PFX_CONST(uint, kAtmosphereBindingSkyView, 3);
 PFX_CONST(uint, kAtmosphereBindingApScattering, 4);     // rgba16f 3D: AP in-scattering per unit illuminance
 PFX_CONST(uint, kAtmosphereBindingApTransmittance, 5);  // rgba16f 3D: AP transmittance
 PFX_CONST(uint, kAtmosphereBindingColorIn, 6);          // storage image: host color (read)
@@ -30,18 +32,13 @@ PFX_CONST(uint, kAtmosphereBindingDepth, 8);            // sampler2D: host depth
 // Flags in AtmosphereUniforms.flags.x
 PFX_CONST(uint, kAtmosphereFlagMultipleScattering, 1u);  // add σs·Ψ (Hillaire eq. 10)
 PFX_CONST(uint, kAtmosphereFlagDepthReversedZ, 2u);
-// The sky-view LUT maps the directions of a camera above the atmosphere (its "space" mapping: the
-// planet's disk and the limb, model.glsl skyViewSpaceUv) instead of those from inside it.
-PFX_CONST(uint, kAtmosphereFlagSkyViewSpace, 4u);
 
-// Sky pixels (atmosphere.md#high-up-and-in-space), by the camera's altitude as a fraction of the
-// atmosphere's thickness: the sky-view LUT below kAtmosphereSkyViewMaxAltitude - kAtmosphereSkyViewBlend;
-// each pixel's ray marched from kAtmosphereSkyViewMaxAltitude to the top; the sky-view LUT's space mapping
-// from kAtmosphereSpaceViewMinAltitude up; linear blends in between. The march is continuous across the
-// top and the blends hide the two LUTs' own errors: no seam.
-PFX_CONST(float, kAtmosphereSkyViewMaxAltitude, 0.9f);
-PFX_CONST(float, kAtmosphereSkyViewBlend, 0.05f);
+// The sky-view LUT's two mappings (atmosphere.md#high-up-and-in-space), by the camera's altitude as a
+// fraction of the atmosphere's thickness: the mapping from inside (layer 0) up to the top, its space
+// mapping (layer 1) from kAtmosphereSpaceViewMinAltitude up, a linear blend of the two in between (both
+// layers built). Each mapping is continuous in the camera's radius, so the sky has no seam at the top.
 PFX_CONST(float, kAtmosphereSpaceViewMinAltitude, 1.1f);
+PFX_CONST(uint, kAtmosphereSkyViewLayers, 2);
 
 // Rebuild thresholds (docs/effects/atmosphere.md#frame-plan): the sky-view and aerial-perspective LUTs
 // built for a camera and sun are reused while the camera moved less than kAtmosphereRebuildDistance,
@@ -54,7 +51,7 @@ struct AtmosphereUniforms {
     mat4 clipToView;    // Vulkan clip -> camera-relative world direction (this frame's camera)
     mat4 apClipToView;  // the same for the camera the AP LUT was built for
     mat4 apViewToClip;  // its inverse: camera-relative world -> that camera's clip
-    vec4 radii;         // x: ground, y: top [m], z: top² - ground², w: sky-view blend (0: LUT, 1: march)
+    vec4 radii;         // x: ground, y: top [m], z: top² - ground², w: the space mapping's weight (0..1)
     vec4 rayleigh;      // rgb: scattering at the ground [1/m], w: 1 / scale height [1/m]
     vec4 mie;           // x: scattering, y: absorption at the ground [1/m], z: 1 / scale height, w: g
     vec4 ozone;         // rgb: absorption at the peak [1/m], w: peak altitude [m]
@@ -68,11 +65,11 @@ struct AtmosphereUniforms {
     // scale of the luminance LUTs (multiple scattering, sky view, aerial perspective): they hold luminance
     // per unit illuminance times this, so that thin and dense atmospheres both stay normal half floats
     vec4 skyView;
-    // The sky-view LUT's per-frame constants: from inside, x: the horizon's angle β from the nadir at
-    // skyView.x's radius, y: π - β; in space (kAtmosphereFlagSkyViewSpace), x: the planet's angular radius
-    // asin(ground / r), y: the atmosphere's asin(top / r), from the nadir; sunHorizontal.xyz: the sun's
-    // direction across the camera's local horizontal plane (unit; w 0 when the sun is at the zenith or nadir:
-    // every azimuth is the sun's)
+    // The sky-view LUT's per-frame constants at skyView.x's radius r: x: the horizon's angle β from the
+    // nadir, y: π - β (the mapping from inside); above the top z: the planet's angular radius
+    // asin(ground / r), w: the atmosphere's asin(top / r), from the nadir (the space mapping); sunHorizontal
+    // .xyz: the sun's direction across the camera's local horizontal plane (unit; w 0 when the sun is at
+    // the zenith or nadir: every azimuth is the sun's)
     vec4 skyHorizon;
     vec4 sunHorizontal;
     uvec4 transmittanceLut;  // xy: size, z: steps

@@ -18,7 +18,7 @@ namespace test {
 
 struct LutTexels {
     uint32_t width = 0, height = 0, depth = 0;
-    std::vector<float> rgba;  // x fastest, then y, then z
+    std::vector<float> rgba;  // x fastest, then y, then z, then the layers (the sky view's: layer 0 first)
 };
 
 inline LutTexels readLutTexels(demo::VulkanHost& host, const postfx::core::Gpu& gpu,

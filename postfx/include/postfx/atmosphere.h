@@ -83,6 +83,8 @@ struct AtmosphereSettings {
 // luminance per unit sun illuminance times a storage scale (docs/effects/atmosphere.md, "Passes").
 inline constexpr ResourceName kAtmosphereTransmittanceLut{"atmosphere.transmittance"};
 inline constexpr ResourceName kAtmosphereMultipleScatteringLut{"atmosphere.multiple_scattering"};
+// The sky-view LUT is a 2D array of two layers: the mapping from inside the atmosphere, then the space
+// mapping (only the layers the camera's altitude uses are built; docs/effects/atmosphere.md).
 inline constexpr ResourceName kAtmosphereSkyViewLut{"atmosphere.sky_view"};
 inline constexpr ResourceName kAtmosphereAerialPerspectiveLut{"atmosphere.aerial_perspective"};
 inline constexpr ResourceName kAtmosphereAerialTransmittanceLut{"atmosphere.aerial_transmittance"};

@@ -168,9 +168,9 @@ public:
     // recorded so far have executed. VK_NULL_HANDLE when it is not held or not built yet.
     VkImageView imageView(ResourceName name, VkImageLayout* layout = nullptr) const;
     // Records a copy of such an image into `buffer` at `offset` (usage TRANSFER_DST), texels tightly
-    // packed (x fastest, then y, then z) with the barriers around it; the copied bytes are visible to the
-    // host once the submission has completed. `extent` receives its size, `bytes` the bytes copied.
-    // InvalidArgument when it is not held or not built yet.
+    // packed (x fastest, then y, then z, then an array image's layers) with the barriers around it; the
+    // copied bytes are visible to the host once the submission has completed. `extent` receives its size,
+    // `bytes` the bytes copied. InvalidArgument when it is not held or not built yet.
     Status recordImageReadback(ResourceName name, VkCommandBuffer commandBuffer, VkBuffer buffer,
                                VkDeviceSize offset, VkExtent3D& extent, VkDeviceSize& bytes) const;
 

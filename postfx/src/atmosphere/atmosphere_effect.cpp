@@ -48,16 +48,15 @@ const core::ComputePipelineDesc kTransmittancePass{
     "atmosphere.transmittance", spirv::atmosphere_transmittance_comp, kTransmittanceBindings};
 const core::ComputePipelineDesc kMultiScatteringPass{
     "atmosphere.multiple_scattering", spirv::atmosphere_multiple_scattering_comp, kMultiScatteringBindings};
+// Push constant: the first layer it builds (sky_view.comp).
 const core::ComputePipelineDesc kSkyViewPass{"atmosphere.sky_view", spirv::atmosphere_sky_view_comp,
-                                             kSkyViewBindings};
+                                             kSkyViewBindings, sizeof(uint32_t)};
 const core::ComputePipelineDesc kApPass{"atmosphere.aerial_perspective",
                                         spirv::atmosphere_aerial_perspective_comp, kApBindings};
-// [march][rgba32]: marching sky pixels (the camera near the top) or not, in the color format.
-const core::ComputePipelineDesc kApplyPass[2][2] = {
-    {{"atmosphere.apply", spirv::atmosphere_apply_comp, kApplyBindings},
-     {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F, kApplyBindings}},
-    {{"atmosphere.apply", spirv::atmosphere_apply_comp_SKY_MARCH, kApplyBindings},
-     {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F_SKY_MARCH, kApplyBindings}}};
+// [rgba32]: the color format.
+const core::ComputePipelineDesc kApplyPass[2] = {
+    {"atmosphere.apply", spirv::atmosphere_apply_comp, kApplyBindings},
+    {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F, kApplyBindings}};
 
 uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kAtmosphereGroupSize) {
     return (size + groupSize - 1) / groupSize;
@@ -144,20 +143,15 @@ double sunZenithAngle(const LutView& v) {
     return angleBetween(v.camera, v.toSun);
 }
 
-// The camera's altitude as a fraction of the atmosphere's thickness -> the sky's blend from the
-// sky-view LUT (0) to marching each pixel (1): 0 up to 85 %, 1 from 90 % to the top, back to 0 (the LUT's
-// space mapping) at 110 % (atmosphere_shared.h).
-double skyMarchBlend(const AtmosphereSettings& s, const glm::dvec3& camera) {
-    const double fraction = (glm::length(camera) - s.groundRadius) / (double(s.topRadius) - s.groundRadius);
-    const double end = gpu::kAtmosphereSkyViewMaxAltitude, width = gpu::kAtmosphereSkyViewBlend;
-    if (fraction <= 1.0) return std::clamp((fraction - (end - width)) / width, 0.0, 1.0);
-    const double space = gpu::kAtmosphereSpaceViewMinAltitude;
-    return std::clamp((space - fraction) / (space - 1.0), 0.0, 1.0);
+// The weight of the sky-view LUT's space mapping for a camera at `radius` (atmosphere_shared.h): 0 up to
+// the top, 1 from kAtmosphereSpaceViewMinAltitude of the thickness, linear in between.
+double spaceMappingWeight(const AtmosphereSettings& s, double radius) {
+    const double fraction = (radius - s.groundRadius) / (double(s.topRadius) - s.groundRadius);
+    return std::clamp((fraction - 1.0) / (gpu::kAtmosphereSpaceViewMinAltitude - 1.0), 0.0, 1.0);
 }
 
 gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth,
-                                      const AtmosphereEffect::Views& v, const glm::dvec3& camera,
-                                      double blend) {
+                                      const AtmosphereEffect::Views& v, const glm::dvec3& camera) {
     const AtmosphereSettings& s = frame.atmosphere;
     gpu::AtmosphereUniforms u{};
     const glm::dmat4 viewToClip = glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view);
@@ -165,7 +159,10 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     u.apViewToClip = glm::mat4(v.aerial.viewToClip);
     u.apClipToView = glm::mat4(glm::inverse(v.aerial.viewToClip));
     const double g = s.groundRadius, t = s.topRadius;
-    u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), float(blend));
+    // The sky-view LUT's radius (clamped onto the ground) and its mappings' weights.
+    const double skyRadius = std::max(glm::length(v.skyView.camera), g);
+    const double space = spaceMappingWeight(s, skyRadius);
+    u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), float(space));
     u.rayleigh = glm::vec4(s.rayleighScattering, float(1.0 / s.rayleighScaleHeight));
     u.mie = glm::vec4(s.mieScattering, s.mieAbsorption, float(1.0 / s.mieScaleHeight), s.mieAnisotropy);
     u.ozone = glm::vec4(s.ozoneAbsorption, s.ozoneCenterHeight);
@@ -182,22 +179,17 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     u.toSun = glm::vec4(glm::vec3(toSun), alpha > 0.0 ? float(std::cos(alpha)) : 2.0f);
     u.sun =
         glm::vec4(frame.sun.illuminance, alpha > 0.0 ? float(1.0 / (4.0 * M_PI * halfSin * halfSin)) : 0.0f);
-    // The sky-view LUT's radius: inside the atmosphere clamped to it; above the top its space mapping.
-    const bool space = glm::length(v.skyView.camera) >= t;
-    const double skyRadius =
-        space ? glm::length(v.skyView.camera) : std::clamp(glm::length(v.skyView.camera), g, t);
     const double muS = glm::dot(glm::normalize(v.skyView.camera), v.skyView.toSun);
     u.skyView =
         glm::vec4(float(skyRadius), float(muS), depth.reversedZ ? 0.0f : 1.0f, float(lutStorageScale(s)));
-    // The sky-view LUT's horizon (its radius's: from inside β and π - β, from space the planet's and the
-    // atmosphere's angular radii) and the sun across this camera's horizontal plane.
-    if (space) {
-        u.skyHorizon =
-            glm::vec4(float(std::asin(g / skyRadius)), float(std::asin(t / skyRadius)), 0.0f, 0.0f);
-    } else {
-        const double beta = std::acos(
-            std::clamp(std::sqrt(std::max(0.0, (skyRadius - g) * (skyRadius + g))) / skyRadius, -1.0, 1.0));
-        u.skyHorizon = glm::vec4(float(beta), float(M_PI - beta), 0.0f, 0.0f);
+    // The sky-view LUT's horizons at its radius: from inside β and π - β; above the top the planet's and
+    // the atmosphere's angular radii from the nadir (the space mapping).
+    const double beta = std::acos(
+        std::clamp(std::sqrt(std::max(0.0, (skyRadius - g) * (skyRadius + g))) / skyRadius, -1.0, 1.0));
+    u.skyHorizon = glm::vec4(float(beta), float(M_PI - beta), 0.0f, 0.0f);
+    if (skyRadius > t) {
+        u.skyHorizon.z = float(std::asin(g / skyRadius));
+        u.skyHorizon.w = float(std::asin(t / skyRadius));
     }
     const glm::dvec3 up = glm::normalize(camera);
     const glm::dvec3 sunAcross = toSun - up * glm::dot(toSun, up);
@@ -213,8 +205,7 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
                          s.aerialPerspectiveLutSize.z, s.aerialPerspectiveStepsPerSlice);
     u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u, 0u);
     u.flags = glm::uvec4((s.multipleScattering ? gpu::kAtmosphereFlagMultipleScattering : 0u) |
-                             (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u) |
-                             (space ? gpu::kAtmosphereFlagSkyViewSpace : 0u),
+                             (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u),
                          0u, 0u, 0u);
     return u;
 }
@@ -271,7 +262,6 @@ AtmosphereEffect::Views AtmosphereEffect::views(const FrameInfo& frame) const {
     const double distance = gpu::kAtmosphereRebuildDistance, angle = gpu::kAtmosphereRebuildAngle;
 
     // Sky view: a function of the camera's radius and the sun's zenith angle alone.
-    v.skyViewUsed = skyMarchBlend(s, now.camera) < 1.0;
     v.skyView = now;
     v.skyView.settingsKey = skyViewSettingsKey(s);
     v.skyView.viewToClip = glm::dmat4(1.0);
@@ -298,8 +288,7 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     const bool rgba32 = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT;
     const Views v = views(frame);
     const glm::dvec3 camera = planetCamera(frame);
-    const gpu::AtmosphereUniforms u =
-        buildUniforms(frame, b.depthConvention(), v, camera, skyMarchBlend(s, camera));
+    const gpu::AtmosphereUniforms u = buildUniforms(frame, b.depthConvention(), v, camera);
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
 
     const core::ImageRef transmittance = b.persistentImage(
@@ -331,17 +320,16 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
                   SamplerKind::LinearClamp);
     };
 
-    core::ImageRef skyView = transmittance;
-    Use skyViewUse = Use::BoundOnly;
-    if (v.skyViewUsed) {
-        skyView =
-            b.persistentImage(kSkyViewLut, lutDesc(VK_IMAGE_TYPE_2D, s.skyViewLutSize.x, s.skyViewLutSize.y),
-                              viewKey(v.skyView));
-        skyViewUse = Use::Sampled;
-        b.pass(kSkyViewPass, groupsFor(s.skyViewLutSize.x), groupsFor(s.skyViewLutSize.y), 1);
-        bindLuts();
-        b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::StorageWrite);
-    }
+    // The sky-view LUT's layers this camera's altitude uses: the mapping from inside (0), the space
+    // mapping (1), or both; the build key holds the camera's radius, so a change of layers rebuilds.
+    const double space = u.radii.w;
+    const uint32_t firstLayer = space < 1.0 ? 0u : 1u, layers = space > 0.0 && space < 1.0 ? 2u : 1u;
+    core::ImageDesc skyViewDesc = lutDesc(VK_IMAGE_TYPE_2D, s.skyViewLutSize.x, s.skyViewLutSize.y);
+    skyViewDesc.layers = gpu::kAtmosphereSkyViewLayers;
+    const core::ImageRef skyView = b.persistentImage(kSkyViewLut, skyViewDesc, viewKey(v.skyView));
+    b.pass(kSkyViewPass, groupsFor(s.skyViewLutSize.x), groupsFor(s.skyViewLutSize.y), layers);
+    bindLuts();
+    b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::StorageWrite).push(&firstLayer, sizeof firstLayer);
 
     const UVec3 ap = s.aerialPerspectiveLutSize;
     const core::ImageDesc apDesc = lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z);
@@ -354,11 +342,9 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::StorageWrite);
 
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-    const bool march = skyMarchBlend(s, camera) > 0.0;
-    b.pass(kApplyPass[march][rgba32], groupsFor(frame.color.extent.width),
-           groupsFor(frame.color.extent.height), 1);
+    b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width), groupsFor(frame.color.extent.height), 1);
     bindLuts();
-    b.bind(gpu::kAtmosphereBindingSkyView, skyView, skyViewUse, SamplerKind::LinearClamp)
+    b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingColorIn, source, Use::StorageRead)
@@ -374,7 +360,7 @@ void AtmosphereEffect::recorded(const FrameInfo& frame, bool active) {
     }
     const Views v = views(frame);
     built_.aerial = v.aerial;
-    if (v.skyViewUsed) built_.skyView = v.skyView;
+    built_.skyView = v.skyView;
 }
 
 }  // namespace postfx::atmosphere

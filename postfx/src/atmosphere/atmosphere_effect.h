@@ -16,9 +16,9 @@ namespace postfx::atmosphere {
 inline constexpr core::ResourceId kUniforms{"atmosphere.uniforms"};
 inline constexpr core::ResourceId kTransmittanceLut{"atmosphere.transmittance"};             // rgba16f 2D
 inline constexpr core::ResourceId kMultipleScatteringLut{"atmosphere.multiple_scattering"};  // rgba16f 2D
-inline constexpr core::ResourceId kSkyViewLut{"atmosphere.sky_view"};                        // rgba16f 2D
-inline constexpr core::ResourceId kApScatteringLut{"atmosphere.aerial_perspective"};         // rgba16f 3D
-inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmittance"};    // rgba16f 3D
+inline constexpr core::ResourceId kSkyViewLut{"atmosphere.sky_view"};                 // rgba16f 2D, 2 layers
+inline constexpr core::ResourceId kApScatteringLut{"atmosphere.aerial_perspective"};  // rgba16f 3D
+inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmittance"};  // rgba16f 3D
 
 // For an effect lit by the sun (docs/effects/atmosphere.md, "The sun for every effect"): the transmittance
 // LUT the atmosphere declared earlier this frame, sampled; with the atmosphere off, `standIn` bound only
@@ -59,7 +59,6 @@ public:
     // The views this frame's sky-view and aerial-perspective LUTs are (or stay) built for.
     struct Views {
         LutView skyView, aerial;
-        bool skyViewUsed = false;  // the camera is below the band where each sky pixel is marched
     };
     Views views(const FrameInfo& frame) const;
 

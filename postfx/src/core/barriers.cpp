@@ -13,7 +13,7 @@ VkImageMemoryBarrier imageBarrier(const ImageTransition& t) {
     barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     barrier.image = t.image;
-    barrier.subresourceRange = {t.aspect, 0, 1, 0, 1};
+    barrier.subresourceRange = {t.aspect, 0, 1, 0, t.layers};
     return barrier;
 }
 

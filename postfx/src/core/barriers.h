@@ -21,6 +21,7 @@ struct ImageTransition {
     VkAccessFlags srcAccess = 0;
     VkPipelineStageFlags dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     VkAccessFlags dstAccess = 0;
+    uint32_t layers = 1;  // array layers from the first
 };
 
 void transition(const Gpu& gpu, VkCommandBuffer cmd, const ImageTransition& t);

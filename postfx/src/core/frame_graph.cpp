@@ -39,7 +39,8 @@ bool owned(const ResourceDecl& r) {
 }
 bool sameDesc(const ImageDesc& a, const ImageDesc& b) {
     return a.type == b.type && a.format == b.format && a.extent.width == b.extent.width &&
-           a.extent.height == b.extent.height && a.extent.depth == b.extent.depth && a.usage == b.usage;
+           a.extent.height == b.extent.height && a.extent.depth == b.extent.depth && a.layers == b.layers &&
+           a.usage == b.usage;
 }
 
 uint64_t texelBytes(VkFormat format) {
@@ -353,7 +354,7 @@ void FrameGraph::plan(const Frame& f, FramePlan& out) const {
         const uint64_t bytes = r.kind == ResourceDecl::Kind::Uniform
                                    ? slotBytes(r.uniformBytes) * framesInFlight_
                                    : uint64_t(r.desc.extent.width) * r.desc.extent.height *
-                                         r.desc.extent.depth * texelBytes(r.desc.format);
+                                         r.desc.extent.depth * r.desc.layers * texelBytes(r.desc.format);
         out.resources.push_back({r.name, effectName(r.effect), bytes, r.kind == ResourceDecl::Kind::History});
     }
 }
@@ -605,6 +606,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                 if (layout != o.layout || hazard) {
                     ImageTransition t;
                     t.image = o.image->handle();
+                    t.layers = o.image->desc().layers;
                     t.oldLayout = m.discard ? VK_IMAGE_LAYOUT_UNDEFINED : o.layout;
                     t.newLayout = layout;
                     t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
@@ -681,12 +683,13 @@ Status FrameGraph::recordReadback(const char* name, VkCommandBuffer cmd, VkBuffe
     if (!(d.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) || texelBytes(d.format) == 0)
         return invalid(std::string("recordImageReadback: ") + name + " cannot be read back");
     extent = d.extent;
-    bytes = VkDeviceSize(d.extent.width) * d.extent.height * d.extent.depth * texelBytes(d.format);
+    bytes = VkDeviceSize(d.extent.width) * d.extent.height * d.extent.depth * d.layers * texelBytes(d.format);
 
     // Its layout -> TRANSFER_SRC after the earlier compute accesses, the copy, and back for the compute
     // passes of later frames.
     ImageTransition t;
     t.image = held.image->handle();
+    t.layers = d.layers;
     t.oldLayout = held.layout;
     t.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
@@ -697,7 +700,7 @@ Status FrameGraph::recordReadback(const char* name, VkCommandBuffer cmd, VkBuffe
 
     VkBufferImageCopy region{};
     region.bufferOffset = offset;
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, d.layers};  // layers one after another
     region.imageExtent = d.extent;
     gpu_->fn.vkCmdCopyImageToBuffer(cmd, t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
 

@@ -134,7 +134,7 @@ Status GpuImage::create(const Gpu& gpu, const ImageDesc& desc, const char* name)
     info.format = desc.format;
     info.extent = desc.extent;
     info.mipLevels = 1;
-    info.arrayLayers = 1;
+    info.arrayLayers = desc.layers;
     info.samples = VK_SAMPLE_COUNT_1_BIT;
     info.tiling = VK_IMAGE_TILING_OPTIMAL;
     info.usage = desc.usage;
@@ -155,9 +155,11 @@ Status GpuImage::create(const Gpu& gpu, const ImageDesc& desc, const char* name)
         return reset(), s;
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     viewInfo.image = image_;
-    viewInfo.viewType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D : VK_IMAGE_VIEW_TYPE_2D;
+    viewInfo.viewType = desc.type == VK_IMAGE_TYPE_3D ? VK_IMAGE_VIEW_TYPE_3D
+                        : desc.layers > 1             ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
+                                                      : VK_IMAGE_VIEW_TYPE_2D;
     viewInfo.format = desc.format;
-    viewInfo.subresourceRange = {aspectOfFormat(desc.format), 0, 1, 0, 1};
+    viewInfo.subresourceRange = {aspectOfFormat(desc.format), 0, 1, 0, desc.layers};
     VkImageView view = VK_NULL_HANDLE;
     if (!(s = vulkanStatus(gpu.fn.vkCreateImageView(gpu.device, &viewInfo, gpu.allocator, &view),
                            (std::string("vkCreateImageView for ") + name).c_str())))

@@ -34,6 +34,7 @@ struct ImageDesc {
     VkImageType type = VK_IMAGE_TYPE_2D;  // 2D or 3D
     VkFormat format = VK_FORMAT_R16G16B16A16_SFLOAT;
     VkExtent3D extent = {1, 1, 1};
+    uint32_t layers = 1;  // array layers (2D only); more than one: a 2D-array view
     VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
 };
 
@@ -44,7 +45,8 @@ public:
     GpuImage& operator=(GpuImage&& other) noexcept;
     ~GpuImage() { reset(); }
 
-    // Device-local image with one mip and layer, and a view of it. Starts in layout UNDEFINED.
+    // Device-local image with one mip and desc.layers layers, and a view of all of them. Starts in layout
+    // UNDEFINED.
     Status create(const Gpu& gpu, const ImageDesc& desc, const char* name);
     void reset();
 
