@@ -11,7 +11,7 @@
 
 #include "atmosphere/atmosphere_shared.h"
 
-layout(local_size_x = kAtmosphereGroupSize, local_size_y = kAtmosphereGroupSize) in;
+layout(local_size_x = kAtmosphereApplyGroupX, local_size_y = kAtmosphereApplyGroupY) in;
 
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;

@@ -9,7 +9,10 @@
 namespace postfx::gpu {
 #endif
 
-PFX_CONST(uint, kAtmosphereGroupSize, 8);  // transmittance, sky-view and apply workgroups: 8×8 invocations
+PFX_CONST(uint, kAtmosphereGroupSize, 8);  // transmittance and sky-view workgroups: 8×8 invocations
+// The apply pass's workgroup (pixels).
+PFX_CONST(uint, kAtmosphereApplyGroupX, 8);
+PFX_CONST(uint, kAtmosphereApplyGroupY, 8);
 // The aerial-perspective LUT: one workgroup per (x, y) texel column, its invocations sharing the slices.
 PFX_CONST(uint, kAtmosphereApGroupSize, 32);
 // The sky-view LUT: each texel's ray split among this many invocations (a z of its workgroup).

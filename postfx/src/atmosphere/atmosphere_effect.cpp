@@ -342,7 +342,8 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::StorageWrite);
 
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-    b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width), groupsFor(frame.color.extent.height), 1);
+    b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width, gpu::kAtmosphereApplyGroupX),
+           groupsFor(frame.color.extent.height, gpu::kAtmosphereApplyGroupY), 1);
     bindLuts();
     b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
