@@ -1,6 +1,7 @@
 #include "atmosphere/atmosphere_effect.h"
 
 #include "atmosphere/atmosphere_settings.h"
+#include "core/camera_math.h"
 #include "core/temporal.h"
 #include "postfx_objects_spirv.h"
 
@@ -116,12 +117,6 @@ uint64_t viewKey(const LutView& v) {
     return core::hashValue(h, v.viewToClip);
 }
 
-glm::dmat4 rotationOnly(const glm::mat4& view) {
-    glm::dmat4 r(view);
-    r[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
-    return r;
-}
-
 double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
     // atan2(|a×b|, a·b): accurate for small angles, where acos of the dot product is not.
     return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
@@ -154,7 +149,7 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
                                       const AtmosphereEffect::Views& v, const glm::dvec3& camera) {
     const AtmosphereSettings& s = frame.atmosphere;
     gpu::AtmosphereUniforms u{};
-    const glm::dmat4 viewToClip = glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view);
+    const glm::dmat4 viewToClip = glm::dmat4(frame.camera.projection) * core::rotationOnly(frame.camera.view);
     u.clipToView = glm::mat4(glm::inverse(viewToClip));
     u.apViewToClip = glm::mat4(v.aerial.viewToClip);
     u.apClipToView = glm::mat4(glm::inverse(v.aerial.viewToClip));
@@ -258,7 +253,7 @@ AtmosphereEffect::Views AtmosphereEffect::views(const FrameInfo& frame) const {
     now.valid = true;
     now.camera = planetCamera(frame);
     now.toSun = glm::normalize(glm::dvec3(frame.sun.toSun));
-    now.viewToClip = glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view);
+    now.viewToClip = glm::dmat4(frame.camera.projection) * core::rotationOnly(frame.camera.view);
     const double distance = gpu::kAtmosphereRebuildDistance, angle = gpu::kAtmosphereRebuildAngle;
 
     // Sky view: a function of the camera's radius and the sun's zenith angle alone.

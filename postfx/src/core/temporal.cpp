@@ -1,5 +1,7 @@
 #include "core/temporal.h"
 
+#include "core/camera_math.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -7,12 +9,6 @@
 
 namespace postfx::core {
 namespace {
-
-glm::dmat4 rotationOnly(const glm::mat4& view) {
-    glm::dmat4 r(view);
-    r[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
-    return r;
-}
 
 double maxComponent(const glm::dvec3& v) {
     return std::max({v.x, v.y, v.z});

@@ -1,5 +1,6 @@
 #include "fog/fog_uniforms.h"
 
+#include "core/camera_math.h"
 #include "fog/fog_settings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,18 +9,12 @@
 
 namespace postfx::fog {
 
-glm::dmat4 rotationOnly(const glm::mat4& view) {
-    glm::dmat4 r(view);
-    r[3] = glm::dvec4(0.0, 0.0, 0.0, 1.0);
-    return r;
-}
-
 gpu::FogUniforms buildMediumUniforms(const FogMedium& s, const FrameInfo& frame, const DepthConvention& depth,
                                      bool noiseEnabled, bool shadowMapEnabled) {
     const glm::dvec3 camera = frame.camera.position;
     gpu::FogUniforms u{};
     u.clipToView =
-        glm::mat4(glm::inverse(glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view)));
+        glm::mat4(glm::inverse(glm::dmat4(frame.camera.projection) * core::rotationOnly(frame.camera.view)));
     // camera-relative x -> world (x + camera) -> shadow clip
     u.viewToShadow = glm::mat4(frame.shadowMap.worldToClip * glm::translate(glm::dmat4(1.0), camera));
     // In double: a long float vector's dot product would overflow (toSun = (1e30, 0, 0) gives 0 in float).

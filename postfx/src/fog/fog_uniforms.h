@@ -16,7 +16,4 @@ gpu::FogUniforms buildMediumUniforms(const FogMedium& medium, const FrameInfo& f
 gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth, bool noiseEnabled,
                                bool shadowMapEnabled);
 
-// The camera's rotation-only view (translation removed): world directions -> view directions.
-glm::dmat4 rotationOnly(const glm::mat4& view);
-
 }  // namespace postfx::fog
