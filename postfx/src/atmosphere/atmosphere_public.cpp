@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <vector>
 
@@ -55,7 +57,7 @@ struct PsiTable {
     }
 };
 
-PsiTable psiTable(const Model& m) {
+PsiTable buildPsiTable(const Model& m) {
     PsiTable t;
     t.groundRadius = m.groundRadius;
     t.topRadius = m.topRadius;
@@ -69,6 +71,21 @@ PsiTable psiTable(const Model& m) {
         }
     }
     return t;
+}
+
+// The table for `m`, built on its first use and kept while the model stays the same (thread-safe): a host
+// that moves the sun every frame pays only the quadrature below (docs/effects/atmosphere.md, "CPU
+// evaluations").
+std::shared_ptr<const PsiTable> psiTable(const Model& m) {
+    static std::mutex mutex;
+    static Model lastModel;
+    static std::shared_ptr<const PsiTable> last;
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (!last || !(lastModel == m)) {
+        last = std::make_shared<const PsiTable>(buildPsiTable(m));
+        lastModel = m;
+    }
+    return last;
 }
 
 // ∫ over a step of length Δ of e^{-σt·s} ds = (1 - e^{-σtΔ})/σt per channel; Δ where σt = 0 (as the
@@ -148,8 +165,7 @@ Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& wo
     if (!unitDirection(toSun, s)) return Vec3(0.0f);
     const Model m = atmosphere::modelFrom(settings);
     const dvec3 x = atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, dvec3(worldPosition)));
-    PsiTable psi;
-    if (settings.multipleScattering) psi = psiTable(m);
+    const std::shared_ptr<const PsiTable> psi = settings.multipleScattering ? psiTable(m) : nullptr;
 
     // The local frame: n the zenith at x, (t, b) across it.
     const dvec3 n = glm::normalize(x);
@@ -167,7 +183,7 @@ Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& wo
         for (uint32_t j = 0; j < kAzimuths; ++j) {
             const double phi = 2.0 * kPi * (j + 0.5) / kAzimuths;
             const dvec3 dir = cosTheta * n + sinTheta * (std::cos(phi) * t + std::sin(phi) * b);
-            sum += cosTheta * viewRayLuminance(m, settings.multipleScattering ? &psi : nullptr, x, dir, s);
+            sum += cosTheta * viewRayLuminance(m, psi.get(), x, dir, s);
         }
     }
     const dvec3 irradiance = sum * (2.0 * kPi / (double(kRings) * kAzimuths));
