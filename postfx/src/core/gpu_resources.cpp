@@ -84,9 +84,19 @@ Status GpuBuffer::create(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags u
     buffer_ = buffer;
     VkMemoryRequirements req;
     gpu.fn.vkGetBufferMemoryRequirements(gpu.device, buffer_, &req);
-    VkMemoryPropertyFlags flags =
-        hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                    : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    // Host-written buffers (uniforms, written through the mapping, read by every pass) go to memory that
+    // is device-local too where the device has such a type (resizable BAR, or its 256 MB window; every
+    // integrated GPU): else each frame's first pass waits for them across PCIe (measured on an H100: ~3 µs
+    // of that pass, docs/effects/atmosphere.md, "Benchmark").
+    constexpr VkMemoryPropertyFlags kHostWrite =
+        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    uint32_t preferred = 0;
+    VkMemoryPropertyFlags flags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    if (hostVisible)
+        flags = gpu.findMemoryType(req.memoryTypeBits, kHostWrite | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT,
+                                   preferred)
+                    ? kHostWrite | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT
+                    : kHostWrite;
     if (!(s = allocate(gpu, req, flags, name, memory_))) return reset(), s;
     if (!(s = vulkanStatus(gpu.fn.vkBindBufferMemory(gpu.device, buffer_, memory_, 0),
                            (std::string("vkBindBufferMemory for ") + name).c_str())))
