@@ -2,10 +2,10 @@
 // Pass 5 of the atmosphere (docs/effects/atmosphere.md, "Composite"): every pixel of the host's color.
 // - Geometry: out = color·T + L·E from the aerial-perspective LUT at the surface's distance.
 // - No geometry: the sky. Luminance from the sky-view LUT: its mapping from inside the atmosphere, its space
-//   mapping, or (just above the top) a blend of both by radii.w. A ray that meets the planet shows its lit
-//   ground and hides what the host drew there; one that does not shows the host's color (what lies beyond
-//   the atmosphere) through the atmosphere's transmittance, plus the sun disk: a uniform disk of the sun's
-//   angular radius and radiance E / solid angle, attenuated the same way.
+//   mapping, or (just above the top) a blend of both by radii.w; the LUT holds the planet's lit ground too.
+//   A ray that meets the planet hides what the host drew there; one that does not shows the host's color
+//   (what lies beyond the atmosphere) through the atmosphere's transmittance, plus the sun disk: a uniform
+//   disk of the sun's angular radius and radiance E / solid angle, attenuated the same way.
 // Variant: COLOR_RGBA32F selects the storage format of the color images (default rgba16f).
 #extension GL_GOOGLE_include_directive : require
 
@@ -30,10 +30,7 @@ layout(binding = kAtmosphereBindingColorOut, rgba16f) uniform writeonly image2D 
 const float kColorMax = 65504.0;  // largest finite half: never write Inf
 #endif
 
-#define ATMOSPHERE_MS
-#include "common/integrate.glsl"
 #include "atmosphere/model.glsl"
-#include "atmosphere/march.glsl"  // sunTransmittanceAt
 
 // out = color·T + L, as the fogs composite (fog/composite.glsl): ±Inf in the host's color counts as
 // ±kColorMax, the result is clamped to the format's range, a NaN channel of the host's stays NaN.
@@ -57,101 +54,104 @@ void aerialPerspective(vec3 x, out vec3 luminance, out vec3 transmittance) {
     float distance = length(xb);
     vec4 clip = atmo.apViewToClip * vec4(xb, 1.0);
     vec2 uv = clip.w > 0.0 ? clamp(clip.xy / clip.w * 0.5 + 0.5, 0.0, 1.0) : vec2(0.5);
-    vec3 dir = xb / max(distance, 1e-30);
     // From space the LUT's slices start where each ray enters the atmosphere; inside it, at the camera.
-    float entry =
-        atmo.apOffset.w != 0.0 ? max(atmosphereRaySphere(atmo.apCamera.xyz, dir, atmo.radii.y).x, 0.0) : 0.0;
-    float w = max(distance - entry, 0.0) / atmo.apCamera.w;  // [0, 1] over the LUT's depth
-    float slices = float(atmo.apLut.z);
+    float entry = 0.0;
+    if (atmo.apOffset.w != 0.0)
+        entry = max(atmosphereRaySphere(atmo.apCamera.xyz, xb / max(distance, 1e-30), atmo.radii.y).x, 0.0);
+    float w = max(distance - entry, 0.0) * atmo.applyAp.x;  // [0, 1] over the LUT's depth
     // Texel k holds the end of slice k; within the first slice (L, T) run from (0, 1) at the entry.
-    float z = max(w * slices - 0.5, 0.5) / slices;
+    float z = max(w - atmo.applyAp.z, atmo.applyAp.z);
     vec3 L = textureLod(apScattering, vec3(uv, z), 0.0).rgb;
     vec3 T = textureLod(apTransmittance, vec3(uv, z), 0.0).rgb;
-    float first = clamp(w * slices, 0.0, 1.0);
-    luminance = L * (first / atmo.skyView.w);
+    float first = clamp(w * atmo.applyAp.y, 0.0, 1.0);
+    luminance = L * (first * atmo.applyScale.y);
     transmittance = mix(vec3(1.0), T, first);
 }
 
 // The sky-view LUT's luminance per unit illuminance along unit d, cosView = dot(d, the camera's zenith):
-// layer 0 (the mapping from inside) weighted 1 - radii.w, layer 1 (the space mapping) radii.w.
+// layer 0 (the mapping from inside) weighted 1 - radii.w, layer 1 (the space mapping) radii.w. The
+// mappings of model.glsl (skyViewParams, skyViewSpaceParams) forward, with the frame's reciprocals.
 vec3 skyViewLuminance(vec3 d, float cosView) {
-    vec3 up = atmo.camera.xyz / atmo.camera.w;
-    vec3 viewHorizontal = d - up * cosView;
-    float viewLength = length(viewHorizontal);
-    float cosAzimuth = atmo.sunHorizontal.w != 0.0 && viewLength > 1e-6
-                           ? dot(atmo.sunHorizontal.xyz, viewHorizontal) / viewLength
+    vec3 viewHorizontal = d - atmo.camera.xyz * (atmo.applyScale.x * cosView);
+    float lengthSquared = dot(viewHorizontal, viewHorizontal);
+    float cosAzimuth = atmo.sunHorizontal.w != 0.0 && lengthSquared > 1e-12
+                           ? dot(atmo.sunHorizontal.xyz, viewHorizontal) * inversesqrt(lengthSquared)
                            : 1.0;
+    float u = sqrt(clamp(0.5 - 0.5 * cosAzimuth, 0.0, 1.0));
+    float theta = acos(clamp(cosView, -1.0, 1.0));  // from the zenith
     float space = atmo.radii.w;
     vec3 L = vec3(0.0);
     if (space < 1.0) {
-        vec2 uv = skyViewUvAtHorizon(atmo.skyHorizon.x, atmo.skyHorizon.y, cosView, cosAzimuth);
+        // Above the horizon v = (1 - √(1 - θ/Z))/2, below it (1 + √((θ - Z)/β))/2.
+        float v = theta < atmo.skyHorizon.y
+                      ? 0.5 - 0.5 * sqrt(max(0.0, 1.0 - theta * atmo.applySkyView.x))
+                      : 0.5 + 0.5 * sqrt(clamp((theta - atmo.skyHorizon.y) * atmo.applySkyView.y, 0.0, 1.0));
+        vec2 uv = vec2(u, v) * atmo.applySkyTexel.xy + atmo.applySkyTexel.zw;
         L = (1.0 - space) * textureLod(skyViewLut, vec3(uv, 0.0), 0.0).rgb;
     }
-    if (space > 0.0 && -cosView >= cos(atmo.skyHorizon.w)) {  // else it misses the atmosphere
-        vec2 uv = skyViewSpaceUv(atmo.skyHorizon.z, atmo.skyHorizon.w, cosView, cosAzimuth);
+    float phi = kAtmospherePi - theta;              // from the nadir
+    if (space > 0.0 && phi <= atmo.skyHorizon.w) {  // else it misses the atmosphere
+        // The planet's disk v = (1 - √(1 - φ/αg))/2, the ring of air (1 + √((φ - αg)/(αt - αg)))/2.
+        float v = phi < atmo.skyHorizon.z
+                      ? 0.5 - 0.5 * sqrt(max(0.0, 1.0 - phi * atmo.applySkyView.z))
+                      : 0.5 + 0.5 * sqrt(clamp((phi - atmo.skyHorizon.z) * atmo.applySkyView.w, 0.0, 1.0));
+        vec2 uv = vec2(u, v) * atmo.applySkyTexel.xy + atmo.applySkyTexel.zw;
         L += space * textureLod(skyViewLut, vec3(uv, 1.0), 0.0).rgb;
     }
-    return L / atmo.skyView.w;
+    return L * atmo.applyScale.y;
 }
 
-void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, atmo.extent.xy))) return;
+void applyPixel(uvec2 pixel, vec2 ndc) {
     vec4 color = imageLoad(colorIn, ivec2(pixel));
     float depth = texelFetch(depthTexture, ivec2(pixel), 0).r;
     bool noGeometry = depth == atmo.skyView.z;
-    vec2 ndc = (vec2(pixel) + 0.5) / vec2(atmo.extent.xy) * 2.0 - 1.0;
     vec4 p = atmo.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);
-    vec3 x = p.xyz / p.w;
     vec3 E = atmo.sun.rgb;
     vec3 result;
     if (!noGeometry) {
         vec3 L, T;
-        aerialPerspective(x, L, T);
+        aerialPerspective(p.xyz / p.w, L, T);
         result = compositeAtmosphere(color.rgb, T, L * E);
     } else {
-        vec3 d = normalize(x);
+        vec3 d = normalize(p.w < 0.0 ? -p.xyz : p.xyz);  // p.xyz / p.w, normalised
         vec3 o = atmo.camera.xyz;
-        float r = atmo.camera.w, g = atmo.radii.x;
-        float mu = dot(o, d) / r;
-        bool ground;
-        vec3 L = skyViewLuminance(d, mu), T = vec3(1.0), q = vec3(0.0);
-        if (r < atmo.radii.y) {
-            // The camera inside the atmosphere: T from the transmittance LUT: to the top, or to the ground
-            // as T(ground → top along -d) / T(camera → top along -d).
-            ground = rayMeetsGround(r, mu, g);
-            if (ground) {
-                float t = max(0.0, -r * mu - sqrt(max(0.0, (g - r) * (g + r) + r * r * mu * mu)));
-                q = o + t * d;
-                vec3 num = transmittanceToTop(q, -d), den = transmittanceToTop(o, -d);
-                T = all(greaterThan(den, vec3(0.0))) ? clamp(num / den, 0.0, 1.0) : vec3(0.0);
-            } else {
-                T = textureLod(transmittanceLut, transmittanceUv(r, mu), 0.0).rgb;
-            }
-        } else {
-            // Above the top: T from where the ray enters the atmosphere.
-            vec3 seg = atmosphereSegment(o, d);
-            ground = seg.z != 0.0;
-            q = o + seg.y * d;
-            vec3 entry = o + seg.x * d;
-            if (seg.y > seg.x) {
-                if (ground) {
-                    vec3 num = transmittanceToTop(q, -d), den = transmittanceToTop(entry, -d);
-                    T = all(greaterThan(den, vec3(0.0))) ? clamp(num / den, 0.0, 1.0) : vec3(0.0);
-                } else {
-                    T = transmittanceToTop(entry, d);
-                }
-            }
-        }
+        float r = atmo.camera.w;
+        float mu = dot(o, d) * atmo.applyScale.x;
+        // L: the sky-view LUT's, the lit ground included where the ray ends on it. T: the view ray's
+        // transmittance, for what lies beyond the atmosphere (the host's color, the sun disk); fetched only
+        // where that shows (a host that clears its sky to black needs none outside the disk).
+        vec3 L = skyViewLuminance(d, mu), T = vec3(1.0);
+        bool ground = rayMeetsGround(r, mu, atmo.radii.x);
         vec3 background = color.rgb;
         if (ground) {
-            float nDotL = max(0.0, dot(normalize(q), atmo.toSun.xyz));
-            L += T * sunTransmittanceAt(q, atmo.toSun.xyz) * nDotL * atmo.albedo.rgb / kAtmospherePi;
             background = vec3(0.0);  // the planet hides what lies beyond it
-        } else if (dot(d, atmo.toSun.xyz) >= atmo.toSun.w) {
-            L += T * atmo.sun.w;  // the disk: E / solid angle, per unit illuminance
+        } else {
+            bool disk = dot(d, atmo.toSun.xyz) >= atmo.toSun.w;
+            if (disk || any(notEqual(color.rgb, vec3(0.0)))) {
+                if (r < atmo.radii.y) {
+                    T = textureLod(transmittanceLut, transmittanceUv(r, mu), 0.0).rgb;
+                } else {  // above the top: from where the ray enters the atmosphere
+                    vec3 seg = atmosphereSegment(o, d);
+                    if (seg.y > seg.x) T = transmittanceToTop(o + seg.x * d, d);
+                }
+            }
+            if (disk) L += T * atmo.sun.w;  // the disk: E / solid angle, per unit illuminance
         }
         result = compositeAtmosphere(mix(background, color.rgb, isnan(color.rgb)), T, L * E);
     }
     imageStore(colorOut, ivec2(pixel), vec4(result, color.a));
+}
+
+// Each invocation composites kAtmosphereApplyRows pixels, kAtmosphereApplyGroupY rows apart (more loads in
+// flight per invocation; docs/effects/atmosphere.md, "Benchmark").
+void main() {
+    uvec2 base = uvec2(gl_WorkGroupID.x * kAtmosphereApplyGroupX,
+                       gl_WorkGroupID.y * (kAtmosphereApplyGroupY * kAtmosphereApplyRows)) +
+                 gl_LocalInvocationID.xy;
+    vec2 ndc = vec2(base) * atmo.applyNdc.xy + atmo.applyNdc.zw;  // the pixel centre's
+    for (uint k = 0u; k < kAtmosphereApplyRows; ++k) {
+        uvec2 pixel = base + uvec2(0u, k * kAtmosphereApplyGroupY);
+        if (all(lessThan(pixel, atmo.extent.xy)))
+            applyPixel(pixel, ndc + vec2(0.0, float(k * kAtmosphereApplyGroupY) * atmo.applyNdc.y));
+    }
 }

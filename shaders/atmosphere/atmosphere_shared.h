@@ -13,6 +13,7 @@ PFX_CONST(uint, kAtmosphereGroupSize, 8);  // transmittance and sky-view workgro
 // The apply pass's workgroup (pixels).
 PFX_CONST(uint, kAtmosphereApplyGroupX, 8);
 PFX_CONST(uint, kAtmosphereApplyGroupY, 8);
+PFX_CONST(uint, kAtmosphereApplyRows, 2);  // pixels per invocation, kAtmosphereApplyGroupY rows apart
 // The aerial-perspective LUT: one workgroup per (x, y) texel column, its invocations sharing the slices.
 PFX_CONST(uint, kAtmosphereApGroupSize, 32);
 // The sky-view LUT: each texel's ray split among this many invocations (a z of its workgroup).
@@ -75,6 +76,14 @@ struct AtmosphereUniforms {
     // the zenith or nadir: every azimuth is the sun's)
     vec4 skyHorizon;
     vec4 sunHorizontal;
+    // The apply pass's per-frame constants, so that a pixel multiplies where it would divide: the pass is
+    // bound by the special-function units (docs/effects/atmosphere.md, "Benchmark").
+    vec4 applyNdc;      // xy: 2 / extent, zw: 1 / extent - 1: a pixel's centre in NDC = pixel·xy + zw
+    vec4 applySkyView;  // x: 1 / (π - β), y: 1 / β; above the top z: 1 / αg, w: 1 / (αt - αg) (skyHorizon)
+    vec4 applySkyTexel;  // the sky-view LUT's texel-centre mapping unit -> uv: xy: 1 - 1 / size, zw: 0.5 /
+                         // size
+    vec4 applyScale;     // x: 1 / the camera's radius, y: 1 / the storage scale (skyView.w)
+    vec4 applyAp;        // x: 1 / the AP distance, y: the AP's slices, z: 0.5 / slices
     uvec4 transmittanceLut;  // xy: size, z: steps
     uvec4 msLut;             // xy: size, z: directions per side (n of n×n), w: steps
     uvec4 skyViewLut;        // xy: size, z: steps
@@ -84,7 +93,7 @@ struct AtmosphereUniforms {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(AtmosphereUniforms) == 3 * 64 + 19 * 16, "AtmosphereUniforms must match std140");
+static_assert(sizeof(AtmosphereUniforms) == 3 * 64 + 24 * 16, "AtmosphereUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

@@ -121,31 +121,12 @@ float skyViewHorizonBeta(float r) {
     r = max(r, g);
     return acos(clamp(sqrt(max(0.0, (r - g) * (r + g))) / r, -1.0, 1.0));
 }
-// β and Z = π - β given (per frame, for the apply pass).
-vec2 skyViewUvAtHorizon(float beta, float zenithHorizon, float cosViewZenith, float cosAzimuth) {
-    float theta = acos(clamp(cosViewZenith, -1.0, 1.0));
-    float v = theta < zenithHorizon ? 0.5 * (1.0 - sqrt(max(0.0, 1.0 - theta / zenithHorizon)))
-                                    : 0.5 + 0.5 * sqrt(clamp((theta - zenithHorizon) / beta, 0.0, 1.0));
-    float u = sqrt(clamp(0.5 - 0.5 * cosAzimuth, 0.0, 1.0));
-    return vec2(unitToTexel(u, atmo.skyViewLut.x), unitToTexel(v, atmo.skyViewLut.y));
-}
-vec2 skyViewUv(float r, float cosViewZenith, float cosAzimuth) {
-    float beta = skyViewHorizonBeta(r);
-    return skyViewUvAtHorizon(beta, kAtmospherePi - beta, cosViewZenith, cosAzimuth);
-}
 // The sky-view LUT's space mapping, for a camera above the atmosphere (atmosphere.md#high-up-and-in-space):
 // the directions that meet the atmosphere, within the angle αt = asin(top / r) of the nadir, over v. The
 // planet's disk, nadir angle φ ∈ [0, αg], αg = asin(ground / r): v = (1 - √(1 - φ/αg))/2, crowded toward
 // its limb; the ring of air beyond it, φ ∈ [αg, αt]: v = (1 + √((φ - αg)/(αt - αg)))/2, crowded toward the
 // ground's limb where the air is densest. u as inside. Directions beyond αt miss the atmosphere (v > 1).
-vec2 skyViewSpaceUv(float alphaGround, float alphaTop, float cosViewZenith, float cosAzimuth) {
-    float phi = acos(clamp(-cosViewZenith, -1.0, 1.0));
-    float v = phi < alphaGround
-                  ? 0.5 * (1.0 - sqrt(max(0.0, 1.0 - phi / alphaGround)))
-                  : 0.5 + 0.5 * sqrt(clamp((phi - alphaGround) / (alphaTop - alphaGround), 0.0, 1.0));
-    float u = sqrt(clamp(0.5 - 0.5 * cosAzimuth, 0.0, 1.0));
-    return vec2(unitToTexel(u, atmo.skyViewLut.x), unitToTexel(v, atmo.skyViewLut.y));
-}
+// The forward mappings (direction -> texel) are the apply pass's, with its per-frame reciprocals.
 // Its inverse: x = cos view zenith, y = cos azimuth.
 vec2 skyViewSpaceParams(float alphaGround, float alphaTop, vec2 uv) {
     vec2 x = vec2(texelToUnit(uv.x, atmo.skyViewLut.x), texelToUnit(uv.y, atmo.skyViewLut.y));

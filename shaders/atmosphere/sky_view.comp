@@ -3,10 +3,11 @@
 // section 5.3. For the camera's radius and the sun's zenith angle it was built for (AtmosphereUniforms
 // skyView.xy), texel (azimuth from the sun, view zenith) of layer 0 (the mapping from inside the
 // atmosphere) or 1 (the space mapping, by nadir angle) holds the luminance per unit sun illuminance of the
-// view ray to the top or the ground, `skyViewLut.z` steps spaced quadratically from where the ray enters the
-// atmosphere. Workgroup z is the layer, from `firstLayer` (only the layers the camera's altitude uses). Each
-// texel's steps are split among kAtmosphereSkyViewSplit invocations (z of the workgroup), composed front to
-// back (L = L0 + T0·L1, T = T0·T1): the pass is bound by each ray's chain of dependent fetches, not by work.
+// view ray to the top or the ground (the lit ground included), `skyViewLut.z` steps spaced quadratically from
+// where the ray enters the atmosphere. Workgroup z is the layer, from `firstLayer` (only the layers the
+// camera's altitude uses). Each texel's steps are split among kAtmosphereSkyViewSplit invocations (z of the
+// workgroup), composed front to back (L = L0 + T0·L1, T = T0·T1): the pass is bound by each ray's chain of
+// dependent fetches, not by work.
 #extension GL_GOOGLE_include_directive : require
 
 #include "atmosphere/atmosphere_shared.h"
@@ -38,18 +39,19 @@ void main() {
     uint slot = gl_LocalInvocationID.y * kAtmosphereGroupSize + gl_LocalInvocationID.x;
     bool inside = all(lessThan(texel, atmo.skyViewLut.xy));
     AtmosphereMarch march = AtmosphereMarch(vec3(0.0), vec3(1.0));
+    float r = atmo.skyView.x, muS = atmo.skyView.y;
+    vec3 origin = vec3(0.0, r, 0.0);
+    vec3 toSun = vec3(sqrt(max(0.0, 1.0 - muS * muS)), muS, 0.0);
+    vec3 dir = vec3(0.0, 1.0, 0.0), seg = vec3(0.0);
     if (inside) {
-        float r = atmo.skyView.x, muS = atmo.skyView.y;
         vec2 uv = (vec2(texel) + 0.5) / vec2(atmo.skyViewLut.xy);
         vec2 view =
             layer == 1u ? skyViewSpaceParams(atmo.skyHorizon.z, atmo.skyHorizon.w, uv) : skyViewParams(r, uv);
         // The local frame: zenith +y, the sun in the x-y plane toward +x.
         float sinView = sqrt(max(0.0, 1.0 - view.x * view.x));
         float sinAzimuth = sqrt(max(0.0, 1.0 - view.y * view.y));
-        vec3 dir = vec3(sinView * view.y, view.x, sinView * sinAzimuth);
-        vec3 toSun = vec3(sqrt(max(0.0, 1.0 - muS * muS)), muS, 0.0);
-        vec3 origin = vec3(0.0, r, 0.0);
-        vec3 seg = atmosphereSegment(origin, dir);
+        dir = vec3(sinView * view.y, view.x, sinView * sinAzimuth);
+        seg = atmosphereSegment(origin, dir);
         uint steps = atmo.skyViewLut.z;
         uint first = part * steps / kAtmosphereSkyViewSplit,
              last = (part + 1u) * steps / kAtmosphereSkyViewSplit;
@@ -63,6 +65,14 @@ void main() {
     for (uint i = 0u; i < kAtmosphereSkyViewSplit; ++i) {
         L += T * partL[i][slot];
         T *= partT[i][slot];
+    }
+    // A ray that ends on the ground adds the ground's Lambertian reflection of the sun seen through the air:
+    // T·Tsun·max(0, n·s)·albedo/π (the apply pass reads it with the sky; the ground lit by the sky is not
+    // modelled, as in the paper).
+    if (seg.z != 0.0) {
+        vec3 q = origin + seg.y * dir;
+        float nDotL = max(0.0, dot(normalize(q), toSun));
+        L += T * sunTransmittanceAt(q, toSun) * nDotL * atmo.albedo.rgb / kAtmospherePi;
     }
     imageStore(skyViewOut, ivec3(texel, layer), vec4(min(L * atmo.skyView.w, vec3(65504.0)), 1.0));
 }

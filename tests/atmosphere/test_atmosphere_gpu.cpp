@@ -164,7 +164,7 @@ TEST_F(AtmosphereGpuTest, MultipleScatteringLutMatchesReference) {
     std::printf("[ atmosphere ] multiple-scattering LUT: largest relative error %.2e\n", worst);
 }
 
-// Sky-view texels (single scattering) against the view ray marched finely in double.
+// Sky-view texels (single scattering, the lit ground) against the view ray marched finely in double.
 TEST_F(AtmosphereGpuTest, SkyViewLutMatchesReference) {
     postfx::FrameInfo frame = skyFrame(10.0);
     frame.atmosphere.multipleScattering = false;
@@ -182,6 +182,7 @@ TEST_F(AtmosphereGpuTest, SkyViewLutMatchesReference) {
     o.steps = 2000;
     o.transmittanceSteps = 400;
     o.multipleScattering = false;
+    o.ground = true;  // the LUT holds the lit ground where a ray ends on it (rows 54 and below)
     double worst = 0.0;
     for (uint32_t y : {2u, 30u, 50u, 53u, 54u, 60u, 100u})
         for (uint32_t x : {0u, 40u, 120u, 191u}) {

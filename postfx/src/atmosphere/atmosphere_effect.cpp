@@ -199,6 +199,16 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     u.apLut = glm::uvec4(s.aerialPerspectiveLutSize.x, s.aerialPerspectiveLutSize.y,
                          s.aerialPerspectiveLutSize.z, s.aerialPerspectiveStepsPerSlice);
     u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u, 0u);
+    const glm::dvec2 extent(std::max(1u, frame.color.extent.width), std::max(1u, frame.color.extent.height));
+    u.applyNdc = glm::vec4(glm::vec2(2.0 / extent), glm::vec2(1.0 / extent - 1.0));
+    const auto inverse = [](double x) { return x > 0.0 ? float(1.0 / x) : 0.0f; };
+    u.applySkyView = glm::vec4(inverse(M_PI - beta), inverse(beta), inverse(u.skyHorizon.z),
+                               inverse(double(u.skyHorizon.w) - double(u.skyHorizon.z)));
+    const glm::dvec2 skySize(std::max(1u, s.skyViewLutSize.x), std::max(1u, s.skyViewLutSize.y));
+    u.applySkyTexel = glm::vec4(glm::vec2(1.0 - 1.0 / skySize), glm::vec2(0.5 / skySize));
+    u.applyScale = glm::vec4(inverse(glm::length(camera)), inverse(lutStorageScale(s)), 0.0f, 0.0f);
+    const double slices = std::max(1u, s.aerialPerspectiveLutSize.z);
+    u.applyAp = glm::vec4(inverse(s.aerialPerspectiveDistance), float(slices), float(0.5 / slices), 0.0f);
     u.flags = glm::uvec4((s.multipleScattering ? gpu::kAtmosphereFlagMultipleScattering : 0u) |
                              (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u),
                          0u, 0u, 0u);
@@ -338,7 +348,7 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
 
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
     b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width, gpu::kAtmosphereApplyGroupX),
-           groupsFor(frame.color.extent.height, gpu::kAtmosphereApplyGroupY), 1);
+           groupsFor(frame.color.extent.height, gpu::kAtmosphereApplyGroupY * gpu::kAtmosphereApplyRows), 1);
     bindLuts();
     b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
