@@ -86,8 +86,8 @@ Status GpuBuffer::create(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags u
     gpu.fn.vkGetBufferMemoryRequirements(gpu.device, buffer_, &req);
     // Host-written buffers (uniforms, written through the mapping, read by every pass) go to memory that
     // is device-local too where the device has such a type (resizable BAR, or its 256 MB window; every
-    // integrated GPU): else each frame's first pass waits for them across PCIe (measured on an H100: ~3 µs
-    // of that pass, docs/effects/atmosphere.md, "Benchmark").
+    // integrated GPU), else to system memory, read across PCIe (on an H100 that cost a frame's first pass
+    // 0.6 µs; docs/effects/atmosphere.md, "Benchmark").
     constexpr VkMemoryPropertyFlags kHostWrite =
         VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     uint32_t preferred = 0;
