@@ -4,9 +4,9 @@
 # checks a pixel against the closed form).
 #   run_consumer.sh package      SOURCE BUILD WORK  install BUILD into WORK/prefix, find_package it, and
 #                                                   compile version_check.cpp through pkg-config too
-#   run_consumer.sh shared       SOURCE BUILD WORK  build postfx alone as a shared library, install it,
-#                                                   check it exports postfx's API only, find_package it
-#   run_consumer.sh subdirectory SOURCE BUILD WORK  add_subdirectory(SOURCE)
+#   run_consumer.sh subdirectory SOURCE BUILD WORK  add_subdirectory(SOURCE) as a shared library, and
+#                                                   that build installed: it exports postfx's API only,
+#                                                   a second consumer finds it with find_package
 #   run_consumer.sh fetchcontent SOURCE BUILD WORK  FetchContent (configure only: options, cache, targets)
 set -euo pipefail
 mode=$1 source=$2 build=$3 work=$4
@@ -34,13 +34,15 @@ package)
     c++ -std=c++20 "$consumer/version_check.cpp" -o "$work/version_check_pkgconfig" $flags
     "$work/version_check_pkgconfig"
     ;;
-shared)
-    # The library alone (the consumer builds the guide's program itself).
-    cmake -S "$source" -B "$work/postfx" -DBUILD_SHARED_LIBS=ON -DCMAKE_BUILD_TYPE=Release \
-        -DPOSTFX_BUILD_DEMO=OFF -DPOSTFX_BUILD_TESTS=OFF -DPOSTFX_BUILD_BENCH=OFF -DPOSTFX_BUILD_EXAMPLES=OFF \
-        -DPOSTFX_WERROR=ON >"$work/postfx-configure.log" 2>&1 || { cat "$work/postfx-configure.log"; exit 1; }
-    cmake --build "$work/postfx" -j"$jobs" >"$work/postfx-build.log" 2>&1 || { cat "$work/postfx-build.log"; exit 1; }
-    cmake --install "$work/postfx" --prefix "$work/prefix" >/dev/null
+subdirectory)
+    # One build of the library serves two ways of consuming it (CI time): the consumer builds postfx as
+    # its subdirectory, shared (BUILD_SHARED_LIBS) and installable (POSTFX_INSTALL), and runs what it built
+    # against it; then the installed shared library must export postfx's API only, and a second consumer
+    # finds it with find_package and runs.
+    configure_consumer -DPOSTFX_CONSUME=subdirectory -DPOSTFX_SOURCE_DIR="$source" -DBUILD_SHARED_LIBS=ON \
+        -DPOSTFX_INSTALL=ON -DCMAKE_BUILD_TYPE=Release
+    build_and_run
+    cmake --install "$work/consumer" --prefix "$work/prefix" >/dev/null
     so=$(ls "$work"/prefix/lib/libpostfx.so.* | head -n1)
     # Exported: postfx's API (namespace postfx, not its internal namespaces) and the C++ runtime's
     # template instantiations the API uses; no internal symbol.
@@ -56,11 +58,8 @@ shared)
         printf '%s\n' "$exported" | grep -qF "$api" || { echo "libpostfx.so does not export $api"; exit 1; }
     done
     echo "libpostfx.so exports $(printf '%s\n' "$exported" | grep -c 'postfx::') postfx symbols, no internal one"
+    rm -rf "$work/consumer"
     configure_consumer -DPOSTFX_CONSUME=package -DCMAKE_PREFIX_PATH="$work/prefix"
-    build_and_run
-    ;;
-subdirectory)
-    configure_consumer -DPOSTFX_CONSUME=subdirectory -DPOSTFX_SOURCE_DIR="$source"
     build_and_run
     ;;
 fetchcontent)
