@@ -5,6 +5,7 @@
 #include "atmosphere/atmosphere_effect.h"
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_reference.h"
+#include "atmosphere_reference_image.h"
 #include "core/barriers.h"
 #include "core/gpu_resources.h"
 #include "fog_harness.h"
@@ -279,26 +280,9 @@ TEST_F(AtmosphereGpuTest, ThinRayleighZenithMatchesSingleScatteringClosedForm) {
     }
 }
 
-// Reference (a): the model without LUTs per pixel in double (postfx::reference::renderAtmosphere), with
-// multiple scattering from its fine Ψ table when the frame has it on.
+// Reference (a) at 600 steps per pixel, a 32×32 Ψ table of 64 directions.
 std::vector<float> referenceImage(const postfx::FrameInfo& frame, const FogHarnessImages& im) {
-    postfx::reference::AtmosphereInputs in;
-    in.width = im.width;
-    in.height = im.height;
-    in.color = im.color;
-    in.depth = im.depth;
-    in.depthConvention.reversedZ = true;
-    in.camera = frame.camera;
-    in.sun = frame.sun;
-    in.settings = frame.atmosphere;
-    in.stepsPerPixel = 600;
-    in.psiTableMuS = 32;
-    in.psiTableHeights = 32;
-    in.psiDirections = 64;
-    std::vector<float> out;
-    const postfx::Status s = postfx::reference::renderAtmosphere(in, out);
-    EXPECT_TRUE(s.ok()) << s.message;
-    return out;
+    return atmosphereReferenceImage(frame, im);
 }
 
 // Sky pixels (the sky-view LUT, the planet below the horizon, the apply pass) against the model per pixel,

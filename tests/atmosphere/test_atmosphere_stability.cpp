@@ -3,6 +3,7 @@
 // zero and 1000× Earth's, tiny and huge planets, a 1e5 lux sun disk in RGBA16F. Every output: no NaN or
 // Inf, no negative light, nothing beyond the color format's largest finite value; where the case has
 // one, the reference (a) within a stated tolerance.
+#include "atmosphere_reference_image.h"
 #include "fog_harness.h"
 #include "image_compare.h"
 #include "stability_frame.h"
@@ -74,23 +75,7 @@ protected:
     }
 
     std::vector<float> reference(const FogHarnessImages& im) const {
-        postfx::reference::AtmosphereInputs in;
-        in.width = im.width;
-        in.height = im.height;
-        in.color = im.color;
-        in.depth = im.depth;
-        in.depthConvention.reversedZ = true;
-        in.camera = frame.camera;
-        in.sun = frame.sun;
-        in.settings = frame.atmosphere;
-        in.stepsPerPixel = 400;
-        in.psiTableMuS = 24;
-        in.psiTableHeights = 24;
-        in.psiDirections = 64;
-        std::vector<float> out;
-        const postfx::Status s = postfx::reference::renderAtmosphere(in, out);
-        EXPECT_TRUE(s.ok()) << s.message;
-        return out;
+        return atmosphereReferenceImage(frame, im, {400, 24, 64});
     }
 
     // Finite, not negative, within RGBA16F; with tolerance > 0 the reference's (clamped to the format)

@@ -1,0 +1,45 @@
+// Reference (a) of a test's frame: the model without LUTs per pixel in double
+// (postfx::reference::renderAtmosphere) over the images a test renders, multiple scattering from its fine Ψ
+// table when the frame has it on. For the GPU tests (test_atmosphere_gpu.cpp) and the stability suite
+// (test_atmosphere_stability.cpp), each with its own steps and table sizes.
+#pragma once
+
+#include "fog_harness.h"
+
+#include <postfx/reference.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace test {
+
+struct AtmosphereReferenceQuality {
+    uint32_t stepsPerPixel = 600;
+    uint32_t psiTableSize = 32;  // μs × heights
+    uint32_t psiDirections = 64;
+};
+
+inline std::vector<float> atmosphereReferenceImage(const postfx::FrameInfo& frame, const FogHarnessImages& im,
+                                                   const AtmosphereReferenceQuality& quality = {}) {
+    postfx::reference::AtmosphereInputs in;
+    in.width = im.width;
+    in.height = im.height;
+    in.color = im.color;
+    in.depth = im.depth;
+    in.depthConvention.reversedZ = true;
+    in.camera = frame.camera;
+    in.sun = frame.sun;
+    in.settings = frame.atmosphere;
+    in.stepsPerPixel = quality.stepsPerPixel;
+    in.psiTableMuS = quality.psiTableSize;
+    in.psiTableHeights = quality.psiTableSize;
+    in.psiDirections = quality.psiDirections;
+    std::vector<float> out;
+    const postfx::Status s = postfx::reference::renderAtmosphere(in, out);
+    EXPECT_TRUE(s.ok()) << s.message;
+    return out;
+}
+
+}  // namespace test
