@@ -29,7 +29,7 @@ struct AtmosphereView {
 
 // ground_sun30 (camera 300 m up, the sun at 30° off to the side), ground_sunset (sun at 5° ahead), both
 // with the ground plane as geometry up to 30 km (inside the aerial-perspective LUT's default 32 km),
-// space_sun30 (camera 100 km up looking down at the horizon, no geometry: each sky pixel marched),
+// space_sun30 (camera 100 km up looking down at the horizon, no geometry: the planet fills half the image),
 // orbit_sun30 (400 km up, the sky-view LUT's space mapping).
 std::vector<AtmosphereView> atmosphereViews();
 
