@@ -14,11 +14,6 @@ std::string ms(double value) {
     return std::isfinite(value) ? formatNumber(value, 4) + " ms" : "–";
 }
 
-std::string shortPass(const std::string& name) {
-    const size_t dot = name.find('.');
-    return dot == std::string::npos ? name : name.substr(dot + 1);
-}
-
 bool isMoving(AtmosphereSituation s) {
     return s == AtmosphereSituation::Camera || s == AtmosphereSituation::Sun;
 }
@@ -29,14 +24,6 @@ std::string status(const AtmosphereTarget& t) {
     if (t.met()) return "**PASS** (" + text + " ≤ " + formatNumber(t.limit, 3) + " ms)";
     return "**MISS** by " + formatNumber(std::round((t.measured() / t.limit - 1.0) * 100.0), 3) + "% (" +
            text + " > " + formatNumber(t.limit, 3) + " ms)";
-}
-
-// "transmittance 0.01, apply 0.004 (ms)": the passes a row's frames recorded.
-std::string passBreakdown(const AtmosphereRow& r) {
-    std::string text;
-    for (const auto& [name, value] : r.timing.passMedians)
-        text += (text.empty() ? "" : ", ") + shortPass(name) + " " + formatNumber(value, 3);
-    return text.empty() ? "" : " (" + text + " ms)";
 }
 
 // "apply 30/30, sky_view 30/30": how many timed frames recorded each pass.
@@ -202,7 +189,7 @@ bool writeAtmosphereMarkdown(const std::string& path, const AtmosphereInfo& info
     for (const AtmosphereTarget& t : atmosphereTargets(rows)) {
         out << "| " << t.name << " | "
             << (t.row ? t.row->view + ", " + situationName(t.row->situation) : std::string("not measured"))
-            << " | " << (t.row ? ms(t.measured()) + passBreakdown(*t.row) : std::string("–")) << " | "
+            << " | " << (t.row ? ms(t.measured()) + passBreakdown(t.row->timing) : std::string("–")) << " | "
             << status(t) << " |\n";
     }
     out << "\n";

@@ -24,23 +24,10 @@ std::string errors(const Result& r) {
            percent(r.error[2].relativeRmse);
 }
 
-std::string shortPass(const std::string& name) {
-    const size_t dot = name.find('.');
-    return dot == std::string::npos ? name : name.substr(dot + 1);
-}
-
 // A sweep row of the froxel fog (not the light-count sweep) or a ray-marched fog row, of `scene`.
 bool onFront(const Result& r, const std::string& scene, Method method) {
     return r.setting.scene == scene && r.setting.method == method && !r.setting.lightSweep &&
            std::isfinite(r.timing.median);
-}
-
-// "0.08 ms (light_lists –, scatter 0.05 ms, ...)": every pass of a froxel row.
-std::string passBreakdown(const Result& r) {
-    std::string text;
-    for (const auto& [name, value] : r.timing.passMedians)
-        text += (text.empty() ? "" : ", ") + shortPass(name) + " " + formatNumber(value, 3);
-    return text.empty() ? "" : " (" + text + " ms)";
 }
 
 // The pass of r with the largest median: "scatter (0.071 ms, 64% of the total)".
@@ -384,7 +371,7 @@ std::string froxelConclusionsMarkdown(const RunInfo& info, const std::vector<Res
         out << "| " << t.name << " | " << (t.row ? "`" + t.row->setting.label() + "`" : "not measured")
             << " | ";
         if (t.row && t.unit == "ms") {
-            out << ms(t.measured) << passBreakdown(*t.row);
+            out << ms(t.measured) << passBreakdown(t.row->timing);
         } else if (t.row) {
             const double apply = passMs(*t.row, "froxel_fog.apply");
             out << "apply " << ms(apply) << " against a floor of " << ms(floorMs) << " ("

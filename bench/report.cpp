@@ -85,6 +85,18 @@ std::string formatNumber(double value, int digits) {
     return text;
 }
 
+std::string shortPass(const std::string& name) {
+    const size_t dot = name.find('.');
+    return dot == std::string::npos ? name : name.substr(dot + 1);
+}
+
+std::string passBreakdown(const Timing& timing) {
+    std::string text;
+    for (const auto& [name, value] : timing.passMedians)
+        text += (text.empty() ? "" : ", ") + shortPass(name) + " " + formatNumber(value, 3);
+    return text.empty() ? "" : " (" + text + " ms)";
+}
+
 std::string xmlEscape(const std::string& text) {
     std::string out;
     for (char c : text) {

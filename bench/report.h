@@ -27,6 +27,10 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
 std::string formatNumber(double value, int digits = 4);  // "" for NaN
 std::string percent(double fraction, int digits = 3);    // "1.23%"; "–" when not finite
 std::string xmlEscape(const std::string& text);
+// A pass's name without its effect's prefix: "apply" for "atmosphere.apply".
+std::string shortPass(const std::string& name);
+// " (transmittance 0.01, apply 0.004 ms)": each pass's median in recording order; "" when none.
+std::string passBreakdown(const Timing& timing);
 // `text` into `path`; false with "cannot write 'PATH'" otherwise.
 bool writeTextFile(const std::string& path, const std::string& text, std::string& error);
 std::string orDash(const std::string& s);  // "–" for ""
