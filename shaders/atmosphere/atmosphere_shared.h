@@ -80,10 +80,9 @@ struct AtmosphereUniforms {
     // bound by the special-function units (docs/effects/atmosphere.md, "Benchmark").
     vec4 applyNdc;      // xy: 2 / extent, zw: 1 / extent - 1: a pixel's centre in NDC = pixel·xy + zw
     vec4 applySkyView;  // x: 1 / (π - β), y: 1 / β; above the top z: 1 / αg, w: 1 / (αt - αg) (skyHorizon)
-    vec4 applySkyTexel;  // the sky-view LUT's texel-centre mapping unit -> uv: xy: 1 - 1 / size, zw: 0.5 /
-                         // size
-    vec4 applyScale;     // x: 1 / the camera's radius, y: 1 / the storage scale (skyView.w)
-    vec4 applyAp;        // x: 1 / the AP distance, y: the AP's slices, z: 0.5 / slices
+    vec4 applySkyTexel;      // the sky-view LUT's unit -> texel-centre uv: xy: 1 - 1 / size, zw: 0.5 / size
+    vec4 applyScale;         // x: 1 / the camera's radius, y: 1 / the storage scale (skyView.w)
+    vec4 applyAp;            // x: 1 / the AP distance, y: the AP's slices, z: 0.5 / slices
     uvec4 transmittanceLut;  // xy: size, z: steps
     uvec4 msLut;             // xy: size, z: directions per side (n of n×n), w: steps
     uvec4 skyViewLut;        // xy: size, z: steps

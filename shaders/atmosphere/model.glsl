@@ -126,8 +126,8 @@ float skyViewHorizonBeta(float r) {
 // planet's disk, nadir angle φ ∈ [0, αg], αg = asin(ground / r): v = (1 - √(1 - φ/αg))/2, crowded toward
 // its limb; the ring of air beyond it, φ ∈ [αg, αt]: v = (1 + √((φ - αg)/(αt - αg)))/2, crowded toward the
 // ground's limb where the air is densest. u as inside. Directions beyond αt miss the atmosphere (v > 1).
-// The forward mappings (direction -> texel) are the apply pass's, with its per-frame reciprocals.
-// Its inverse: x = cos view zenith, y = cos azimuth.
+// Texel -> x = cos view zenith, y = cos azimuth. Both mappings' forward forms (direction -> texel) are the
+// apply pass's (apply.comp, skyViewLuminance), with its per-frame reciprocals.
 vec2 skyViewSpaceParams(float alphaGround, float alphaTop, vec2 uv) {
     vec2 x = vec2(texelToUnit(uv.x, atmo.skyViewLut.x), texelToUnit(uv.y, atmo.skyViewLut.y));
     float phi;

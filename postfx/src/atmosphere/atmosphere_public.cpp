@@ -11,7 +11,6 @@
 #include <array>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <numbers>
 #include <vector>
 
@@ -43,6 +42,7 @@ constexpr uint32_t kPsiMuS = 32, kPsiR = 12;
 constexpr atmosphere::PsiOptions kPsiOptions{16, 12, 16};
 
 struct PsiTable {
+    Model model;  // what it was built for
     double groundRadius = 0.0, topRadius = 0.0;
     std::vector<dvec3> values;  // [iR · kPsiMuS + iMuS]
 
@@ -59,6 +59,7 @@ struct PsiTable {
 
 PsiTable buildPsiTable(const Model& m) {
     PsiTable t;
+    t.model = m;
     t.groundRadius = m.groundRadius;
     t.topRadius = m.topRadius;
     t.values.resize(std::size_t(kPsiMuS) * kPsiR);
@@ -73,19 +74,13 @@ PsiTable buildPsiTable(const Model& m) {
     return t;
 }
 
-// The table for `m`, built on its first use and kept while the model stays the same (thread-safe): a host
-// that moves the sun every frame pays only the quadrature below (docs/effects/atmosphere.md, "CPU
-// evaluations").
+// The table for `m`, built on its first use and kept while the model stays the same (a few recent models;
+// thread-safe): a host that moves the sun every frame pays only the quadrature below
+// (docs/effects/atmosphere.md, "CPU evaluations").
 std::shared_ptr<const PsiTable> psiTable(const Model& m) {
-    static std::mutex mutex;
-    static Model lastModel;
-    static std::shared_ptr<const PsiTable> last;
-    const std::lock_guard<std::mutex> lock(mutex);
-    if (!last || !(lastModel == m)) {
-        last = std::make_shared<const PsiTable>(buildPsiTable(m));
-        lastModel = m;
-    }
-    return last;
+    static atmosphere::TableCache<PsiTable> cache;
+    return cache.get([&](const PsiTable& t) { return t.model == m; },
+                     [&] { return std::make_shared<const PsiTable>(buildPsiTable(m)); });
 }
 
 // ∫ over a step of length Δ of e^{-σt·s} ds = (1 - e^{-σtΔ})/σt per channel; Δ where σt = 0 (as the

@@ -244,34 +244,6 @@ bool PsiTable::builtWith(const PsiTableOptions& o) const {
            o.psi.directions == options_.psi.directions && o.psi.steps == options_.psi.steps;
 }
 
-namespace {
-
-// A few recent tables per kind, keyed by their model.
-template <class Table>
-struct TableCache {
-    std::mutex mutex;
-    std::vector<std::shared_ptr<const Table>> recent;  // most recent last
-    static constexpr size_t kKept = 4;
-
-    template <class Matches, class Build>
-    std::shared_ptr<const Table> get(const Matches& matches, const Build& build) {
-        const std::lock_guard<std::mutex> lock(mutex);
-        for (size_t i = 0; i < recent.size(); ++i)
-            if (matches(*recent[i])) {
-                std::shared_ptr<const Table> t = recent[i];
-                recent.erase(recent.begin() + std::ptrdiff_t(i));
-                recent.push_back(t);
-                return t;
-            }
-        std::shared_ptr<const Table> t = build();
-        if (recent.size() >= kKept) recent.erase(recent.begin());
-        recent.push_back(t);
-        return t;
-    }
-};
-
-}  // namespace
-
 std::shared_ptr<const TransmittanceTable> sharedTransmittanceTable(const Model& m) {
     static TableCache<TransmittanceTable> cache;
     return cache.get([&](const TransmittanceTable& t) { return t.model() == m; },

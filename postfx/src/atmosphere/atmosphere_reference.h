@@ -8,9 +8,11 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace postfx::atmosphere {
@@ -94,6 +96,32 @@ private:
     PsiTableOptions options_;
     uint32_t muSSize_, heightSize_;
     std::vector<glm::dvec3> psi_;  // muSSize·heightSize, μ_s fastest
+};
+
+// A few recent tables of one kind, keyed by what they were built from (their model): get() returns the
+// kept table that `matches`, or builds one (thread-safe). The shared tables below and the public CPU
+// evaluations' (atmosphere_public.cpp) keep theirs in one each.
+template <class Table>
+struct TableCache {
+    std::mutex mutex;
+    std::vector<std::shared_ptr<const Table>> recent;  // most recent last
+    static constexpr size_t kKept = 4;
+
+    template <class Matches, class Build>
+    std::shared_ptr<const Table> get(const Matches& matches, const Build& build) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        for (size_t i = 0; i < recent.size(); ++i)
+            if (matches(*recent[i])) {
+                std::shared_ptr<const Table> t = recent[i];
+                recent.erase(recent.begin() + std::ptrdiff_t(i));
+                recent.push_back(t);
+                return t;
+            }
+        std::shared_ptr<const Table> t = build();
+        if (recent.size() >= kKept) recent.erase(recent.begin());
+        recent.push_back(t);
+        return t;
+    }
 };
 
 // Tables for `m` (the transmittance table with its default options), built on first use and shared (a few
