@@ -29,8 +29,9 @@ struct AtmosphereView {
 
 // ground_sun30 (camera 300 m up, the sun at 30° off to the side), ground_sunset (sun at 5° ahead), both
 // with the ground plane as geometry up to 30 km (inside the aerial-perspective LUT's default 32 km),
-// space_sun30 (camera 100 km up looking down at the horizon, no geometry: the planet fills half the image),
-// orbit_sun30 (400 km up, the sky-view LUT's space mapping).
+// space_sun30 (camera 105 km up, just above the top, looking down at the horizon, no geometry: the planet
+// fills half the image; the sky-view LUT's sky half between its two spans), orbit_sun30 (400 km up: the sky
+// half spans only the directions that meet the air).
 std::vector<AtmosphereView> atmosphereViews();
 
 // The view's camera for a w×h image: vertical field of view kAtmosphereFovYDeg, reversed Z, near

@@ -31,10 +31,10 @@ std::vector<AtmosphereView> atmosphereViews() {
     std::vector<AtmosphereView> views(4);
     views[0] = {"ground_sun30", 300.0, 5.0, 30.0, 30.0, 30000.0};
     views[1] = {"ground_sunset", 300.0, 5.0, 5.0, 0.0, 30000.0};
-    // 105 km up, just above the top (the sky-view LUT's two mappings blended, both built), the horizon
-    // about 10° below: the camera pitched down to it.
+    // 105 km up, just above the top (the sky-view LUT's sky half between the inside span Z and αt - β),
+    // the horizon about 10° below: the camera pitched down to it.
     views[2] = {"space_sun30", 105000.0, -10.0, 30.0, 40.0, 0.0};
-    // 400 km up (an orbit), the horizon about 20° below: the sky-view LUT's space mapping.
+    // 400 km up (an orbit), the horizon about 20° below: the sky-view LUT's sky half spans αt - β.
     views[3] = {"orbit_sun30", 400000.0, -20.0, 30.0, 40.0, 0.0};
     return views;
 }

@@ -1,8 +1,7 @@
 #version 450
 // Pass 5 of the atmosphere (docs/effects/atmosphere.md, "Composite"): every pixel of the host's color.
 // - Geometry: out = color·T + L·E from the aerial-perspective LUT at the surface's distance.
-// - No geometry: the sky. Luminance from the sky-view LUT: its mapping from inside the atmosphere, its space
-//   mapping, or (just above the top) a blend of both by radii.w; the LUT holds the planet's lit ground too.
+// - No geometry: the sky. Luminance from the sky-view LUT, which holds the planet's lit ground too.
 //   A ray that meets the planet hides what the host drew there; one that does not shows the host's color
 //   (what lies beyond the atmosphere) through the atmosphere's transmittance, plus the sun disk: a uniform
 //   disk of the sun's angular radius and radiance E / solid angle, attenuated the same way.
@@ -16,17 +15,17 @@ layout(local_size_x = kAtmosphereApplyGroupX, local_size_y = kAtmosphereApplyGro
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
 layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
-layout(binding = kAtmosphereBindingSkyView) uniform sampler2DArray skyViewLut;
+layout(binding = kAtmosphereBindingSkyView) uniform sampler2D skyViewLut;
 layout(binding = kAtmosphereBindingApScattering) uniform sampler3D apScattering;
 layout(binding = kAtmosphereBindingApTransmittance) uniform sampler3D apTransmittance;
 layout(binding = kAtmosphereBindingDepth) uniform sampler2D depthTexture;
 #ifdef COLOR_RGBA32F
-layout(binding = kAtmosphereBindingColorIn, rgba32f) uniform readonly image2D colorIn;
-layout(binding = kAtmosphereBindingColorOut, rgba32f) uniform writeonly image2D colorOut;
+layout(binding = kAtmosphereBindingColorIn, rgba32f) uniform restrict readonly image2D colorIn;
+layout(binding = kAtmosphereBindingColorOut, rgba32f) uniform restrict writeonly image2D colorOut;
 const float kColorMax = 3.402823466e38;
 #else
-layout(binding = kAtmosphereBindingColorIn, rgba16f) uniform readonly image2D colorIn;
-layout(binding = kAtmosphereBindingColorOut, rgba16f) uniform writeonly image2D colorOut;
+layout(binding = kAtmosphereBindingColorIn, rgba16f) uniform restrict readonly image2D colorIn;
+layout(binding = kAtmosphereBindingColorOut, rgba16f) uniform restrict writeonly image2D colorOut;
 const float kColorMax = 65504.0;  // largest finite half: never write Inf
 #endif
 
@@ -68,10 +67,11 @@ void aerialPerspective(vec3 x, out vec3 luminance, out vec3 transmittance) {
     transmittance = mix(vec3(1.0), T, first);
 }
 
-// The sky-view LUT's luminance per unit illuminance along unit d, cosView = dot(d, the camera's zenith):
-// layer 0 (the mapping from inside) weighted 1 - radii.w, layer 1 (the space mapping) radii.w. The
-// mappings of model.glsl (skyViewParams, skyViewSpaceParams) forward, with the frame's reciprocals.
+// The sky-view LUT's luminance per unit illuminance along unit d, cosView = dot(d, the camera's zenith): the
+// mapping of model.glsl (skyViewParams) forward, with the frame's reciprocals. Above the horizon
+// v = (1 - √(min(1, (Z - θ)/D)))/2, below it (1 + √((θ - Z)/β))/2.
 vec3 skyViewLuminance(vec3 d, float cosView) {
+    if (cosView > atmo.applyScale.z) return vec3(0.0);  // from above the top, a ray that misses the air
     vec3 viewHorizontal = d - atmo.camera.xyz * (atmo.applyScale.x * cosView);
     float lengthSquared = dot(viewHorizontal, viewHorizontal);
     float cosAzimuth = atmo.sunHorizontal.w != 0.0 && lengthSquared > 1e-12
@@ -79,31 +79,15 @@ vec3 skyViewLuminance(vec3 d, float cosView) {
                            : 1.0;
     float u = sqrt(clamp(0.5 - 0.5 * cosAzimuth, 0.0, 1.0));
     float theta = acos(clamp(cosView, -1.0, 1.0));  // from the zenith
-    float space = atmo.radii.w;
-    vec3 L = vec3(0.0);
-    if (space < 1.0) {
-        // Above the horizon v = (1 - √(1 - θ/Z))/2, below it (1 + √((θ - Z)/β))/2.
-        float v = theta < atmo.skyHorizon.y
-                      ? 0.5 - 0.5 * sqrt(max(0.0, 1.0 - theta * atmo.applySkyView.x))
-                      : 0.5 + 0.5 * sqrt(clamp((theta - atmo.skyHorizon.y) * atmo.applySkyView.y, 0.0, 1.0));
-        vec2 uv = vec2(u, v) * atmo.applySkyTexel.xy + atmo.applySkyTexel.zw;
-        L = (1.0 - space) * textureLod(skyViewLut, vec3(uv, 0.0), 0.0).rgb;
-    }
-    float phi = kAtmospherePi - theta;              // from the nadir
-    if (space > 0.0 && phi <= atmo.skyHorizon.w) {  // else it misses the atmosphere
-        // The planet's disk v = (1 - √(1 - φ/αg))/2, the ring of air (1 + √((φ - αg)/(αt - αg)))/2.
-        float v = phi < atmo.skyHorizon.z
-                      ? 0.5 - 0.5 * sqrt(max(0.0, 1.0 - phi * atmo.applySkyView.z))
-                      : 0.5 + 0.5 * sqrt(clamp((phi - atmo.skyHorizon.z) * atmo.applySkyView.w, 0.0, 1.0));
-        vec2 uv = vec2(u, v) * atmo.applySkyTexel.xy + atmo.applySkyTexel.zw;
-        L += space * textureLod(skyViewLut, vec3(uv, 1.0), 0.0).rgb;
-    }
-    return L * atmo.applyScale.y;
+    float fromHorizon = theta - atmo.skyHorizon.y;
+    float v = 0.5 + 0.5 * sign(fromHorizon) *
+                        sqrt(min(1.0, abs(fromHorizon) *
+                                          (fromHorizon < 0.0 ? atmo.applySkyView.x : atmo.applySkyView.y)));
+    vec2 uv = vec2(u, v) * atmo.applySkyTexel.xy + atmo.applySkyTexel.zw;
+    return textureLod(skyViewLut, uv, 0.0).rgb * atmo.applyScale.y;
 }
 
-void applyPixel(uvec2 pixel, vec2 ndc) {
-    vec4 color = imageLoad(colorIn, ivec2(pixel));
-    float depth = texelFetch(depthTexture, ivec2(pixel), 0).r;
+void applyPixel(uvec2 pixel, vec2 ndc, vec4 color, float depth) {
     bool noGeometry = depth == atmo.skyView.z;
     vec4 p = atmo.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);
     vec3 E = atmo.sun.rgb;
@@ -149,9 +133,18 @@ void main() {
                        gl_WorkGroupID.y * (kAtmosphereApplyGroupY * kAtmosphereApplyRows)) +
                  gl_LocalInvocationID.xy;
     vec2 ndc = vec2(base) * atmo.applyNdc.xy + atmo.applyNdc.zw;  // the pixel centre's
+    // Every row's loads first, then the LUT fetches that depend on them.
+    vec4 colors[kAtmosphereApplyRows];
+    float depths[kAtmosphereApplyRows];
+    for (uint k = 0u; k < kAtmosphereApplyRows; ++k) {
+        ivec2 pixel = ivec2(min(base + uvec2(0u, k * kAtmosphereApplyGroupY), atmo.extent.xy - 1u));
+        colors[k] = imageLoad(colorIn, pixel);
+        depths[k] = texelFetch(depthTexture, pixel, 0).r;
+    }
     for (uint k = 0u; k < kAtmosphereApplyRows; ++k) {
         uvec2 pixel = base + uvec2(0u, k * kAtmosphereApplyGroupY);
         if (all(lessThan(pixel, atmo.extent.xy)))
-            applyPixel(pixel, ndc + vec2(0.0, float(k * kAtmosphereApplyGroupY) * atmo.applyNdc.y));
+            applyPixel(pixel, ndc + vec2(0.0, float(k * kAtmosphereApplyGroupY) * atmo.applyNdc.y), colors[k],
+                       depths[k]);
     }
 }

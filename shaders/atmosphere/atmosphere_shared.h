@@ -37,12 +37,10 @@ PFX_CONST(uint, kAtmosphereBindingDepth, 8);            // sampler2D: host depth
 PFX_CONST(uint, kAtmosphereFlagMultipleScattering, 1u);  // add σs·Ψ (Hillaire eq. 10)
 PFX_CONST(uint, kAtmosphereFlagDepthReversedZ, 2u);
 
-// The sky-view LUT's two mappings (atmosphere.md#high-up-and-in-space), by the camera's altitude as a
-// fraction of the atmosphere's thickness: the mapping from inside (layer 0) up to the top, its space
-// mapping (layer 1) from kAtmosphereSpaceViewMinAltitude up, a linear blend of the two in between (both
-// layers built). Each mapping is continuous in the camera's radius, so the sky has no seam at the top.
+// The sky-view LUT's mapping above the top (atmosphere.md#high-up-and-in-space): the span D of its sky
+// half's zenith angles falls from Z = π - β at the top to αt - β at this fraction of the atmosphere's
+// thickness (linear in the altitude), continuously, so the sky has no seam at the top.
 PFX_CONST(float, kAtmosphereSpaceViewMinAltitude, 1.1f);
-PFX_CONST(uint, kAtmosphereSkyViewLayers, 2);
 
 // Rebuild thresholds (docs/effects/atmosphere.md#frame-plan): the sky-view and aerial-perspective LUTs
 // built for a camera and sun are reused while the camera moved less than kAtmosphereRebuildDistance,
@@ -55,7 +53,7 @@ struct AtmosphereUniforms {
     mat4 clipToView;    // Vulkan clip -> camera-relative world direction (this frame's camera)
     mat4 apClipToView;  // the same for the camera the AP LUT was built for
     mat4 apViewToClip;  // its inverse: camera-relative world -> that camera's clip
-    vec4 radii;         // x: ground, y: top [m], z: top² - ground², w: the space mapping's weight (0..1)
+    vec4 radii;         // x: ground, y: top [m], z: top² - ground²
     vec4 rayleigh;      // rgb: scattering at the ground [1/m], w: 1 / scale height [1/m]
     vec4 mie;           // x: scattering, y: absorption at the ground [1/m], z: 1 / scale height, w: g
     vec4 ozone;         // rgb: absorption at the peak [1/m], w: peak altitude [m]
@@ -69,19 +67,21 @@ struct AtmosphereUniforms {
     // scale of the luminance LUTs (multiple scattering, sky view, aerial perspective): they hold luminance
     // per unit illuminance times this, so that thin and dense atmospheres both stay normal half floats
     vec4 skyView;
-    // The sky-view LUT's per-frame constants at skyView.x's radius r: x: the horizon's angle β from the
-    // nadir, y: π - β (the mapping from inside); above the top z: the planet's angular radius
-    // asin(ground / r), w: the atmosphere's asin(top / r), from the nadir (the space mapping); sunHorizontal
-    // .xyz: the sun's direction across the camera's local horizontal plane (unit; w 0 when the sun is at
-    // the zenith or nadir: every azimuth is the sun's)
+    // The sky-view LUT's mapping at skyView.x's radius r (atmosphere_model.h): x: the horizon's angle β
+    // from the nadir, y: its zenith angle Z = π - β, z: the sky half's span D of zenith angles (Z inside
+    // the atmosphere, falling to αt - β above the top). sunHorizontal.xyz: the sun's direction across the
+    // camera's local horizontal plane (unit; w 0 when the sun is at the zenith or nadir: every azimuth is
+    // the sun's)
     vec4 skyHorizon;
     vec4 sunHorizontal;
     // The apply pass's per-frame constants, so that a pixel multiplies where it would divide: the pass is
     // bound by the special-function units (docs/effects/atmosphere.md, "Benchmark").
-    vec4 applyNdc;      // xy: 2 / extent, zw: 1 / extent - 1: a pixel's centre in NDC = pixel·xy + zw
-    vec4 applySkyView;  // x: 1 / (π - β), y: 1 / β; above the top z: 1 / αg, w: 1 / (αt - αg) (skyHorizon)
-    vec4 applySkyTexel;      // the sky-view LUT's unit -> texel-centre uv: xy: 1 - 1 / size, zw: 0.5 / size
-    vec4 applyScale;         // x: 1 / the camera's radius, y: 1 / the storage scale (skyView.w)
+    vec4 applyNdc;       // xy: 2 / extent, zw: 1 / extent - 1: a pixel's centre in NDC = pixel·xy + zw
+    vec4 applySkyView;   // x: 1 / D, y: 1 / β (skyHorizon)
+    vec4 applySkyTexel;  // the sky-view LUT's unit -> texel-centre uv: xy: 1 - 1 / size, zw: 0.5 / size
+    // x: 1 / the camera's radius, y: 1 / the storage scale (skyView.w), z: the largest cos view zenith
+    // of a ray that meets the atmosphere (-cos αt above the top, 2 inside)
+    vec4 applyScale;
     vec4 applyAp;            // x: 1 / the AP distance, y: the AP's slices, z: 0.5 / slices
     uvec4 transmittanceLut;  // xy: size, z: steps
     uvec4 msLut;             // xy: size, z: directions per side (n of n×n), w: steps

@@ -113,46 +113,20 @@ vec2 multipleScatteringUv(float muS, float r) {
     return vec2(unitToTexel(x, atmo.msLut.x), unitToTexel(y, atmo.msLut.y));
 }
 
-// Sky-view LUT at radius r (Hillaire's non-linear mapping): β = acos(√(r² - ground²)/r) the angle between
-// the nadir and the horizon, Z = π - β; above the horizon v = (1 - √(1 - θ/Z))/2, below it
-// v = (1 + √((θ - Z)/β))/2; u = √((1 - cos φ)/2), φ the azimuth from the sun.
-float skyViewHorizonBeta(float r) {
-    float g = atmo.radii.x;
-    r = max(r, g);
-    return acos(clamp(sqrt(max(0.0, (r - g) * (r + g))) / r, -1.0, 1.0));
-}
-// The sky-view LUT's space mapping, for a camera above the atmosphere (atmosphere.md#high-up-and-in-space):
-// the directions that meet the atmosphere, within the angle αt = asin(top / r) of the nadir, over v. The
-// planet's disk, nadir angle φ ∈ [0, αg], αg = asin(ground / r): v = (1 - √(1 - φ/αg))/2, crowded toward
-// its limb; the ring of air beyond it, φ ∈ [αg, αt]: v = (1 + √((φ - αg)/(αt - αg)))/2, crowded toward the
-// ground's limb where the air is densest. u as inside. Directions beyond αt miss the atmosphere (v > 1).
-// Texel -> x = cos view zenith, y = cos azimuth. Both mappings' forward forms (direction -> texel) are the
-// apply pass's (apply.comp, skyViewLuminance), with its per-frame reciprocals.
-vec2 skyViewSpaceParams(float alphaGround, float alphaTop, vec2 uv) {
-    vec2 x = vec2(texelToUnit(uv.x, atmo.skyViewLut.x), texelToUnit(uv.y, atmo.skyViewLut.y));
-    float phi;
-    if (x.y < 0.5) {
-        float c = 1.0 - 2.0 * x.y;
-        phi = alphaGround * (1.0 - c * c);
-    } else {
-        float c = 2.0 * x.y - 1.0;
-        phi = alphaGround + (alphaTop - alphaGround) * c * c;
-    }
-    return vec2(-cos(phi), 1.0 - 2.0 * x.x * x.x);
-}
-
-// The inverse: x = cos view zenith, y = cos azimuth.
-vec2 skyViewParams(float r, vec2 uv) {
-    float beta = skyViewHorizonBeta(r);
-    float zenithHorizon = kAtmospherePi - beta;
+// The sky-view LUT's mapping (Hillaire's non-linear mapping; atmosphere_model.h, skyViewUnitFromParams)
+// at its radius, from the uniforms' skyHorizon (β the horizon's angle from the nadir, Z = π - β, the sky
+// half's span D): texel -> x = cos view zenith, y = cos azimuth. Above the horizon θ = Z - D·(1 - 2v)²,
+// below it Z + β·(2v - 1)²; cos azimuth from the sun 1 - 2u². The forward form (direction -> texel)
+// is the apply pass's (apply.comp, skyViewLuminance), with its per-frame reciprocals.
+vec2 skyViewParams(vec2 uv) {
     vec2 x = vec2(texelToUnit(uv.x, atmo.skyViewLut.x), texelToUnit(uv.y, atmo.skyViewLut.y));
     float theta;
     if (x.y < 0.5) {
         float c = 1.0 - 2.0 * x.y;
-        theta = zenithHorizon * (1.0 - c * c);
+        theta = atmo.skyHorizon.y - atmo.skyHorizon.z * c * c;
     } else {
         float c = 2.0 * x.y - 1.0;
-        theta = zenithHorizon + beta * c * c;
+        theta = atmo.skyHorizon.y + atmo.skyHorizon.x * c * c;
     }
     return vec2(cos(theta), 1.0 - 2.0 * x.x * x.x);
 }

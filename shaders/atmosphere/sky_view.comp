@@ -1,13 +1,11 @@
 #version 450
 // Pass 3 of the atmosphere (docs/effects/atmosphere.md, "Passes"): the sky-view LUT, Hillaire 2020
 // section 5.3. For the camera's radius and the sun's zenith angle it was built for (AtmosphereUniforms
-// skyView.xy), texel (azimuth from the sun, view zenith) of layer 0 (the mapping from inside the
-// atmosphere) or 1 (the space mapping, by nadir angle) holds the luminance per unit sun illuminance of the
-// view ray to the top or the ground (the lit ground included), `skyViewLut.z` steps spaced quadratically from
-// where the ray enters the atmosphere. Workgroup z is the layer, from `firstLayer` (only the layers the
-// camera's altitude uses). Each texel's steps are split among kAtmosphereSkyViewSplit invocations (z of the
-// workgroup), composed front to back (L = L0 + T0·L1, T = T0·T1): the pass is bound by each ray's chain of
-// dependent fetches, not by work.
+// skyView.xy), texel (azimuth from the sun, view zenith; model.glsl, skyViewParams) holds the luminance per
+// unit sun illuminance of the view ray to the top or the ground (the lit ground included), `skyViewLut.z`
+// steps spaced quadratically from where the ray enters the atmosphere. Each texel's steps are split among
+// kAtmosphereSkyViewSplit invocations (z of the workgroup), composed front to back (L = L0 + T0·L1, T =
+// T0·T1): the pass is bound by each ray's chain of dependent fetches, not by work.
 #extension GL_GOOGLE_include_directive : require
 
 #include "atmosphere/atmosphere_shared.h"
@@ -18,11 +16,7 @@ layout(local_size_x = kAtmosphereGroupSize, local_size_y = kAtmosphereGroupSize,
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
 layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
-layout(binding = kAtmosphereBindingSkyView, rgba16f) uniform writeonly image2DArray skyViewOut;
-layout(push_constant) uniform Push {
-    uint firstLayer;
-}
-pc;
+layout(binding = kAtmosphereBindingSkyView, rgba16f) uniform writeonly image2D skyViewOut;
 
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
@@ -35,7 +29,6 @@ shared vec3 partT[kAtmosphereSkyViewSplit][kAtmosphereGroupSize * kAtmosphereGro
 void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;
     uint part = gl_LocalInvocationID.z;
-    uint layer = pc.firstLayer + gl_WorkGroupID.z;
     uint slot = gl_LocalInvocationID.y * kAtmosphereGroupSize + gl_LocalInvocationID.x;
     bool inside = all(lessThan(texel, atmo.skyViewLut.xy));
     AtmosphereMarch march = AtmosphereMarch(vec3(0.0), vec3(1.0));
@@ -45,8 +38,7 @@ void main() {
     vec3 dir = vec3(0.0, 1.0, 0.0), seg = vec3(0.0);
     if (inside) {
         vec2 uv = (vec2(texel) + 0.5) / vec2(atmo.skyViewLut.xy);
-        vec2 view =
-            layer == 1u ? skyViewSpaceParams(atmo.skyHorizon.z, atmo.skyHorizon.w, uv) : skyViewParams(r, uv);
+        vec2 view = skyViewParams(uv);
         // The local frame: zenith +y, the sun in the x-y plane toward +x.
         float sinView = sqrt(max(0.0, 1.0 - view.x * view.x));
         float sinAzimuth = sqrt(max(0.0, 1.0 - view.y * view.y));
@@ -74,5 +66,5 @@ void main() {
         float nDotL = max(0.0, dot(normalize(q), toSun));
         L += T * sunTransmittanceAt(q, toSun) * nDotL * atmo.albedo.rgb / kAtmospherePi;
     }
-    imageStore(skyViewOut, ivec3(texel, layer), vec4(min(L * atmo.skyView.w, vec3(65504.0)), 1.0));
+    imageStore(skyViewOut, ivec2(texel), vec4(min(L * atmo.skyView.w, vec3(65504.0)), 1.0));
 }

@@ -1,5 +1,6 @@
 #include "atmosphere/atmosphere_effect.h"
 
+#include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_settings.h"
 #include "core/camera_math.h"
 #include "core/temporal.h"
@@ -49,9 +50,8 @@ const core::ComputePipelineDesc kTransmittancePass{
     "atmosphere.transmittance", spirv::atmosphere_transmittance_comp, kTransmittanceBindings};
 const core::ComputePipelineDesc kMultiScatteringPass{
     "atmosphere.multiple_scattering", spirv::atmosphere_multiple_scattering_comp, kMultiScatteringBindings};
-// Push constant: the first layer it builds (sky_view.comp).
 const core::ComputePipelineDesc kSkyViewPass{"atmosphere.sky_view", spirv::atmosphere_sky_view_comp,
-                                             kSkyViewBindings, sizeof(uint32_t)};
+                                             kSkyViewBindings};
 const core::ComputePipelineDesc kApPass{"atmosphere.aerial_perspective",
                                         spirv::atmosphere_aerial_perspective_comp, kApBindings};
 // [rgba32]: the color format.
@@ -138,13 +138,6 @@ double sunZenithAngle(const LutView& v) {
     return angleBetween(v.camera, v.toSun);
 }
 
-// The weight of the sky-view LUT's space mapping for a camera at `radius` (atmosphere_shared.h): 0 up to
-// the top, 1 from kAtmosphereSpaceViewMinAltitude of the thickness, linear in between.
-double spaceMappingWeight(const AtmosphereSettings& s, double radius) {
-    const double fraction = (radius - s.groundRadius) / (double(s.topRadius) - s.groundRadius);
-    return std::clamp((fraction - 1.0) / (gpu::kAtmosphereSpaceViewMinAltitude - 1.0), 0.0, 1.0);
-}
-
 gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth,
                                       const AtmosphereEffect::Views& v, const glm::dvec3& camera) {
     const AtmosphereSettings& s = frame.atmosphere;
@@ -154,10 +147,9 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     u.apViewToClip = glm::mat4(v.aerial.viewToClip);
     u.apClipToView = glm::mat4(glm::inverse(v.aerial.viewToClip));
     const double g = s.groundRadius, t = s.topRadius;
-    // The sky-view LUT's radius (clamped onto the ground) and its mappings' weights.
+    // The sky-view LUT's radius (clamped onto the ground).
     const double skyRadius = std::max(glm::length(v.skyView.camera), g);
-    const double space = spaceMappingWeight(s, skyRadius);
-    u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), float(space));
+    u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), 0.0f);
     u.rayleigh = glm::vec4(s.rayleighScattering, float(1.0 / s.rayleighScaleHeight));
     u.mie = glm::vec4(s.mieScattering, s.mieAbsorption, float(1.0 / s.mieScaleHeight), s.mieAnisotropy);
     u.ozone = glm::vec4(s.ozoneAbsorption, s.ozoneCenterHeight);
@@ -177,15 +169,11 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const double muS = glm::dot(glm::normalize(v.skyView.camera), v.skyView.toSun);
     u.skyView =
         glm::vec4(float(skyRadius), float(muS), depth.reversedZ ? 0.0f : 1.0f, float(lutStorageScale(s)));
-    // The sky-view LUT's horizons at its radius: from inside β and π - β; above the top the planet's and
-    // the atmosphere's angular radii from the nadir (the space mapping).
-    const double beta = std::acos(
-        std::clamp(std::sqrt(std::max(0.0, (skyRadius - g) * (skyRadius + g))) / skyRadius, -1.0, 1.0));
-    u.skyHorizon = glm::vec4(float(beta), float(M_PI - beta), 0.0f, 0.0f);
-    if (skyRadius > t) {
-        u.skyHorizon.z = float(std::asin(g / skyRadius));
-        u.skyHorizon.w = float(std::asin(t / skyRadius));
-    }
+    // The sky-view LUT's mapping at its radius (atmosphere_model.h, skyViewSkySpan): β, Z = π - β and the
+    // sky half's span D.
+    const Model model = modelFrom(s);
+    const double beta = skyViewHorizonBeta(model, skyRadius), span = skyViewSkySpan(model, skyRadius);
+    u.skyHorizon = glm::vec4(float(beta), float(M_PI - beta), float(span), 0.0f);
     const glm::dvec3 up = glm::normalize(camera);
     const glm::dvec3 sunAcross = toSun - up * glm::dot(toSun, up);
     const double across = glm::length(sunAcross);
@@ -202,11 +190,14 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const glm::dvec2 extent(std::max(1u, frame.color.extent.width), std::max(1u, frame.color.extent.height));
     u.applyNdc = glm::vec4(glm::vec2(2.0 / extent), glm::vec2(1.0 / extent - 1.0));
     const auto inverse = [](double x) { return x > 0.0 ? float(1.0 / x) : 0.0f; };
-    u.applySkyView = glm::vec4(inverse(M_PI - beta), inverse(beta), inverse(u.skyHorizon.z),
-                               inverse(double(u.skyHorizon.w) - double(u.skyHorizon.z)));
+    u.applySkyView = glm::vec4(inverse(span), inverse(beta), 0.0f, 0.0f);
     const glm::dvec2 skySize(std::max(1u, s.skyViewLutSize.x), std::max(1u, s.skyViewLutSize.y));
     u.applySkyTexel = glm::vec4(glm::vec2(1.0 - 1.0 / skySize), glm::vec2(0.5 / skySize));
-    u.applyScale = glm::vec4(inverse(glm::length(camera)), inverse(lutStorageScale(s)), 0.0f, 0.0f);
+    // z: the largest μ of a view ray that meets the atmosphere: -cos αt = -√(r² - top²) / r above the top,
+    // none (2) inside it.
+    const double radius = glm::length(camera);
+    const float missCos = radius > t ? float(-std::sqrt((radius - t) * (radius + t)) / radius) : 2.0f;
+    u.applyScale = glm::vec4(inverse(radius), inverse(lutStorageScale(s)), missCos, 0.0f);
     const double slices = std::max(1u, s.aerialPerspectiveLutSize.z);
     u.applyAp = glm::vec4(inverse(s.aerialPerspectiveDistance), float(slices), float(0.5 / slices), 0.0f);
     u.flags = glm::uvec4((s.multipleScattering ? gpu::kAtmosphereFlagMultipleScattering : 0u) |
@@ -325,16 +316,12 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
                   SamplerKind::LinearClamp);
     };
 
-    // The sky-view LUT's layers this camera's altitude uses: the mapping from inside (0), the space
-    // mapping (1), or both; the build key holds the camera's radius, so a change of layers rebuilds.
-    const double space = u.radii.w;
-    const uint32_t firstLayer = space < 1.0 ? 0u : 1u, layers = space > 0.0 && space < 1.0 ? 2u : 1u;
-    core::ImageDesc skyViewDesc = lutDesc(VK_IMAGE_TYPE_2D, s.skyViewLutSize.x, s.skyViewLutSize.y);
-    skyViewDesc.layers = gpu::kAtmosphereSkyViewLayers;
-    const core::ImageRef skyView = b.persistentImage(kSkyViewLut, skyViewDesc, viewKey(v.skyView));
-    b.pass(kSkyViewPass, groupsFor(s.skyViewLutSize.x), groupsFor(s.skyViewLutSize.y), layers);
+    // The sky-view LUT: its mapping follows the camera's radius (skyViewSkySpan), which its key holds.
+    const core::ImageRef skyView = b.persistentImage(
+        kSkyViewLut, lutDesc(VK_IMAGE_TYPE_2D, s.skyViewLutSize.x, s.skyViewLutSize.y), viewKey(v.skyView));
+    b.pass(kSkyViewPass, groupsFor(s.skyViewLutSize.x), groupsFor(s.skyViewLutSize.y), 1);
     bindLuts();
-    b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::StorageWrite).push(&firstLayer, sizeof firstLayer);
+    b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::StorageWrite);
 
     const UVec3 ap = s.aerialPerspectiveLutSize;
     const core::ImageDesc apDesc = lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z);

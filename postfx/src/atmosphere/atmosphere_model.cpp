@@ -2,6 +2,8 @@
 // "Parameterisations").
 #include "atmosphere/atmosphere_model.h"
 
+#include "atmosphere/atmosphere_shared.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -170,23 +172,32 @@ SunCosineRadius multipleScatteringParamsFromUv(const Model& m, const glm::dvec2&
     return {2.0 * x - 1.0, m.groundRadius + y * (m.topRadius - m.groundRadius)};
 }
 
-namespace {
-
-// β: angle between the nadir and the horizon seen from radius r (>= ground).
-double horizonBeta(const Model& m, double r) {
+double skyViewHorizonBeta(const Model& m, double r) {
     r = std::max(r, m.groundRadius);
     return std::acos(std::clamp(safeSqrt(r * r - m.groundRadius * m.groundRadius) / r, -1.0, 1.0));
 }
 
-}  // namespace
+double skyViewSpaceWeight(const Model& m, double r) {
+    const double fraction = (r - m.groundRadius) / (m.topRadius - m.groundRadius);
+    return std::clamp((fraction - 1.0) / (gpu::kAtmosphereSpaceViewMinAltitude - 1.0), 0.0, 1.0);
+}
+
+double skyViewSkySpan(const Model& m, double r) {
+    r = std::max(r, m.groundRadius);
+    const double beta = skyViewHorizonBeta(m, r), zenithHorizon = kPi - beta;
+    const double w = skyViewSpaceWeight(m, r);
+    if (w <= 0.0) return zenithHorizon;
+    const double alphaTop = std::asin(std::min(1.0, m.topRadius / r));
+    return (1.0 - w) * zenithHorizon + w * (alphaTop - beta);
+}
 
 glm::dvec2 skyViewUnitFromParams(const Model& m, double r, const SkyViewParams& p) {
-    const double beta = horizonBeta(m, r);
+    const double beta = skyViewHorizonBeta(m, r), span = skyViewSkySpan(m, r);
     const double zenithHorizon = kPi - beta;
     const double theta = std::acos(std::clamp(p.cosViewZenith, -1.0, 1.0));
     double v;
     if (theta < zenithHorizon) {
-        v = 0.5 * (1.0 - std::sqrt(clamp01(1.0 - theta / zenithHorizon)));
+        v = 0.5 * (1.0 - std::sqrt(clamp01((zenithHorizon - theta) / span)));
     } else {
         v = 0.5 + 0.5 * std::sqrt(clamp01((theta - zenithHorizon) / beta));
     }
@@ -195,12 +206,12 @@ glm::dvec2 skyViewUnitFromParams(const Model& m, double r, const SkyViewParams& 
 }
 
 SkyViewParams skyViewParamsFromUnit(const Model& m, double r, const glm::dvec2& unit) {
-    const double beta = horizonBeta(m, r);
+    const double beta = skyViewHorizonBeta(m, r), span = skyViewSkySpan(m, r);
     const double zenithHorizon = kPi - beta;
     SkyViewParams p;
     if (unit.y < 0.5) {
-        const double c = 1.0 - 2.0 * unit.y;  // √(1 - θ/Z)
-        p.cosViewZenith = std::cos(zenithHorizon * (1.0 - c * c));
+        const double c = 1.0 - 2.0 * unit.y;  // √((Z - θ)/D)
+        p.cosViewZenith = std::cos(zenithHorizon - span * c * c);
     } else {
         const double c = 2.0 * unit.y - 1.0;  // √((θ - Z)/β)
         p.cosViewZenith = std::cos(zenithHorizon + beta * c * c);

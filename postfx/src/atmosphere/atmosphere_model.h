@@ -125,10 +125,17 @@ SunCosineRadius multipleScatteringParamsFromUv(const Model& m, const glm::dvec2&
 
 // Sky-view LUT at radius r (Hillaire's SkyViewLutParamsToUv, NONLINEARSKYVIEWLUT). β = acos(√(r² -
 // ground²)/r) is the angle between the nadir and the horizon, Z = π - β the horizon's zenith angle, θ the
-// view's zenith angle. Above the horizon (θ < Z): v = (1 - √(1 - θ/Z))/2; at or below it:
-// v = (1 + √((θ - Z)/β))/2: half the texels each side, crowded toward the horizon (v = 0.5). Azimuth φ
-// between the view's and the sun's horizontal directions, cos φ: u = √((1 - cos φ)/2) (sun side at u = 0).
-// r is clamped to >= ground. Then texel centres.
+// view's zenith angle. Above the horizon (θ < Z): v = (1 - √(min(1, (Z - θ)/D)))/2; at or below it:
+// v = (1 + √((θ - Z)/β))/2: half the texels each side, crowded toward the horizon (v = 0.5). D is the sky
+// half's span of zenith angles (skyViewSkySpan): Z inside the atmosphere (the paper's mapping); from above
+// the top only directions within αt = asin(top/r) of the nadir meet the air, so D falls to αt - β
+// (atmosphere.md#high-up-and-in-space). Azimuth φ between the view's and the sun's horizontal directions,
+// cos φ: u = √((1 - cos φ)/2) (sun side at u = 0). r is clamped to >= ground. Then texel centres.
+double skyViewHorizonBeta(const Model& m, double r);
+// The weight of the space span in D: 0 up to the top, 1 from kAtmosphereSpaceViewMinAltitude of the
+// thickness up, linear in the altitude between. D = (1 - w)·Z + w·(αt - β).
+double skyViewSpaceWeight(const Model& m, double r);
+double skyViewSkySpan(const Model& m, double r);
 struct SkyViewParams {
     double cosViewZenith = 0.0, cosAzimuth = 0.0;
 };
