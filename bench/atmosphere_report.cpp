@@ -20,10 +20,10 @@ bool isMoving(AtmosphereSituation s) {
 
 std::string status(const AtmosphereTarget& t) {
     if (!t.row || !std::isfinite(t.measured())) return "not measured";
-    const std::string text = formatNumber(t.measured(), 3) + " ms";
+    const std::string text = formatNumber(t.measured(), 4) + " ms";
     if (t.met()) return "**PASS** (" + text + " ≤ " + formatNumber(t.limit, 3) + " ms)";
-    return "**MISS** by " + formatNumber(std::round((t.measured() / t.limit - 1.0) * 100.0), 3) + "% (" +
-           text + " > " + formatNumber(t.limit, 3) + " ms)";
+    return "**MISS** by " + percentOver(t.measured(), t.limit) + "% (" + text + " > " +
+           formatNumber(t.limit, 3) + " ms)";
 }
 
 // "apply 30/30, sky_view 30/30": how many timed frames recorded each pass.

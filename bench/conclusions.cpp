@@ -67,8 +67,7 @@ std::string overFloor(const Result& r) {
 std::string atMost(double value, double limit) {
     if (!std::isfinite(value)) return "–";
     if (value <= limit) return "**met**";
-    if (value < 2.0 * limit)
-        return "**missed** by " + formatNumber(std::round((value / limit - 1.0) * 100.0), 3) + "%";
+    if (value < 2.0 * limit) return "**missed** by " + percentOver(value, limit) + "%";
     return "**missed**: " + formatNumber(value / limit, 3) + "× the limit";
 }
 

@@ -48,8 +48,8 @@ std::string status(const FroxelTarget& t) {
     if (t.met())
         return "**PASS** (" + formatNumber(t.measured, 3) + " " + t.unit + " ≤ " + formatNumber(t.limit, 3) +
                " " + t.unit + ")";
-    return "**MISS** by " + formatNumber(std::round((t.measured / t.limit - 1.0) * 100.0), 3) + "% (" +
-           formatNumber(t.measured, 3) + " " + t.unit + " > " + formatNumber(t.limit, 3) + " " + t.unit + ")";
+    return "**MISS** by " + percentOver(t.measured, t.limit) + "% (" + formatNumber(t.measured, 3) + " " +
+           t.unit + " > " + formatNumber(t.limit, 3) + " " + t.unit + ")";
 }
 
 std::string gridText(const postfx::UVec3& g) {

@@ -85,6 +85,10 @@ std::string formatNumber(double value, int digits) {
     return text;
 }
 
+std::string percentOver(double value, double limit) {
+    return formatNumber((value / limit - 1.0) * 100.0, 2);
+}
+
 std::string shortPass(const std::string& name) {
     const size_t dot = name.find('.');
     return dot == std::string::npos ? name : name.substr(dot + 1);

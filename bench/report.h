@@ -25,7 +25,10 @@ bool writeSvg(const std::string& path, const RunInfo& info, const std::vector<Re
 
 // Helpers shared by the writers.
 std::string formatNumber(double value, int digits = 4);  // "" for NaN
-std::string percent(double fraction, int digits = 3);    // "1.23%"; "–" when not finite
+// How far `value` is over `limit`, in percent, two significant digits ("0.15", "7.3"): a small miss is not
+// rounded to "0".
+std::string percentOver(double value, double limit);
+std::string percent(double fraction, int digits = 3);  // "1.23%"; "–" when not finite
 std::string xmlEscape(const std::string& text);
 // A pass's name without its effect's prefix: "apply" for "atmosphere.apply".
 std::string shortPass(const std::string& name);
