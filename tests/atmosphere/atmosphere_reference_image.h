@@ -21,16 +21,24 @@ struct AtmosphereReferenceQuality {
     uint32_t psiDirections = 64;
 };
 
-inline std::vector<float> atmosphereReferenceImage(const postfx::FrameInfo& frame, const FogHarnessImages& im,
-                                                   const AtmosphereReferenceQuality& quality = {}) {
-    postfx::reference::AtmosphereInputs in;
+// The fields every reference's inputs share (postfx::reference::FogInputs, FroxelFogInputs,
+// AtmosphereInputs): a test's images (reversed Z) with `color` over them, and the frame's camera and sun.
+template <class Inputs>
+void setReferenceImages(Inputs& in, const postfx::FrameInfo& frame, const FogHarnessImages& im,
+                        const std::vector<float>& color) {
     in.width = im.width;
     in.height = im.height;
-    in.color = im.color;
+    in.color = color;
     in.depth = im.depth;
     in.depthConvention.reversedZ = true;
     in.camera = frame.camera;
     in.sun = frame.sun;
+}
+
+inline std::vector<float> atmosphereReferenceImage(const postfx::FrameInfo& frame, const FogHarnessImages& im,
+                                                   const AtmosphereReferenceQuality& quality = {}) {
+    postfx::reference::AtmosphereInputs in;
+    setReferenceImages(in, frame, im, im.color);
     in.settings = frame.atmosphere;
     in.stepsPerPixel = quality.stepsPerPixel;
     in.psiTableMuS = quality.psiTableSize;

@@ -447,25 +447,13 @@ TEST_F(AtmosphereGpuTest, FogsLitThroughTheAtmosphereMatchTheirReferences) {
             atmosphere.enabled = throughAtmosphere;
             if (froxel) {
                 postfx::reference::FroxelFogInputs in;
-                in.width = im.width;
-                in.height = im.height;
-                in.color = afterSky.color;
-                in.depth = im.depth;
-                in.depthConvention.reversedZ = true;
-                in.camera = frame.camera;
-                in.sun = frame.sun;
+                setReferenceImages(in, frame, im, afterSky.color);
                 in.settings = frame.froxelFog;
                 in.atmosphere = atmosphere;
                 return postfx::reference::renderFroxelFog(in, result);
             }
             postfx::reference::FogInputs in;
-            in.width = im.width;
-            in.height = im.height;
-            in.color = afterSky.color;
-            in.depth = im.depth;
-            in.depthConvention.reversedZ = true;
-            in.camera = frame.camera;
-            in.sun = frame.sun;
+            setReferenceImages(in, frame, im, afterSky.color);
             in.settings = frame.fog;
             in.atmosphere = atmosphere;
             return postfx::reference::renderFog(in, result);
