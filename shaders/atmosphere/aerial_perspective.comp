@@ -1,12 +1,12 @@
 #version 450
 // Pass 4 of the atmosphere (docs/effects/atmosphere.md, "Passes"): the aerial-perspective LUT, Hillaire
 // 2020 section 5.4. A volume over the frustum of the camera it was built for (apClipToView, apCamera):
-// texel (x, y, k) holds the in-scattered luminance per unit sun illuminance and the transmittance from
-// where the ray enters the atmosphere (the camera, inside it) to the end of slice k, at depth
-// (k + 1)/slices · distance, with apLut.w uniform steps per slice (the reference code's 2), through the
-// planet's sphere: the host's geometry ends a geometry pixel's ray, so the march goes on below the ground
-// (in the ground's medium) to where the ray leaves the top, and terrain below the sphere (a flat world's
-// far plane) gets its aerial perspective.
+// texel (x, y, k) holds the in-scattered luminance per unit sun illuminance (a 3D image) and the
+// transmittance (layer k of a 2D array) from where the ray enters the atmosphere (the camera, inside it) to
+// the end of slice k, at depth (k + 1)/slices · distance, with apLut.w uniform steps per slice (the
+// reference code's 2), through the planet's sphere: the host's geometry ends a geometry pixel's ray, so the
+// march goes on below the ground (in the ground's medium) to where the ray leaves the top, and terrain below
+// the sphere (a flat world's far plane) gets its aerial perspective.
 // One workgroup per (x, y): each invocation marches its slices alone, then a scan composes them front to
 // back ((L, T)_k = (L, T)_{k-1} ∘ (L_k, T_k), L = L0 + T0·L1, T = T0·T1; Hillis–Steele), so no invocation
 // marches more than its slices' steps (the same steps as marching from the camera to each slice's end).
@@ -20,7 +20,7 @@ layout(local_size_x = kAtmosphereApGroupSize) in;
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
 layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
 layout(binding = kAtmosphereBindingApScattering, rgba16f) uniform writeonly image3D apScatteringOut;
-layout(binding = kAtmosphereBindingApTransmittance, rgba16f) uniform writeonly image3D apTransmittanceOut;
+layout(binding = kAtmosphereBindingApTransmittance, rgba16f) uniform writeonly image2DArray apTransmittanceOut;
 
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
@@ -70,6 +70,6 @@ void main() {
     }
     for (uint k = lane; k < slices; k += kAtmosphereApGroupSize) {
         imageStore(apScatteringOut, ivec3(xy, k), vec4(min(sharedL[k] * atmo.skyView.w, vec3(65504.0)), 1.0));
-        imageStore(apTransmittanceOut, ivec3(xy, k), vec4(sharedT[k], 1.0));
+        imageStore(apTransmittanceOut, ivec3(xy, k), vec4(sharedT[k], 1.0));  // layer k
     }
 }

@@ -83,8 +83,9 @@ struct AtmosphereSettings {
 // luminance per unit sun illuminance times a storage scale (docs/effects/atmosphere.md, "Passes").
 inline constexpr ResourceName kAtmosphereTransmittanceLut{"atmosphere.transmittance"};
 inline constexpr ResourceName kAtmosphereMultipleScatteringLut{"atmosphere.multiple_scattering"};
-// The sky-view LUT is a 2D array of two layers: the mapping from inside the atmosphere, then the space
-// mapping (only the layers the camera's altitude uses are built; docs/effects/atmosphere.md).
+// The transmittance and multiple-scattering LUTs and the sky-view LUT are 2D images; the aerial
+// perspective's in-scattering is a 3D image and its transmittance a 2D array of a layer per slice (slice k's
+// end in layer k).
 inline constexpr ResourceName kAtmosphereSkyViewLut{"atmosphere.sky_view"};
 inline constexpr ResourceName kAtmosphereAerialPerspectiveLut{"atmosphere.aerial_perspective"};
 inline constexpr ResourceName kAtmosphereAerialTransmittanceLut{"atmosphere.aerial_transmittance"};

@@ -199,7 +199,8 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const float missCos = radius > t ? float(-std::sqrt((radius - t) * (radius + t)) / radius) : 2.0f;
     u.applyScale = glm::vec4(inverse(radius), inverse(lutStorageScale(s)), missCos, 0.0f);
     const double slices = std::max(1u, s.aerialPerspectiveLutSize.z);
-    u.applyAp = glm::vec4(inverse(s.aerialPerspectiveDistance), float(slices), float(0.5 / slices), 0.0f);
+    u.applyAp = glm::vec4(inverse(s.aerialPerspectiveDistance), float(slices), float(0.5 / slices),
+                          float(s.aerialPerspectiveDistance / slices));
     u.flags = glm::uvec4((s.multipleScattering ? gpu::kAtmosphereFlagMultipleScattering : 0u) |
                              (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u),
                          0u, 0u, 0u);
@@ -324,10 +325,14 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::StorageWrite);
 
     const UVec3 ap = s.aerialPerspectiveLutSize;
-    const core::ImageDesc apDesc = lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z);
+    // The in-scattering is filtered across slices (a 3D image); the transmittance is read at one slice's end
+    // and extended analytically (apply.comp, aerialPerspective), so it is a 2D array of a layer per slice.
+    core::ImageDesc apTransmittanceDesc = lutDesc(VK_IMAGE_TYPE_2D, ap.x, ap.y);
+    apTransmittanceDesc.layers = ap.z;
     const uint64_t apKey = viewKey(v.aerial);
-    const core::ImageRef apScattering = b.persistentImage(kApScatteringLut, apDesc, apKey);
-    const core::ImageRef apTransmittance = b.persistentImage(kApTransmittanceLut, apDesc, apKey);
+    const core::ImageRef apScattering =
+        b.persistentImage(kApScatteringLut, lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z), apKey);
+    const core::ImageRef apTransmittance = b.persistentImage(kApTransmittanceLut, apTransmittanceDesc, apKey);
     b.pass(kApPass, ap.x, ap.y, 1);
     bindLuts();
     b.bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::StorageWrite)

@@ -18,7 +18,7 @@ inline constexpr core::ResourceId kTransmittanceLut{"atmosphere.transmittance"};
 inline constexpr core::ResourceId kMultipleScatteringLut{"atmosphere.multiple_scattering"};  // rgba16f 2D
 inline constexpr core::ResourceId kSkyViewLut{"atmosphere.sky_view"};                 // rgba16f 2D, 2 layers
 inline constexpr core::ResourceId kApScatteringLut{"atmosphere.aerial_perspective"};  // rgba16f 3D
-inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmittance"};  // rgba16f 3D
+inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmittance"};  // rgba16f 2D array
 
 // For an effect lit by the sun (docs/effects/atmosphere.md, "The sun for every effect"): the transmittance
 // LUT the atmosphere declared earlier this frame, sampled; with the atmosphere off, `standIn` bound only
