@@ -28,7 +28,7 @@ PFX_CONST(uint, kAtmosphereBindingMultiScattering, 2);  // rgba16f 2D: Ψ per un
 // layer 1 the space mapping (model.glsl; atmosphere.md#high-up-and-in-space)
 PFX_CONST(uint, kAtmosphereBindingSkyView, 3);
 PFX_CONST(uint, kAtmosphereBindingApScattering, 4);     // rgba16f 3D: AP in-scattering per unit illuminance
-PFX_CONST(uint, kAtmosphereBindingApTransmittance, 5);  // rgba16f 2D array, a layer per slice: AP transmittance
+PFX_CONST(uint, kAtmosphereBindingApTransmittance, 5);  // rgba16f 2D array, layer k = slice k: AP T
 PFX_CONST(uint, kAtmosphereBindingColorIn, 6);          // storage image: host color (read)
 PFX_CONST(uint, kAtmosphereBindingColorOut, 7);         // storage image: output
 PFX_CONST(uint, kAtmosphereBindingDepth, 8);            // sampler2D: host depth (texelFetch)
@@ -82,7 +82,7 @@ struct AtmosphereUniforms {
     // x: 1 / the camera's radius, y: 1 / the storage scale (skyView.w), z: the largest cos view zenith
     // of a ray that meets the atmosphere (-cos αt above the top, 2 inside)
     vec4 applyScale;
-    vec4 applyAp;            // x: 1 / the AP distance, y: the AP's slices, z: 0.5 / slices, w: slice length [m]
+    vec4 applyAp;  // x: 1 / the AP distance, y: the AP's slices, z: 0.5 / slices, w: slice length [m]
     uvec4 transmittanceLut;  // xy: size, z: steps
     uvec4 msLut;             // xy: size, z: directions per side (n of n×n), w: steps
     uvec4 skyViewLut;        // xy: size, z: steps
