@@ -20,7 +20,8 @@ layout(local_size_x = kAtmosphereApGroupSize) in;
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
 layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
 layout(binding = kAtmosphereBindingApScattering, rgba16f) uniform writeonly image3D apScatteringOut;
-layout(binding = kAtmosphereBindingApTransmittance, rgba16f) uniform writeonly image2DArray apTransmittanceOut;
+layout(binding = kAtmosphereBindingApTransmittance,
+       rgba16f) uniform writeonly image2DArray apTransmittanceOut;
 
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
