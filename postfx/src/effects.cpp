@@ -4,6 +4,7 @@
 #include "effects.h"
 
 #include "atmosphere/atmosphere_effect.h"
+#include "clouds/clouds_effect.h"
 #include "fog/fog_effect.h"
 #include "froxel_fog/froxel_effect.h"
 
@@ -13,6 +14,8 @@ std::vector<std::unique_ptr<core::Effect>> makeEffects(const core::Gpu& gpu) {
     std::vector<std::unique_ptr<core::Effect>> effects;
     // sky and atmosphere (docs/effects/atmosphere.md): the farthest, first
     effects.push_back(std::make_unique<atmosphere::AtmosphereEffect>(gpu));
+    // volumetric clouds (docs/effects/clouds.md): in front of the sky, behind the fogs
+    effects.push_back(std::make_unique<clouds::CloudsEffect>(gpu));
     effects.push_back(std::make_unique<fog::FogEffect>(gpu));  // ray-marched fog (docs/effects/fog.md)
     // froxel fog (docs/effects/froxel-fog.md); never in one frame with the ray-marched fog
     effects.push_back(std::make_unique<froxel_fog::FroxelFogEffect>(gpu));

@@ -24,8 +24,8 @@ PFX_CONST(uint, kAtmosphereMsGroupSize, 64);
 PFX_CONST(uint, kAtmosphereBindingUniforms, 0);         // uniform buffer: AtmosphereUniforms
 PFX_CONST(uint, kAtmosphereBindingTransmittance, 1);    // rgba16f 2D: T to the top (r, μ)
 PFX_CONST(uint, kAtmosphereBindingMultiScattering, 2);  // rgba16f 2D: Ψ per unit illuminance (μs, r)
-// rgba16f 2D array: sky luminance per unit illuminance; layer 0 the mapping from inside the atmosphere,
-// layer 1 the space mapping (model.glsl; atmosphere.md#high-up-and-in-space)
+// rgba16f 2D: sky luminance per unit illuminance, one mapping for every altitude (model.glsl,
+// skyViewParams; atmosphere.md#high-up-and-in-space)
 PFX_CONST(uint, kAtmosphereBindingSkyView, 3);
 PFX_CONST(uint, kAtmosphereBindingApScattering, 4);     // rgba16f 3D: AP in-scattering per unit illuminance
 PFX_CONST(uint, kAtmosphereBindingApTransmittance, 5);  // rgba16f 2D array, layer k = slice k: AP T

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <postfx/atmosphere.h>
+#include <postfx/clouds.h>
 #include <postfx/export.h>
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>
@@ -95,6 +96,8 @@ struct FrameInfo {
     // Sky and atmosphere (docs/effects/atmosphere.md): with it on, sun.illuminance is the illuminance
     // outside the atmosphere, and every effect attenuates it by the atmosphere's transmittance.
     AtmosphereSettings atmosphere;
+    // Volumetric clouds (docs/effects/clouds.md): in front of the sky, behind nearer geometry.
+    CloudSettings clouds;
     FogSettings fog;              // ray-marched fog (docs/effects/fog.md)
     FroxelFogSettings froxelFog;  // froxel fog (docs/effects/froxel-fog.md); not together with `fog`
 };

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <postfx/atmosphere.h>
+#include <postfx/clouds.h>
 #include <postfx/context.h>
 #include <postfx/fog.h>
 #include <postfx/frame_plan.h>

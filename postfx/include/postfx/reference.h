@@ -4,6 +4,7 @@
 #pragma once
 
 #include <postfx/atmosphere.h>
+#include <postfx/clouds.h>
 #include <postfx/export.h>
 #include <postfx/fog.h>
 #include <postfx/froxel_fog.h>
@@ -119,6 +120,39 @@ struct AtmosphereInputs {
 // color and the disk). Geometry pixels: color·T + in-scattered light from the camera to the surface. With
 // settings.enabled false `out` is the color. InvalidArgument naming the field for bad inputs.
 POSTFX_API Status renderAtmosphere(const AtmosphereInputs& inputs, std::vector<float>& out);
+
+// Everything the clouds' reference (docs/effects/clouds.md, "Reference") reads.
+struct CloudInputs {
+    uint32_t width = 0, height = 0;
+    std::span<const float> color;  // RGBA, width·height·4, row-major, top row first
+    std::span<const float> depth;  // width·height depth values as the GPU samples them
+    DepthConvention depthConvention;
+
+    CameraInput camera;
+    SunInput sun;  // outside the atmosphere with it on
+    Vec3 ambient{0.0f};
+    double timeSeconds = 0.0;
+    CloudSettings settings;
+    // With atmosphere.enabled the layer follows the planet, the sun reaching each sample is attenuated by
+    // the atmosphere's transmittance (a fine table in double), and the clouds are seen through the air in
+    // front of them: the atmosphere's in-scattering and transmittance, integrated in double from the camera
+    // to the clouds' extinction-weighted mean distance (as reference (a) integrates a surface's).
+    AtmosphereSettings atmosphere;
+
+    // The noise textures' texels in [0, 1] (x fastest, then y, then z): baseSize³ and detailSize³ of them,
+    // as the GPU generated them (read back) or as the CPU port generates them (empty: generated here from
+    // the settings' sizes and seed, quantized to 8 bits as the GPU stores them).
+    std::span<const float> baseNoise, detailNoise;
+
+    uint32_t stepsPerPixel = 1024;  // midpoint samples along each view ray's part inside the clouds; >= 1
+    uint32_t lightSteps = 256;      // midpoint samples of each sample's march toward the sun; >= 1
+    uint32_t threads = 0;           // 0: all hardware threads
+};
+
+// Renders the clouds' model over `inputs.color` into `out` (RGBA, color's layout; alpha passes through),
+// in double, per pixel with fine steps and a fine march toward the sun (no jitter, no early exit). With
+// settings.enabled false `out` is the color. InvalidArgument naming the field for bad inputs.
+POSTFX_API Status renderClouds(const CloudInputs& inputs, std::vector<float>& out);
 
 // The local-light terms of the model (docs/effects/froxel-fog.md#local-lights), exposed for tests.
 // Illuminance [lx] at world position `x` from `light`, before the phase function:

@@ -174,6 +174,13 @@ ImageRef FrameBuilder::find(const ResourceId& id) const {
     return {};
 }
 
+BufferRef FrameBuilder::findUniforms(const ResourceId& id) const {
+    for (size_t i = 0; i < f_.resources.size(); ++i)
+        if (f_.resources[i].id == &id && f_.resources[i].kind == ResourceDecl::Kind::Uniform)
+            return {uint16_t(i)};
+    return {};
+}
+
 BufferRef FrameBuilder::uniforms(const ResourceId& id, const void* data, uint32_t bytes) {
     ResourceDecl r;
     r.kind = ResourceDecl::Kind::Uniform;

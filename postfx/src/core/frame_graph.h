@@ -145,6 +145,8 @@ public:
     ImageRef historyImage(const ResourceId& id, const ImageDesc& desc);
     // An image another effect declared earlier this frame (invalid if it did not).
     ImageRef find(const ResourceId& id) const;
+    // Uniform data another effect declared earlier this frame (invalid if it did not).
+    BufferRef findUniforms(const ResourceId& id) const;
     // Uniform data for this frame: `bytes` copied into a ring of framesInFlight slots.
     BufferRef uniforms(const ResourceId& id, const void* data, uint32_t bytes);
 

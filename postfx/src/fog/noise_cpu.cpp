@@ -145,16 +145,31 @@ float noiseTexel(uint32_t x, uint32_t y, uint32_t z, uint32_t size, uint32_t see
     return std::clamp(remap(perlinWorley, gpu::kNoiseRangeLow, 1.0f, 0.0f, 1.0f), 0.0f, 1.0f);
 }
 
-std::vector<uint8_t> generateNoiseCpu(uint32_t size, uint32_t seed) {
+float worleyTexel(uint32_t x, uint32_t y, uint32_t z, uint32_t size, uint32_t seed) {
+    return worleyFbm(x, y, z, size, seed);
+}
+
+namespace {
+template <class Texel>
+std::vector<uint8_t> quantized(uint32_t size, uint32_t seed, const Texel& texel) {
     std::vector<uint8_t> texels(size_t(size) * size * size);
     size_t i = 0;
     for (uint32_t z = 0; z < size; ++z)
         for (uint32_t y = 0; y < size; ++y)
             for (uint32_t x = 0; x < size; ++x) {
-                const float v = std::clamp(noiseTexel(x, y, z, size, seed), 0.0f, 1.0f);
+                const float v = std::clamp(texel(x, y, z, size, seed), 0.0f, 1.0f);
                 texels[i++] = uint8_t(std::floor(v * 255.0f + 0.5f));
             }
     return texels;
+}
+}  // namespace
+
+std::vector<uint8_t> generateNoiseCpu(uint32_t size, uint32_t seed) {
+    return quantized(size, seed, noiseTexel);
+}
+
+std::vector<uint8_t> generateWorleyNoiseCpu(uint32_t size, uint32_t seed) {
+    return quantized(size, seed, worleyTexel);
 }
 
 }  // namespace postfx::fog

@@ -1,0 +1,113 @@
+// Volumetric clouds: settings (FrameInfo::clouds). A layer of clouds between two altitudes (or inside an
+// oriented box), density from tileable Perlin–Worley noise eroded by Worley detail, lit by the sun through
+// a short march toward it with a multiple-scattering approximation, composited over the host's color in
+// front of the sky and behind nearer geometry. The model is in docs/effects/clouds.md; the CPU reference
+// is reference::renderClouds (postfx/reference.h).
+//
+// Every setting: unit, default, valid range. Out-of-range values are rejected (validateCloudSettings) with
+// an error naming the field by its scene-file key under effects.clouds ("clouds.top_height").
+#pragma once
+
+#include <postfx/export.h>
+#include <postfx/result.h>
+#include <postfx/types.h>
+
+#include <cstdint>
+
+namespace postfx {
+
+// Where the clouds are. A value cast from another int is rejected.
+enum class CloudShape : uint32_t {
+    // Between bottom_height and top_height above the ground: spherical shells around the planet's centre
+    // when the atmosphere is on (they follow its curvature), horizontal planes at y = bottom / top when off.
+    Layer,
+    // Inside an oriented box (the seed's cloud); bottom/top heights are the box's own bottom and top.
+    Box,
+};
+
+// The box of CloudShape::Box.
+struct CloudBox {
+    DVec3 center{0.0, 2000.0, 0.0};           // world position [m]; each component in [-1e9, 1e9]
+    Vec3 halfSize{2000.0f, 500.0f, 2000.0f};  // half extents along the box's own axes [m]; each in (0, 1e7]
+    // Rotation of the box about world y, then its x [deg]; each in [-360, 360].
+    float yawDeg = 0.0f;
+    float pitchDeg = 0.0f;
+};
+
+// The density field's noise (docs/effects/clouds.md, "Density"). Off: the field is 1 everywhere inside the
+// shape (with coverage 1, a homogeneous layer).
+struct CloudNoiseSettings {
+    bool enabled = true;
+    // Edge of the base-shape texture (Perlin–Worley) postfx generates [texels]; power of two in [16, 256].
+    uint32_t baseSize = 128;
+    // Edge of the detail texture (Worley fBm) [texels]; power of two in [8, 128].
+    uint32_t detailSize = 32;
+    uint32_t seed = 1;  // generator seed; any value
+    // The base texture repeats every `tiling` metres along each world axis; the detail texture every
+    // tiling / 8 [m]; in [1, 1e7].
+    float tiling = 12000.0f;
+    // How much the detail noise erodes the base shape's edges [1]; in [0, 1]. 0: none.
+    float detailStrength = 0.35f;
+};
+
+// Wrenninge's multiple-scattering approximation (2015, "Art-directable multiple volumetric scattering"):
+// octave i adds contribution^i × the single-scattering term with extinction toward the sun scaled by
+// attenuation^i and the phase's asymmetry by eccentricity^i. contribution <= attenuation conserves energy.
+struct CloudMultipleScattering {
+    uint32_t octaves = 2;       // 1: single scattering only; in [1, 8]
+    float attenuation = 0.5f;   // a [1]; in (0, 1]
+    float contribution = 0.5f;  // b [1]; in [0, 1], at most attenuation
+    float eccentricity = 0.5f;  // c [1]; in [0, 1]
+};
+
+struct CloudSettings {
+    bool enabled = false;
+    CloudShape shape = CloudShape::Layer;
+    // The layer's bottom and top above the ground (y = 0) [m]: bottom in [0, 1e6], top in (bottom, 1e6].
+    float bottomHeight = 1500.0f;
+    float topHeight = 4000.0f;
+    CloudBox box;  // CloudShape::Box only
+    // Fraction of the sky the clouds cover [1]; in [0, 1]. 0: no clouds (the effect records nothing).
+    float coverage = 0.5f;
+    // Cloud type: the height profile of the density in the layer [1]; in [0, 1]. 0: stratus (dense near
+    // the bottom, thinning upward), 1: cumulus (full height, rounded top).
+    float cloudType = 0.5f;
+    // Extinction coefficient σt where the density field is 1 [1/m]; in [0, 1e3]. 0.02: a 1 km cloud has an
+    // optical depth of 20.
+    float density = 0.02f;
+    float albedo = 0.99f;  // single-scattering albedo σs/σt [1]; in [0, 1]
+    // Dual-lobe Henyey–Greenstein phase: (1 - lobe_mix)·HG(g_forward) + lobe_mix·HG(g_back), cosθ between
+    // the view direction (from the eye) and the direction toward the sun: g > 0 is brightest toward the sun.
+    float anisotropyForward = 0.8f;  // [1]; in [0, 0.999]
+    float anisotropyBack = -0.3f;    // [1]; in [-0.999, 0]
+    float lobeMix = 0.2f;            // weight of the back lobe [1]; in [0, 1]
+    CloudMultipleScattering multipleScattering;
+    // Samples along each view ray inside the layer, however long its path through it [1]; in [1, 1024].
+    uint32_t steps = 64;
+    // Samples of the march toward the sun from each view sample [1]; in [1, 64].
+    uint32_t lightSteps = 6;
+    // The march toward the sun stops this far from the sample (or where it leaves the layer) [m]; in
+    // (0, 1e6]: cloud farther toward the sun casts no shadow on the sample.
+    float lightDistance = 6000.0f;
+    // View rays are marched to the nearer of the geometry and this distance [m]; in (0, 1e7].
+    float maxDistance = 100000.0f;
+    // Velocity of the density field [m/s]; each component in [-1e3, 1e3]. The field at time t is the one at
+    // t = 0 moved by wind·t (FrameInfo::timeSeconds).
+    Vec3 wind{10.0f, 0.0f, 0.0f};
+    // Offset each pixel's first sample by interleaved gradient noise of pixel and frame (the temporal
+    // accumulation averages it out); false: at the step's midpoint.
+    bool jitter = true;
+    CloudNoiseSettings noise;
+};
+
+// Checks every setting against its documented range; InvalidArgument naming the first bad field with its
+// scene-file key ("clouds.top_height: 1000 must be greater than bottom_height (1500)"). Checked whether or
+// not `enabled` is set.
+POSTFX_API Status validateCloudSettings(const CloudSettings& settings);
+
+// The clouds' generated noise textures (3D, R8_UNORM, repeat-tileable), for Context::imageView and
+// Context::recordImageReadback: held while clouds with noise run.
+inline constexpr ResourceName kCloudsBaseNoise{"clouds.base_noise"};
+inline constexpr ResourceName kCloudsDetailNoise{"clouds.detail_noise"};
+
+}  // namespace postfx

@@ -1,0 +1,222 @@
+#include "clouds/clouds_model.h"
+
+#include <postfx/reference.h>
+#include "atmosphere/atmosphere_model.h"
+#include "clouds/clouds_shared.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace postfx::clouds {
+namespace {
+
+using glm::dvec2;
+using glm::dvec3;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// (tNear, tFar) of ray o + t·d against the sphere of `radius` at the origin, (1, -1) when it misses.
+dvec2 raySphere(const dvec3& o, const dvec3& d, double radius) {
+    const double b = glm::dot(o, d);
+    const double c = glm::dot(o, o) - radius * radius;
+    const double disc = b * b - c;
+    if (disc < 0.0) return {1.0, -1.0};
+    const double q = -b - (b < 0.0 ? -1.0 : 1.0) * std::sqrt(disc);
+    if (q == 0.0) return {0.0, 0.0};
+    const double t0 = q, t1 = c / q;
+    return {std::min(t0, t1), std::max(t0, t1)};
+}
+
+double clamp01(double v) {
+    return std::clamp(v, 0.0, 1.0);
+}
+
+}  // namespace
+
+double NoiseVolume::sample(const dvec3& uvw) const {
+    const double n = double(size);
+    const dvec3 p = uvw * n - 0.5;
+    const dvec3 f0 = glm::floor(p);
+    const dvec3 f = p - f0;
+    const auto wrap = [&](double v) {
+        const auto i = int64_t(v) % int64_t(size);
+        return uint32_t(i < 0 ? i + int64_t(size) : i);
+    };
+    double result = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        const int dx = k & 1, dy = (k >> 1) & 1, dz = k >> 2;
+        const uint32_t x = wrap(f0.x + dx), y = wrap(f0.y + dy), z = wrap(f0.z + dz);
+        const double w = (dx ? f.x : 1.0 - f.x) * (dy ? f.y : 1.0 - f.y) * (dz ? f.z : 1.0 - f.z);
+        result += w * texels[(size_t(z) * size + y) * size + x];
+    }
+    return result;
+}
+
+Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail) {
+    Model m;
+    m.s = frame.clouds;
+    const CloudSettings& s = m.s;
+    m.camera = dvec3(frame.camera.position);
+    m.curved = frame.atmosphere.enabled && s.shape == CloudShape::Layer;
+    m.groundRadius = frame.atmosphere.groundRadius;
+    m.bottom = s.bottomHeight;
+    m.top = s.topHeight;
+    if (s.shape == CloudShape::Box) {
+        m.bottom = -double(s.box.halfSize.y);
+        m.top = double(s.box.halfSize.y);
+    }
+    glm::dmat4 boxToWorld = glm::rotate(glm::dmat4(1.0), glm::radians(double(s.box.yawDeg)), {0.0, 1.0, 0.0});
+    boxToWorld = glm::rotate(boxToWorld, glm::radians(double(s.box.pitchDeg)), {1.0, 0.0, 0.0});
+    m.worldToBox = glm::transpose(glm::dmat3(boxToWorld));
+    m.boxCenter = dvec3(s.box.center);
+    m.topFalloff = gpu::kCloudTopFalloffStratus +
+                   (gpu::kCloudTopFalloffCumulus - gpu::kCloudTopFalloffStratus) * double(s.cloudType);
+    m.noiseOrigin = m.camera - dvec3(s.wind) * frame.timeSeconds;
+    m.base = base;
+    m.detail = detail;
+    m.toSun = glm::normalize(dvec3(frame.sun.toSun));
+    m.sunIlluminance = dvec3(frame.sun.illuminance);
+    m.ambient = dvec3(frame.ambient);
+    if (frame.atmosphere.enabled)
+        m.atmosphere = atmosphere::sharedTransmittanceTable(atmosphere::modelFrom(frame.atmosphere));
+    return m;
+}
+
+dvec2 segment(const Model& m, const dvec3& x0, const dvec3& d, double far) {
+    dvec2 seg(0.0, far);
+    if (m.s.shape == CloudShape::Box) {
+        const dvec3 o = m.worldToBox * (x0 + m.camera - m.boxCenter), dir = m.worldToBox * d;
+        const dvec3 half(m.s.box.halfSize);
+        for (int a = 0; a < 3; ++a) {
+            if (dir[a] == 0.0) {
+                if (o[a] < -half[a] || o[a] > half[a]) return {1.0, 0.0};
+                continue;
+            }
+            const double t0 = (-half[a] - o[a]) / dir[a], t1 = (half[a] - o[a]) / dir[a];
+            seg.x = std::max(seg.x, std::min(t0, t1));
+            seg.y = std::min(seg.y, std::max(t0, t1));
+        }
+    } else if (m.curved) {
+        const dvec3 o = m.camera + x0 + dvec3(0.0, m.groundRadius, 0.0);
+        const dvec2 outer = raySphere(o, d, m.groundRadius + m.top);
+        if (outer.y < outer.x) return {1.0, 0.0};
+        seg = dvec2(std::max(seg.x, outer.x), std::min(seg.y, outer.y));
+        const dvec2 inner = raySphere(o, d, m.groundRadius + m.bottom);
+        if (inner.y > inner.x && inner.x <= seg.x && inner.y > seg.x) seg.x = inner.y;
+        const dvec2 planet = raySphere(o, d, m.groundRadius);
+        if (planet.y > planet.x && planet.x > 0.0) seg.y = std::min(seg.y, planet.x);
+    } else {
+        const double y = m.camera.y + x0.y;
+        if (d.y == 0.0) {
+            if (y < m.bottom || y > m.top) return {1.0, 0.0};
+        } else {
+            const double ta = (m.bottom - y) / d.y, tb = (m.top - y) / d.y;
+            seg = dvec2(std::max(seg.x, std::min(ta, tb)), std::min(seg.y, std::max(ta, tb)));
+        }
+    }
+    return seg;
+}
+
+double heightFraction(const Model& m, const dvec3& x) {
+    double altitude;
+    if (m.s.shape == CloudShape::Box)
+        altitude = (m.worldToBox * (x + m.camera - m.boxCenter)).y;
+    else if (m.curved)
+        altitude = glm::length(m.camera + x + dvec3(0.0, m.groundRadius, 0.0)) - m.groundRadius;
+    else
+        altitude = m.camera.y + x.y;
+    return (altitude - m.bottom) / (m.top - m.bottom);
+}
+
+double heightProfile(const Model& m, double h) {
+    return clamp01(h / gpu::kCloudBottomRamp) * clamp01((1.0 - h) / m.topFalloff);
+}
+
+double field(const Model& m, const dvec3& x, double h) {
+    if (h < 0.0 || h > 1.0) return 0.0;
+    if (!m.s.noise.enabled) return 1.0;
+    const double coverage = m.s.coverage;
+    const dvec3 world = m.noiseOrigin + x;
+    const double basePeriod = m.s.noise.tiling;
+    const double detailPeriod = basePeriod / gpu::kCloudDetailTilingRatio;
+    const double shape = m.base.sample(world / basePeriod) * heightProfile(m, h);
+    const double f = clamp01((shape - (1.0 - coverage)) / coverage);
+    if (f <= 0.0 || m.s.noise.detailStrength <= 0.0f) return f;
+    const double e = m.s.noise.detailStrength * m.detail.sample(world / detailPeriod);
+    return clamp01((f - e) / std::max(1.0 - e, 1e-6));
+}
+
+double extinction(const Model& m, const dvec3& x) {
+    return m.s.density * field(m, x, heightFraction(m, x));
+}
+
+double sunOpticalDepth(const Model& m, const dvec3& x, uint32_t steps) {
+    const dvec2 seg = segment(m, x, m.toSun, m.s.lightDistance);
+    const double length = seg.y > seg.x ? std::max(seg.y, 0.0) : 0.0;
+    if (length <= 0.0) return 0.0;
+    const double ds = length / steps;
+    double tau = 0.0;
+    for (uint32_t k = 0; k < steps; ++k)
+        tau += extinction(m, x + m.toSun * ((k + 0.5) * ds));
+    return tau * ds;
+}
+
+double phase(const Model& m, const dvec3& d, double scale) {
+    const double c = glm::dot(d, m.toSun);
+    const double forward = reference::henyeyGreenstein(c, m.s.anisotropyForward * scale);
+    const double back = reference::henyeyGreenstein(c, m.s.anisotropyBack * scale);
+    return forward + (back - forward) * m.s.lobeMix;
+}
+
+dvec3 inScattered(const Model& m, const dvec3& x, const dvec3& d, double sigma, double h,
+                  uint32_t lightSteps) {
+    const double tau = sunOpticalDepth(m, x, lightSteps);
+    const CloudMultipleScattering& ms = m.s.multipleScattering;
+    double sunTerm = 0.0, a = 1.0, b = 1.0, c = 1.0;
+    for (uint32_t i = 0; i < ms.octaves; ++i) {
+        sunTerm += b * phase(m, d, c) * std::exp(-a * tau);
+        a *= ms.attenuation;
+        b *= ms.contribution;
+        c *= ms.eccentricity;
+    }
+    dvec3 sun = m.sunIlluminance;
+    if (m.atmosphere) {
+        const atmosphere::Model& am = m.atmosphere->model();
+        sun *= m.atmosphere->sun(atmosphere::planetCentred(am, m.camera + x), m.toSun);
+    }
+    const double thickness = m.top - m.bottom;
+    const double hc = clamp01(h);
+    const double ambient = 0.5 * (std::exp(-gpu::kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +
+                                  std::exp(-gpu::kCloudDiffusivity * sigma * hc * thickness));
+    return sun * sunTerm + m.ambient * ambient;
+}
+
+MarchResult march(const Model& m, const dvec3& d, double far, uint32_t steps, double offset,
+                  uint32_t lightSteps) {
+    MarchResult r;
+    const dvec2 seg = segment(m, dvec3(0.0), d, far);
+    if (!(seg.y > seg.x)) return r;
+    const double dt = (seg.y - seg.x) / steps;
+    double weighted = 0.0;
+    for (uint32_t i = 0; i < steps; ++i) {
+        const double t = seg.x + (i + offset) * dt;
+        const dvec3 x = d * t;
+        const double h = heightFraction(m, x);
+        const double sigma = m.s.density * field(m, x, h);
+        if (sigma <= 0.0) continue;
+        const double opticalDepth = sigma * dt;
+        const dvec3 light = inScattered(m, x, d, sigma, h, lightSteps);
+        // T·S·(1 - e^{-σt·Δ})/σt with S = albedo·σt·light: the density once.
+        r.luminance += r.transmittance * m.s.albedo * light * -std::expm1(-opticalDepth);
+        const double next = r.transmittance * std::exp(-opticalDepth);
+        weighted += t * (r.transmittance - next);
+        r.transmittance = next;
+    }
+    if (r.transmittance < 1.0) r.meanDistance = weighted / (1.0 - r.transmittance);
+    return r;
+}
+
+}  // namespace postfx::clouds

@@ -1,0 +1,72 @@
+// The clouds' model in double (docs/effects/clouds.md): the shape, the density field and the light at a
+// sample, as shaders/clouds/density.glsl and lighting.glsl evaluate them, for the CPU reference
+// (clouds_reference_image.cpp) and the tests. Positions are camera-relative [m] unless said otherwise.
+#pragma once
+
+#include <postfx/clouds.h>
+#include <postfx/context.h>
+
+#include "atmosphere/atmosphere_reference.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+namespace postfx::clouds {
+
+// A repeat-tileable size³ texture of values in [0, 1], sampled as the GPU's trilinear REPEAT sampler.
+struct NoiseVolume {
+    std::span<const float> texels;  // x fastest, then y, then z
+    uint32_t size = 0;
+    double sample(const glm::dvec3& uvw) const;
+};
+
+struct Model {
+    CloudSettings s;
+    glm::dvec3 camera{0.0};  // world [m]
+    bool curved = false;     // the layer follows the planet (atmosphere on, Layer shape)
+    double groundRadius = 0.0;
+    double bottom = 0.0, top = 1.0;  // altitudes of the layer, or the box's -half.y, half.y [m]
+    glm::dmat3 worldToBox{1.0};
+    glm::dvec3 boxCenter{0.0};
+    double topFalloff = 1.0;      // fraction of the layer the profile falls to 0 over at its top
+    glm::dvec3 noiseOrigin{0.0};  // world position - wind·t of the camera [m]
+    NoiseVolume base, detail;
+    glm::dvec3 toSun{0.0, 1.0, 0.0}, sunIlluminance{0.0}, ambient{0.0};
+    // The atmosphere's transmittance toward the sun, null with the atmosphere off.
+    std::shared_ptr<const atmosphere::TransmittanceTable> atmosphere;
+};
+
+// The model of `frame`'s clouds (settings validated), reading the noise from `base` and `detail`.
+Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail);
+
+// The part of ray x0 + t·d inside the shape, t in [0, far]: (begin, end), end <= begin when none.
+glm::dvec2 segment(const Model& m, const glm::dvec3& x0, const glm::dvec3& d, double far);
+// The height fraction at x: 0 at the shape's bottom, 1 at its top.
+double heightFraction(const Model& m, const glm::dvec3& x);
+double heightProfile(const Model& m, double h);
+double field(const Model& m, const glm::dvec3& x, double h);  // in [0, 1]
+double extinction(const Model& m, const glm::dvec3& x);       // σt [1/m]
+// Optical depth toward the sun from x over the light path (the shape's exit, at most light_distance),
+// with `steps` midpoint samples.
+double sunOpticalDepth(const Model& m, const glm::dvec3& x, uint32_t steps);
+// The dual-lobe phase for view direction d, asymmetries times `scale` [1/sr].
+double phase(const Model& m, const glm::dvec3& d, double scale);
+// The radiance per unit scattering coefficient at x toward -d (lighting.glsl, cloudInScattered), the sun's
+// optical depth from `lightSteps` samples.
+glm::dvec3 inScattered(const Model& m, const glm::dvec3& x, const glm::dvec3& d, double sigma, double h,
+                       uint32_t lightSteps);
+
+struct MarchResult {
+    glm::dvec3 luminance{0.0};
+    double transmittance = 1.0;
+    double meanDistance = 0.0;  // the extinction-weighted mean distance, 0 when T = 1
+};
+// The view ray from the camera along d to `far` with `steps` samples at offset `offset` in [0, 1) of
+// each step (0.5: midpoints) and `lightSteps` samples toward the sun.
+MarchResult march(const Model& m, const glm::dvec3& d, double far, uint32_t steps, double offset,
+                  uint32_t lightSteps);
+
+}  // namespace postfx::clouds

@@ -1,0 +1,155 @@
+// The clouds' CPU reference (docs/effects/clouds.md, "Reference"): the model of clouds_model.h per pixel
+// with fine steps, in double; pixel rays and the composite as the fog references' (fog/reference_image.h),
+// the aerial perspective in front of the clouds from the atmosphere's reference (integrateViewRay).
+#include "atmosphere/atmosphere_model.h"
+#include "atmosphere/atmosphere_reference.h"
+#include "clouds/clouds_effect.h"
+#include "clouds/clouds_model.h"
+#include "core/checks.h"
+#include "fog/noise_cpu.h"
+#include "fog/reference_image.h"
+
+#include <postfx/reference.h>
+
+#include <cmath>
+#include <new>
+#include <string>
+
+namespace postfx::reference {
+namespace {
+
+using core::invalid;
+using detail::checkCount;
+using glm::dvec3;
+
+constexpr uint32_t kMaxSteps = 1u << 20;
+
+Status validate(const CloudInputs& in) {
+    if (in.width == 0 || in.height == 0)
+        return invalid("CloudInputs.width/height: " + std::to_string(in.width) + "x" +
+                       std::to_string(in.height) + " image is empty");
+    const uint64_t pixels = uint64_t(in.width) * in.height;
+    if (Status s = checkCount("CloudInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s)
+        return s;
+    if (Status s = checkCount("CloudInputs.depth", in.depth.size(), pixels, "width·height"); !s) return s;
+    for (size_t i = 0; i < in.depth.size(); ++i)
+        if (!std::isfinite(in.depth[i]))
+            return invalid("CloudInputs.depth: value " + std::to_string(i) + " is not finite");
+    if (Status s = validateCloudSettings(in.settings); !s) return s;
+    if (in.atmosphere.enabled)
+        if (Status s = validateAtmosphereSettings(in.atmosphere); !s) return s;
+    if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
+    if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
+    if (!core::allFinite(detail::clipToView(in.camera)))
+        return invalid("camera.projection: projection · view rotation is not invertible");
+    if (in.stepsPerPixel == 0 || in.stepsPerPixel > kMaxSteps)
+        return invalid("CloudInputs.stepsPerPixel: " + std::to_string(in.stepsPerPixel) + " is outside [1, " +
+                       std::to_string(kMaxSteps) + "]");
+    if (in.lightSteps == 0 || in.lightSteps > kMaxSteps)
+        return invalid("CloudInputs.lightSteps: " + std::to_string(in.lightSteps) + " is outside [1, " +
+                       std::to_string(kMaxSteps) + "]");
+    const CloudNoiseSettings& n = in.settings.noise;
+    if (n.enabled && !in.baseNoise.empty())
+        if (Status s = checkCount("CloudInputs.baseNoise", in.baseNoise.size(),
+                                  uint64_t(n.baseSize) * n.baseSize * n.baseSize, "noise.base_size³");
+            !s)
+            return s;
+    if (n.enabled && !in.detailNoise.empty())
+        if (Status s = checkCount("CloudInputs.detailNoise", in.detailNoise.size(),
+                                  uint64_t(n.detailSize) * n.detailSize * n.detailSize, "noise.detail_size³");
+            !s)
+            return s;
+    return Status::success();
+}
+
+std::vector<float> unorm(const std::vector<uint8_t>& bytes) {
+    std::vector<float> v(bytes.size());
+    for (size_t i = 0; i < bytes.size(); ++i)
+        v[i] = float(bytes[i]) / 255.0f;
+    return v;
+}
+
+}  // namespace
+
+Status renderClouds(const CloudInputs& in, std::vector<float>& out) {
+    if (Status s = validate(in); !s) return s;
+    std::vector<float> result;  // not `out` directly: `in.color` may view it
+    std::vector<float> baseTexels, detailTexels;
+    const CloudNoiseSettings& n = in.settings.noise;
+    try {
+        result.assign(in.color.begin(), in.color.end());
+        if (n.enabled && in.baseNoise.empty()) baseTexels = unorm(fog::generateNoiseCpu(n.baseSize, n.seed));
+        if (n.enabled && in.detailNoise.empty())
+            detailTexels = unorm(fog::generateWorleyNoiseCpu(n.detailSize, clouds::detailSeed(n.seed)));
+    } catch (const std::bad_alloc&) {
+        return {Result::OutOfMemory,
+                "reference::renderClouds: cannot allocate the output image or the noise"};
+    }
+    if (!in.settings.enabled || in.settings.coverage <= 0.0f || in.settings.density <= 0.0f) {
+        out.swap(result);
+        return Status::success();
+    }
+    FrameInfo frame;
+    frame.camera = in.camera;
+    frame.sun = in.sun;
+    frame.ambient = in.ambient;
+    frame.timeSeconds = in.timeSeconds;
+    frame.clouds = in.settings;
+    frame.atmosphere = in.atmosphere;
+    clouds::NoiseVolume base{baseTexels.empty() ? in.baseNoise : std::span<const float>(baseTexels),
+                             n.baseSize};
+    clouds::NoiseVolume detail{detailTexels.empty() ? in.detailNoise : std::span<const float>(detailTexels),
+                               n.detailSize};
+    const clouds::Model model = clouds::modelFrom(frame, base, detail);
+
+    // The air in front of the clouds (atmosphere on): reference (a)'s integration to their mean distance.
+    std::shared_ptr<const atmosphere::PsiTable> psi;
+    atmosphere::Model air;
+    atmosphere::Sun sun;
+    atmosphere::ViewRayOptions airOptions;
+    dvec3 airOrigin(0.0);
+    if (in.atmosphere.enabled) {
+        air = atmosphere::modelFrom(in.atmosphere);
+        try {
+            if (in.atmosphere.multipleScattering) psi = atmosphere::sharedPsiTable(air);
+        } catch (const std::bad_alloc&) {
+            return {Result::OutOfMemory, "reference::renderClouds: cannot allocate the atmosphere's tables"};
+        }
+        sun.toSun = glm::normalize(dvec3(in.sun.toSun));
+        sun.illuminance = dvec3(in.sun.illuminance);
+        airOptions.steps = 256;
+        airOptions.multipleScattering = in.atmosphere.multipleScattering;
+        airOptions.transmittanceTable = model.atmosphere.get();
+        airOptions.psiTable = psi.get();
+        airOptions.throughGround = true;
+        airOrigin =
+            atmosphere::clampAboveGround(air, atmosphere::planetCentred(air, dvec3(in.camera.position)));
+    }
+
+    const glm::dmat4 clipToView = detail::clipToView(in.camera);
+    const double farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
+    detail::forEachRow(in.height, in.threads, [&](uint32_t j) {
+        for (uint32_t i = 0; i < in.width; ++i) {
+            const size_t p = size_t(j) * in.width + i;
+            const detail::PixelRay ray =
+                detail::pixelRay(clipToView, farDepth, in.width, in.height, i, j, in.depth[p]);
+            const double far = std::min(ray.distance, double(in.settings.maxDistance));
+            const clouds::MarchResult r =
+                clouds::march(model, ray.d, far, in.stepsPerPixel, 0.5, in.lightSteps);
+            if (!(r.transmittance < 1.0)) continue;
+            dvec3 L = r.luminance;
+            if (in.atmosphere.enabled) {
+                atmosphere::ViewRayOptions o = airOptions;
+                o.maxDistance = r.meanDistance;
+                const atmosphere::ViewRayResult front =
+                    atmosphere::integrateViewRay(air, airOrigin, ray.d, sun, o);
+                L = front.transmittance * L + (1.0 - r.transmittance) * front.luminance;
+            }
+            detail::composite(L, r.transmittance, &in.color[p * 4], &result[p * 4]);
+        }
+    });
+    out.swap(result);
+    return Status::success();
+}
+
+}  // namespace postfx::reference

@@ -1,0 +1,118 @@
+#include "clouds/clouds_settings.h"
+
+#include "core/checks.h"
+
+#include <cmath>
+#include <string>
+
+namespace postfx::clouds {
+namespace {
+
+using core::numberText;
+
+std::string key(const std::string& name) {
+    return "clouds." + name;
+}
+
+Status bad(const std::string& name, const std::string& why) {
+    return core::invalid(key(name) + ": " + why);
+}
+
+// v in [lo, hi], finite.
+Status range(const std::string& name, double v, double lo, double hi) {
+    return core::checkRange(key(name).c_str(), v, lo, hi);
+}
+
+// v in (0, hi], finite.
+Status positive(const std::string& name, double v, double hi) {
+    if (Status r = range(name, v, 0.0, hi); !r) return r;
+    if (v <= 0.0) return bad(name, "must be > 0");
+    return Status::success();
+}
+
+Status count(const std::string& name, uint32_t v, uint32_t lo, uint32_t hi) {
+    if (v < lo || v > hi)
+        return bad(
+            name, std::to_string(v) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return Status::success();
+}
+
+Status powerOfTwo(const std::string& name, uint32_t v, uint32_t lo, uint32_t hi) {
+    if (Status r = count(name, v, lo, hi); !r) return r;
+    if ((v & (v - 1)) != 0) return bad(name, std::to_string(v) + " is not a power of two");
+    return Status::success();
+}
+
+Status vec3(const std::string& name, const Vec3& v, double lo, double hi) {
+    for (int c = 0; c < 3; ++c)
+        if (Status r = range(name + "[" + std::to_string(c) + "]", v[c], lo, hi); !r) return r;
+    return Status::success();
+}
+
+Status validateBox(const CloudBox& b) {
+    for (int c = 0; c < 3; ++c)
+        if (Status r = range("box.center[" + std::to_string(c) + "]", b.center[c], -core::kMaxWorldCoordinate,
+                             core::kMaxWorldCoordinate);
+            !r)
+            return r;
+    for (int c = 0; c < 3; ++c)
+        if (Status r = positive("box.half_size[" + std::to_string(c) + "]", b.halfSize[c], kMaxBoxHalfSize);
+            !r)
+            return r;
+    if (Status r = range("box.yaw_deg", b.yawDeg, -360.0, 360.0); !r) return r;
+    return range("box.pitch_deg", b.pitchDeg, -360.0, 360.0);
+}
+
+Status validateNoise(const CloudNoiseSettings& n) {
+    if (Status r = powerOfTwo("noise.base_size", n.baseSize, kMinBaseSize, kMaxBaseSize); !r) return r;
+    if (Status r = powerOfTwo("noise.detail_size", n.detailSize, kMinDetailSize, kMaxDetailSize); !r)
+        return r;
+    if (Status r = range("noise.tiling", n.tiling, kMinTiling, kMaxTiling); !r) return r;
+    return range("noise.detail_strength", n.detailStrength, 0.0, 1.0);
+}
+
+Status validateMultipleScattering(const CloudMultipleScattering& m) {
+    if (Status r = count("multiple_scattering.octaves", m.octaves, 1, kMaxOctaves); !r) return r;
+    if (Status r = positive("multiple_scattering.attenuation", m.attenuation, 1.0); !r) return r;
+    if (Status r = range("multiple_scattering.contribution", m.contribution, 0.0, 1.0); !r) return r;
+    if (m.contribution > m.attenuation)
+        return bad("multiple_scattering.contribution",
+                   numberText(m.contribution) + " must be at most attenuation (" + numberText(m.attenuation) +
+                       ") to conserve energy (Wrenninge 2015)");
+    return range("multiple_scattering.eccentricity", m.eccentricity, 0.0, 1.0);
+}
+
+}  // namespace
+
+Status validateSettings(const CloudSettings& s) {
+    if (uint32_t(s.shape) > uint32_t(CloudShape::Box))
+        return bad("shape", std::to_string(uint32_t(s.shape)) + " is not a CloudShape");
+    if (Status r = range("bottom_height", s.bottomHeight, 0.0, kMaxHeight); !r) return r;
+    if (Status r = range("top_height", s.topHeight, 0.0, kMaxHeight); !r) return r;
+    if (!(s.topHeight > s.bottomHeight))
+        return bad("top_height", numberText(s.topHeight) + " must be greater than bottom_height (" +
+                                     numberText(s.bottomHeight) + ")");
+    if (Status r = validateBox(s.box); !r) return r;
+    if (Status r = range("coverage", s.coverage, 0.0, 1.0); !r) return r;
+    if (Status r = range("cloud_type", s.cloudType, 0.0, 1.0); !r) return r;
+    if (Status r = range("density", s.density, 0.0, kMaxDensity); !r) return r;
+    if (Status r = range("albedo", s.albedo, 0.0, 1.0); !r) return r;
+    if (Status r = range("anisotropy_forward", s.anisotropyForward, 0.0, kMaxAnisotropy); !r) return r;
+    if (Status r = range("anisotropy_back", s.anisotropyBack, -kMaxAnisotropy, 0.0); !r) return r;
+    if (Status r = range("lobe_mix", s.lobeMix, 0.0, 1.0); !r) return r;
+    if (Status r = validateMultipleScattering(s.multipleScattering); !r) return r;
+    if (Status r = count("steps", s.steps, 1, kMaxSteps); !r) return r;
+    if (Status r = count("light_steps", s.lightSteps, 1, kMaxLightSteps); !r) return r;
+    if (Status r = positive("light_distance", s.lightDistance, kMaxLightDistance); !r) return r;
+    if (Status r = positive("max_distance", s.maxDistance, kMaxDistance); !r) return r;
+    if (Status r = vec3("wind", s.wind, -kMaxWind, kMaxWind); !r) return r;
+    return validateNoise(s.noise);
+}
+
+}  // namespace postfx::clouds
+
+namespace postfx {
+Status validateCloudSettings(const CloudSettings& settings) {
+    return clouds::validateSettings(settings);
+}
+}  // namespace postfx

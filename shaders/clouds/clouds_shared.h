@@ -1,0 +1,78 @@
+// The clouds' header shared by their C++ (postfx/src/clouds) and their GLSL (shaders/clouds): uniform
+// struct, binding numbers, workgroup sizes and the model's constants (docs/effects/clouds.md).
+#ifndef POSTFX_CLOUDS_SHARED_H
+#define POSTFX_CLOUDS_SHARED_H
+
+#include "common/shared.h"
+
+#ifdef __cplusplus
+namespace postfx::gpu {
+#endif
+
+PFX_CONST(uint, kCloudGroupSize, 8);       // march workgroup: 8×8 pixels
+PFX_CONST(uint, kCloudNoiseGroupSize, 4);  // noise generation: 4×4×4 texels
+
+PFX_CONST(uint, kCloudBindingUniforms, 0);     // uniform buffer: CloudUniforms
+PFX_CONST(uint, kCloudBindingColorIn, 1);      // storage image: host color (read)
+PFX_CONST(uint, kCloudBindingColorOut, 2);     // storage image: output
+PFX_CONST(uint, kCloudBindingDepth, 3);        // sampler2D: host depth (texelFetch)
+PFX_CONST(uint, kCloudBindingBaseNoise, 4);    // sampler3D (repeat): base shape, Perlin–Worley
+PFX_CONST(uint, kCloudBindingDetailNoise, 5);  // sampler3D (repeat): detail, Worley fBm
+// Variant ATMOSPHERE: the atmosphere's uniforms and LUTs (shaders/atmosphere/atmosphere_shared.h).
+PFX_CONST(uint, kCloudBindingAtmosphere, 6);        // uniform buffer: AtmosphereUniforms
+PFX_CONST(uint, kCloudBindingTransmittanceLut, 7);  // sampler2D: the sun's transmittance (r, μ)
+PFX_CONST(uint, kCloudBindingApScattering, 8);      // sampler3D: aerial perspective's in-scattering
+PFX_CONST(uint, kCloudBindingApTransmittance, 9);   // sampler2DArray: aerial perspective's T
+PFX_CONST(uint, kCloudNoiseBindingTexture, 0);      // noise generation: storage image (r8)
+
+// Flags in CloudUniforms.flags.x
+PFX_CONST(uint, kCloudFlagNoise, 1u);   // sample the noise textures (off: the field is 1)
+PFX_CONST(uint, kCloudFlagCurved, 2u);  // the layer follows the planet (atmosphere on)
+PFX_CONST(uint, kCloudFlagBox, 4u);     // CloudShape::Box
+PFX_CONST(uint, kCloudFlagDepthReversedZ, 8u);
+PFX_CONST(uint, kCloudFlagJitter, 16u);
+
+// The model's constants (docs/effects/clouds.md, "Density" and "Light").
+PFX_CONST(float, kCloudDetailTilingRatio, 8.0f);  // the detail texture repeats tiling / this [m]
+PFX_CONST(float, kCloudBottomRamp, 0.1f);         // the profile rises from 0 over this height fraction
+// Top falloff of the height profile, as a fraction of the layer: stratus (cloud type 0) to cumulus (1).
+PFX_CONST(float, kCloudTopFalloffStratus, 0.9f);
+PFX_CONST(float, kCloudTopFalloffCumulus, 0.3f);
+// Ambient light: the uniform radiance FrameInfo::ambient reaches a sample through the cloud above and
+// below it taken as slabs of the sample's own extinction, with Elsasser's diffusivity factor for diffuse
+// light through a slab: T ≈ exp(-1.66·τ).
+PFX_CONST(float, kCloudDiffusivity, 1.66f);
+PFX_CONST(float, kCloudTransmittanceCutoff, 1e-3f);  // the march stops below this transmittance
+
+struct CloudUniforms {
+    mat4 clipToView;   // Vulkan clip -> camera-relative world (this frame's camera)
+    mat4 boxFromView;  // Box: camera-relative world -> the box's frame (its centre at the origin)
+    // xyz: the camera relative to the layer's origin: the planet's centre (curved) or (0, y, 0) (flat) [m]
+    vec4 origin;
+    vec4 layer;         // x: bottom, y: top altitude [m], z: ground radius [m] (curved), w: 1 / thickness
+    vec4 boxHalf;       // Box: xyz half extents [m]
+    vec4 noiseBase;     // xyz: offset added to camera-relative x (camera - wind·t, modulo the period), w:
+                        // 1/period
+    vec4 noiseDetail;   // the same for the detail texture
+    vec4 shape;         // x: coverage, y: 1 / top falloff, z: detail strength, w: σt where the field is 1
+    vec4 phase;         // x: g forward, y: g back, z: lobe mix, w: albedo
+    vec4 multiScatter;  // x: attenuation a, y: contribution b, z: eccentricity c, w: octaves
+    vec4 sun;           // rgb: illuminance [lux] (outside the atmosphere with it on), w: light distance [m]
+    vec4 toSun;         // xyz: unit toward the sun
+    vec4 ambient;       // rgb: uniform incident radiance
+    vec4 march;         // x: max distance [m], y: no-geometry depth
+    uvec4 counts;       // x: steps, y: light steps, z: octaves
+    uvec4 extent;       // xy: color extent [px], z: frame index, w: 0
+    uvec4 flags;        // x: kCloudFlag* bits
+};
+
+struct CloudNoisePush {
+    uvec4 params;  // x: size, y: seed, z: 0 Perlin–Worley (base), 1 Worley fBm (detail)
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(CloudUniforms) == 2 * 64 + 15 * 16, "CloudUniforms must match std140");
+}  // namespace postfx::gpu
+#endif
+
+#endif  // POSTFX_CLOUDS_SHARED_H
