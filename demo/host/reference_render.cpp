@@ -1,6 +1,7 @@
 // Renderer::renderReference: the GPU frame up to lighting, read back, and postfx's CPU references over it
-// in the composite order: the atmosphere (postfx::reference::renderAtmosphere, reference (a)), then the fog
-// (renderFog, or renderFroxelFog for the froxel fog), with the same inputs the GPU frame gave postfx.
+// in the composite order: the atmosphere (postfx::reference::renderAtmosphere, reference (a)), the clouds
+// (renderClouds), then the fog (renderFog, or renderFroxelFog for the froxel fog), with the same inputs the
+// GPU frame gave postfx.
 #include "host/renderer.h"
 #include "host/renderer_impl.h"
 
@@ -76,10 +77,11 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const bool noise = fog && noiseSettings.enabled && !noiseSettings.hostTexture;
     const uint32_t noiseEdge = noiseSettings.textureSize;
 
-    // With fog, postfx runs as in render() but writes to a scratch image: it validates the inputs and
-    // generates the noise texture, and the HDR image keeps the un-fogged scene.
+    // With any of postfx's effects, postfx runs as in render() but writes to a scratch image: it validates
+    // the inputs and generates the noise texture, and the HDR image keeps the scene without postfx's
+    // effects, which the references then draw.
     postfx::ImageInput fogOutput;
-    if (gpuScene.fog.enabled || froxel) {
+    if (gpuScene.fog.enabled || froxel || gpuScene.atmosphere.enabled || gpuScene.clouds.enabled) {
         if (!r.fogScratch.image &&
             !createImage(r.host, r.hdr.format, r.extent, VK_IMAGE_USAGE_STORAGE_BIT, r.fogScratch, error))
             return false;
@@ -198,7 +200,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         out.width = w;
         out.height = h;
     }
-    // The atmosphere first (the composite order: the farthest first), then the fog over its result.
+    // The atmosphere first (the composite order: the farthest first), the clouds, then the fog.
     if (in.atmosphere.enabled) {
         postfx::reference::AtmosphereInputs ai;
         ai.width = out.width;
@@ -218,6 +220,30 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
             return false;
         }
         color = std::move(withAtmosphere);
+    }
+    // The clouds over the sky (their noise from the CPU port, which the GPU's textures match to a unit of
+    // their 8 bits: CloudsGpuTest.NoiseTexturesMatchTheCpuPort).
+    if (in.clouds.enabled) {
+        postfx::reference::CloudInputs ci;
+        ci.width = out.width;
+        ci.height = out.height;
+        ci.color = color;
+        ci.depth = depth;
+        ci.depthConvention.reversedZ = r.options.reversedZ;
+        ci.depthConvention.infiniteFar = r.options.infiniteFar;
+        ci.camera = in.camera;
+        ci.camera.projection = projection;
+        ci.sun = in.sun;
+        ci.ambient = in.ambient;
+        ci.timeSeconds = in.timeSeconds;
+        ci.settings = in.clouds;
+        ci.atmosphere = in.atmosphere;
+        std::vector<float> withClouds;
+        if (const postfx::Status s = postfx::reference::renderClouds(ci, withClouds); !s.ok()) {
+            error = "clouds reference: " + s.message;
+            return false;
+        }
+        color = std::move(withClouds);
     }
     if (!fog) {
         out.rgba = std::move(color);

@@ -100,6 +100,7 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     in.fog = scene.fog;
     in.froxelFog = froxelFogSettings(scene);
     in.atmosphere = scene.atmosphere;
+    in.clouds = scene.clouds;
     return in;
 }
 
@@ -134,6 +135,7 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     frame.fog = in.fog;
     frame.froxelFog = in.froxelFog;  // its volumes point into scene.froxelVolumes
     frame.atmosphere = in.atmosphere;
+    frame.clouds = in.clouds;
     return frame;
 }
 

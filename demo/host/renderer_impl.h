@@ -29,6 +29,7 @@ struct PostfxInputs {
     // froxelFogSettings(scene): its volumes point into the scene's froxelVolumes.
     postfx::FroxelFogSettings froxelFog;
     postfx::AtmosphereSettings atmosphere;
+    postfx::CloudSettings clouds;
 };
 
 struct Renderer::Impl {

@@ -4,6 +4,7 @@
 #include "scene/fog_json.h"
 
 #include "scene/atmosphere_json.h"
+#include "scene/clouds_json.h"
 #include "scene/froxel_fog_json.h"
 #include "scene/json_read.h"
 #include "scene/medium_json.h"
@@ -14,7 +15,7 @@ namespace {
 
 using namespace json_read;
 
-constexpr const char* kEffectsKeys[] = {"fog", "froxel_fog", "atmosphere"};
+constexpr const char* kEffectsKeys[] = {"fog", "froxel_fog", "atmosphere", "clouds"};
 // The ray-marched fog's own keys (besides "enabled" and the medium's).
 constexpr const char* kFogKeys[] = {"steps",
                                     "jitter",
@@ -105,11 +106,13 @@ void readEffects(const json& effects, const std::string& path, Scene& scene) {
     scene.froxelFog = postfx::FroxelFogSettings{};
     scene.froxelVolumes.clear();
     scene.atmosphere = postfx::AtmosphereSettings{};
+    scene.clouds = postfx::CloudSettings{};
     if (const json* f = find(effects, "fog")) scene.fog = readFog(*f, child(path, "fog"));
     if (const json* f = find(effects, "froxel_fog"))
         readFroxelFog(*f, child(path, "froxel_fog"), scene.froxelFog, scene.froxelVolumes);
     if (const json* a = find(effects, "atmosphere"))
         scene.atmosphere = readAtmosphere(*a, child(path, "atmosphere"));
+    if (const json* c = find(effects, "clouds")) scene.clouds = readClouds(*c, child(path, "clouds"));
     // postfx draws one fog per frame (Context::record rejects both): the file says which.
     if (scene.fog.enabled && scene.froxelFog.enabled) {
         fail(path, child(path, "fog") + " and " + child(path, "froxel_fog") +
@@ -120,7 +123,8 @@ void readEffects(const json& effects, const std::string& path, Scene& scene) {
 json effectsToJson(const Scene& scene) {
     return json{{"fog", fogToJson(scene.fog)},
                 {"froxel_fog", froxelFogToJson(scene.froxelFog, scene.froxelVolumes)},
-                {"atmosphere", atmosphereToJson(scene.atmosphere)}};
+                {"atmosphere", atmosphereToJson(scene.atmosphere)},
+                {"clouds", cloudsToJson(scene.clouds)}};
 }
 
 }  // namespace demo

@@ -5,6 +5,7 @@
 #include "scene/light.h"
 
 #include <postfx/atmosphere.h>
+#include <postfx/clouds.h>
 #include <postfx/fog.h>
 #include <postfx/froxel_fog.h>
 #include <glm/glm.hpp>
@@ -105,6 +106,8 @@ struct Scene {
     // sky over it) and, with ambientFromSky, takes the ambient from the sky's irradiance instead of
     // `ambient` (host/atmosphere_lighting.h).
     postfx::AtmosphereSettings atmosphere;
+    // effects.clouds: postfx's volumetric clouds (docs/effects/clouds.md); disabled unless the file has it.
+    postfx::CloudSettings clouds;
     // `frame_time`: frame n is at time n · frameTime [s], for the motion of the camera and lights and for
     // postfx (FrameInfo::timeSeconds); (0, 1]. Kept in double, so that the default is exactly 1/60 s.
     double frameTime = kDefaultFrameTime;

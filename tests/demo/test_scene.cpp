@@ -633,7 +633,7 @@ TEST(DemoSceneParse, NestingUpToTheLimitIsAccepted) {
     const Parsed p =
         parse(withRaw("/effects", "{\"a\":" + std::string(62, '[') + std::string(62, ']') + "}"));
     EXPECT_FALSE(p.ok);
-    EXPECT_EQ(p.error.rfind("effects.a: unknown key (expected fog, froxel_fog or atmosphere)", 0), 0u)
+    EXPECT_EQ(p.error.rfind("effects.a: unknown key (expected fog, froxel_fog, atmosphere or clouds)", 0), 0u)
         << p.error;
 }
 

@@ -295,7 +295,7 @@ TEST(DemoSceneFroxel, EveryKeyRoundTrips) {
     // Every key is written, with the value read.
     const json& froxel = out["effects"]["froxel_fog"];
     const json in = everyKey();
-    EXPECT_EQ(out["effects"].size(), 3u);  // fog, froxel_fog and atmosphere
+    EXPECT_EQ(out["effects"].size(), 4u);  // fog, froxel_fog, atmosphere and clouds
     EXPECT_EQ(froxel.size(), in.size());
     for (const auto& [key, value] : in.items()) {
         if (key == "noise" || key == "volumes") continue;

@@ -224,7 +224,7 @@ TEST(FogScene, EveryKeyRoundTrips) {
     // Every key is written, with the value read.
     const json& fog = out["effects"]["fog"];
     const json in = everyKey();
-    EXPECT_EQ(out["effects"].size(), 3u);  // fog, froxel_fog and atmosphere (off), every key written
+    EXPECT_EQ(out["effects"].size(), 4u);  // fog, froxel_fog, atmosphere and clouds (off), every key written
     EXPECT_EQ(fog.size(), in.size());
     EXPECT_EQ(fog["noise"].size(), in["noise"].size());
     for (const auto& [key, value] : in.items()) {
@@ -325,8 +325,8 @@ std::vector<FogRejection> fogRejections() {
     return {
         // unknown keys, at every level
         {"UnknownEffect",
-         {{"clouds", json::object()}},
-         "effects.clouds: unknown key (expected fog, froxel_fog or atmosphere)"},
+         {{"rain", json::object()}},
+         "effects.rain: unknown key (expected fog, froxel_fog, atmosphere or clouds)"},
         {"UnknownFogKey", fog("/colour", {1, 1, 1}),
          "effects.fog.colour: unknown key (expected enabled, density, albedo, anisotropy, height_falloff, "
          "base_height, max_distance, self_shadow, analytic_tail, noise, steps, jitter, resolution_scale, "
