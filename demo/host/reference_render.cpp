@@ -200,18 +200,23 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         out.width = w;
         out.height = h;
     }
+    // What every reference reads alike: the image as the effects before it left it, the depth, the camera
+    // and the sun.
+    const auto fillImage = [&](auto& x) {
+        x.width = out.width;
+        x.height = out.height;
+        x.color = color;
+        x.depth = depth;
+        x.depthConvention.reversedZ = r.options.reversedZ;
+        x.depthConvention.infiniteFar = r.options.infiniteFar;
+        x.camera = in.camera;
+        x.camera.projection = projection;
+        x.sun = in.sun;
+    };
     // The atmosphere first (the composite order: the farthest first), the clouds, then the fog.
     if (in.atmosphere.enabled) {
         postfx::reference::AtmosphereInputs ai;
-        ai.width = out.width;
-        ai.height = out.height;
-        ai.color = color;
-        ai.depth = depth;
-        ai.depthConvention.reversedZ = r.options.reversedZ;
-        ai.depthConvention.infiniteFar = r.options.infiniteFar;
-        ai.camera = in.camera;
-        ai.camera.projection = projection;
-        ai.sun = in.sun;
+        fillImage(ai);
         ai.settings = in.atmosphere;
         ai.stepsPerPixel = stepsPerPixel;
         std::vector<float> withAtmosphere;
@@ -225,15 +230,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     // their 8 bits: CloudsGpuTest.NoiseTexturesMatchTheCpuPort).
     if (in.clouds.enabled) {
         postfx::reference::CloudInputs ci;
-        ci.width = out.width;
-        ci.height = out.height;
-        ci.color = color;
-        ci.depth = depth;
-        ci.depthConvention.reversedZ = r.options.reversedZ;
-        ci.depthConvention.infiniteFar = r.options.infiniteFar;
-        ci.camera = in.camera;
-        ci.camera.projection = projection;
-        ci.sun = in.sun;
+        fillImage(ci);
         ci.ambient = in.ambient;
         ci.timeSeconds = in.timeSeconds;
         ci.settings = in.clouds;
@@ -258,15 +255,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
 
     // What both references read alike: the read-back images and the GPU frame's inputs.
     const auto fill = [&](auto& fi) {
-        fi.width = out.width;
-        fi.height = out.height;
-        fi.color = color;
-        fi.depth = depth;
-        fi.depthConvention.reversedZ = r.options.reversedZ;
-        fi.depthConvention.infiniteFar = r.options.infiniteFar;
-        fi.camera = in.camera;
-        fi.camera.projection = projection;
-        fi.sun = in.sun;
+        fillImage(fi);
         fi.ambient = in.ambient;
         fi.timeSeconds = in.timeSeconds;
         if (shadows) {

@@ -37,36 +37,6 @@ constexpr const char* kAtmosphereKeys[] = {"enabled",
                                            "aerial_perspective_distance",
                                            "aerial_perspective_steps_per_slice"};
 
-template <class V>
-V readUvec(const json& j, const std::string& path) {
-    constexpr auto n = std::size_t(V::length());
-    if (!j.is_array() || j.size() != n)
-        fail(path, "expected an array of " + std::to_string(n) + " integers" + got(j));
-    V v;
-    for (std::size_t i = 0; i < n; ++i)
-        v[glm::length_t(i)] = readUint32(j[i], element(path, i));
-    return v;
-}
-
-void read(const json& j, const std::string& path, const char* key, float& out) {
-    if (const json* v = find(j, key)) out = readNumber(*v, child(path, key));
-}
-void read(const json& j, const std::string& path, const char* key, postfx::Vec3& out) {
-    if (const json* v = find(j, key)) out = postfx::Vec3(readVec3(*v, child(path, key)));
-}
-void read(const json& j, const std::string& path, const char* key, bool& out) {
-    if (const json* v = find(j, key)) out = readBool(*v, child(path, key));
-}
-void read(const json& j, const std::string& path, const char* key, uint32_t& out) {
-    if (const json* v = find(j, key)) out = readUint32(*v, child(path, key));
-}
-void read(const json& j, const std::string& path, const char* key, postfx::UVec2& out) {
-    if (const json* v = find(j, key)) out = readUvec<postfx::UVec2>(*v, child(path, key));
-}
-void read(const json& j, const std::string& path, const char* key, postfx::UVec3& out) {
-    if (const json* v = find(j, key)) out = readUvec<postfx::UVec3>(*v, child(path, key));
-}
-
 json rgb(const postfx::Vec3& v) {
     return vec3(glm::vec3(v));
 }
@@ -78,32 +48,32 @@ postfx::AtmosphereSettings readAtmosphere(const json& j, const std::string& path
     checkKeys(j, path, kAtmosphereKeys);
     postfx::AtmosphereSettings s;
     s.enabled = true;  // the object's presence turns the atmosphere on unless it says otherwise
-    read(j, path, "enabled", s.enabled);
-    read(j, path, "ground_radius", s.groundRadius);
-    read(j, path, "top_radius", s.topRadius);
-    read(j, path, "rayleigh_scattering", s.rayleighScattering);
-    read(j, path, "rayleigh_scale_height", s.rayleighScaleHeight);
-    read(j, path, "mie_scattering", s.mieScattering);
-    read(j, path, "mie_absorption", s.mieAbsorption);
-    read(j, path, "mie_scale_height", s.mieScaleHeight);
-    read(j, path, "mie_anisotropy", s.mieAnisotropy);
-    read(j, path, "ozone_absorption", s.ozoneAbsorption);
-    read(j, path, "ozone_center_height", s.ozoneCenterHeight);
-    read(j, path, "ozone_half_width", s.ozoneHalfWidth);
-    read(j, path, "ground_albedo", s.groundAlbedo);
-    read(j, path, "multiple_scattering", s.multipleScattering);
-    read(j, path, "sun_angular_radius_deg", s.sunAngularRadiusDeg);
-    read(j, path, "ambient_from_sky", s.ambientFromSky);
-    read(j, path, "transmittance_lut_size", s.transmittanceLutSize);
-    read(j, path, "transmittance_steps", s.transmittanceSteps);
-    read(j, path, "multiple_scattering_lut_size", s.multipleScatteringLutSize);
-    read(j, path, "multiple_scattering_directions", s.multipleScatteringDirections);
-    read(j, path, "multiple_scattering_steps", s.multipleScatteringSteps);
-    read(j, path, "sky_view_lut_size", s.skyViewLutSize);
-    read(j, path, "sky_view_steps", s.skyViewSteps);
-    read(j, path, "aerial_perspective_lut_size", s.aerialPerspectiveLutSize);
-    read(j, path, "aerial_perspective_distance", s.aerialPerspectiveDistance);
-    read(j, path, "aerial_perspective_steps_per_slice", s.aerialPerspectiveStepsPerSlice);
+    readOptional(j, path, "enabled", s.enabled);
+    readOptional(j, path, "ground_radius", s.groundRadius);
+    readOptional(j, path, "top_radius", s.topRadius);
+    readOptional(j, path, "rayleigh_scattering", s.rayleighScattering);
+    readOptional(j, path, "rayleigh_scale_height", s.rayleighScaleHeight);
+    readOptional(j, path, "mie_scattering", s.mieScattering);
+    readOptional(j, path, "mie_absorption", s.mieAbsorption);
+    readOptional(j, path, "mie_scale_height", s.mieScaleHeight);
+    readOptional(j, path, "mie_anisotropy", s.mieAnisotropy);
+    readOptional(j, path, "ozone_absorption", s.ozoneAbsorption);
+    readOptional(j, path, "ozone_center_height", s.ozoneCenterHeight);
+    readOptional(j, path, "ozone_half_width", s.ozoneHalfWidth);
+    readOptional(j, path, "ground_albedo", s.groundAlbedo);
+    readOptional(j, path, "multiple_scattering", s.multipleScattering);
+    readOptional(j, path, "sun_angular_radius_deg", s.sunAngularRadiusDeg);
+    readOptional(j, path, "ambient_from_sky", s.ambientFromSky);
+    readOptional(j, path, "transmittance_lut_size", s.transmittanceLutSize);
+    readOptional(j, path, "transmittance_steps", s.transmittanceSteps);
+    readOptional(j, path, "multiple_scattering_lut_size", s.multipleScatteringLutSize);
+    readOptional(j, path, "multiple_scattering_directions", s.multipleScatteringDirections);
+    readOptional(j, path, "multiple_scattering_steps", s.multipleScatteringSteps);
+    readOptional(j, path, "sky_view_lut_size", s.skyViewLutSize);
+    readOptional(j, path, "sky_view_steps", s.skyViewSteps);
+    readOptional(j, path, "aerial_perspective_lut_size", s.aerialPerspectiveLutSize);
+    readOptional(j, path, "aerial_perspective_distance", s.aerialPerspectiveDistance);
+    readOptional(j, path, "aerial_perspective_steps_per_slice", s.aerialPerspectiveStepsPerSlice);
     // Ranges: postfx's own check (whether or not enabled), which names the field "atmosphere.<key>"; it
     // becomes "effects.atmosphere.<key>".
     medium_json::throwIfInvalid(postfx::validateAtmosphereSettings(s), "atmosphere", path);

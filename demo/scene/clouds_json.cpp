@@ -34,17 +34,17 @@ constexpr const char* kMultipleScatteringKeys[] = {"octaves", "attenuation", "co
 constexpr const char* kNoiseKeys[] = {"enabled", "base_size", "detail_size",
                                       "seed",    "tiling",    "detail_strength"};
 
-void read(const json& j, const std::string& path, const char* key, float& out) {
-    if (const json* v = find(j, key)) out = readNumber(*v, child(path, key));
-}
-void read(const json& j, const std::string& path, const char* key, postfx::Vec3& out) {
-    if (const json* v = find(j, key)) out = postfx::Vec3(readVec3(*v, child(path, key)));
-}
-void read(const json& j, const std::string& path, const char* key, bool& out) {
-    if (const json* v = find(j, key)) out = readBool(*v, child(path, key));
-}
-void read(const json& j, const std::string& path, const char* key, uint32_t& out) {
-    if (const json* v = find(j, key)) out = readUint32(*v, child(path, key));
+// The object at `key` of `j` when present (its keys checked against `keys`), with its key path in `path`;
+// null when absent.
+template <std::size_t N>
+const json* nestedObject(const json& j, const std::string& parent, const char* key,
+                         const char* const (&keys)[N], std::string& path) {
+    const json* o = find(j, key);
+    if (!o) return nullptr;
+    path = child(parent, key);
+    expectObject(*o, path);
+    checkKeys(*o, path, keys);
+    return o;
 }
 
 postfx::CloudShape readShape(const json& j, const std::string& path) {
@@ -60,58 +60,46 @@ postfx::CloudSettings readClouds(const json& j, const std::string& path) {
     checkKeys(j, path, kCloudKeys);
     postfx::CloudSettings s;
     s.enabled = true;  // the object's presence turns the clouds on unless it says otherwise
-    read(j, path, "enabled", s.enabled);
+    readOptional(j, path, "enabled", s.enabled);
     if (const json* v = find(j, "shape")) s.shape = readShape(*v, child(path, "shape"));
-    read(j, path, "bottom_height", s.bottomHeight);
-    read(j, path, "top_height", s.topHeight);
-    if (const json* b = find(j, "box")) {
-        const std::string p = child(path, "box");
-        expectObject(*b, p);
-        checkKeys(*b, p, kBoxKeys);
+    readOptional(j, path, "bottom_height", s.bottomHeight);
+    readOptional(j, path, "top_height", s.topHeight);
+    std::string p;
+    if (const json* b = nestedObject(j, path, "box", kBoxKeys, p)) {
+        // Read as the froxel fog's volumes' centres: a float triple, validated by postfx (within ±1e9).
         if (const json* c = find(*b, "center"))
-            for (int i = 0; i < 3; ++i) {
-                if (!c->is_array() || c->size() != 3)
-                    fail(child(p, "center"), "expected an array of 3 numbers" + got(*c));
-                s.box.center[i] = readDouble((*c)[size_t(i)], element(child(p, "center"), size_t(i)),
-                                             {-1e9, 1e9, "[-1e9, 1e9]"});
-            }
-        read(*b, p, "half_size", s.box.halfSize);
-        read(*b, p, "yaw_deg", s.box.yawDeg);
-        read(*b, p, "pitch_deg", s.box.pitchDeg);
+            s.box.center = postfx::DVec3(readVec3(*c, child(p, "center")));
+        readOptional(*b, p, "half_size", s.box.halfSize);
+        readOptional(*b, p, "yaw_deg", s.box.yawDeg);
+        readOptional(*b, p, "pitch_deg", s.box.pitchDeg);
     }
-    read(j, path, "coverage", s.coverage);
-    read(j, path, "cloud_type", s.cloudType);
-    read(j, path, "density", s.density);
-    read(j, path, "albedo", s.albedo);
-    read(j, path, "anisotropy_forward", s.anisotropyForward);
-    read(j, path, "anisotropy_back", s.anisotropyBack);
-    read(j, path, "lobe_mix", s.lobeMix);
-    if (const json* m = find(j, "multiple_scattering")) {
-        const std::string p = child(path, "multiple_scattering");
-        expectObject(*m, p);
-        checkKeys(*m, p, kMultipleScatteringKeys);
-        read(*m, p, "octaves", s.multipleScattering.octaves);
-        read(*m, p, "attenuation", s.multipleScattering.attenuation);
-        read(*m, p, "contribution", s.multipleScattering.contribution);
-        read(*m, p, "eccentricity", s.multipleScattering.eccentricity);
+    readOptional(j, path, "coverage", s.coverage);
+    readOptional(j, path, "cloud_type", s.cloudType);
+    readOptional(j, path, "density", s.density);
+    readOptional(j, path, "albedo", s.albedo);
+    readOptional(j, path, "anisotropy_forward", s.anisotropyForward);
+    readOptional(j, path, "anisotropy_back", s.anisotropyBack);
+    readOptional(j, path, "lobe_mix", s.lobeMix);
+    if (const json* m = nestedObject(j, path, "multiple_scattering", kMultipleScatteringKeys, p)) {
+        readOptional(*m, p, "octaves", s.multipleScattering.octaves);
+        readOptional(*m, p, "attenuation", s.multipleScattering.attenuation);
+        readOptional(*m, p, "contribution", s.multipleScattering.contribution);
+        readOptional(*m, p, "eccentricity", s.multipleScattering.eccentricity);
     }
-    read(j, path, "steps", s.steps);
-    read(j, path, "light_steps", s.lightSteps);
-    read(j, path, "light_distance", s.lightDistance);
-    read(j, path, "max_distance", s.maxDistance);
-    read(j, path, "wind", s.wind);
-    read(j, path, "jitter", s.jitter);
-    if (const json* n = find(j, "noise")) {
-        const std::string p = child(path, "noise");
-        expectObject(*n, p);
-        checkKeys(*n, p, kNoiseKeys);
+    readOptional(j, path, "steps", s.steps);
+    readOptional(j, path, "light_steps", s.lightSteps);
+    readOptional(j, path, "light_distance", s.lightDistance);
+    readOptional(j, path, "max_distance", s.maxDistance);
+    readOptional(j, path, "wind", s.wind);
+    readOptional(j, path, "jitter", s.jitter);
+    if (const json* n = nestedObject(j, path, "noise", kNoiseKeys, p)) {
         s.noise.enabled = true;  // a `noise` object turns the noise on unless it says otherwise
-        read(*n, p, "enabled", s.noise.enabled);
-        read(*n, p, "base_size", s.noise.baseSize);
-        read(*n, p, "detail_size", s.noise.detailSize);
-        read(*n, p, "seed", s.noise.seed);
-        read(*n, p, "tiling", s.noise.tiling);
-        read(*n, p, "detail_strength", s.noise.detailStrength);
+        readOptional(*n, p, "enabled", s.noise.enabled);
+        readOptional(*n, p, "base_size", s.noise.baseSize);
+        readOptional(*n, p, "detail_size", s.noise.detailSize);
+        readOptional(*n, p, "seed", s.noise.seed);
+        readOptional(*n, p, "tiling", s.noise.tiling);
+        readOptional(*n, p, "detail_strength", s.noise.detailStrength);
     }
     // Ranges: postfx's own check, which names the field "clouds.<key>"; it becomes "effects.clouds.<key>".
     medium_json::throwIfInvalid(postfx::validateCloudSettings(s), "clouds", path);
@@ -127,7 +115,7 @@ json cloudsToJson(const postfx::CloudSettings& s) {
                 {"bottom_height", number(s.bottomHeight)},
                 {"top_height", number(s.topHeight)},
                 {"box",
-                 {{"center", {doubleNumber(b.center.x), doubleNumber(b.center.y), doubleNumber(b.center.z)}},
+                 {{"center", vec3(glm::vec3(b.center))},
                   {"half_size", vec3(glm::vec3(b.halfSize))},
                   {"yaw_deg", number(b.yawDeg)},
                   {"pitch_deg", number(b.pitchDeg)}}},

@@ -18,14 +18,6 @@ constexpr const char* kFroxelKeys[] = {"grid",     "tile_size_px", "depth_distri
 constexpr const char* kBoxVolumeKeys[] = {"shape", "center", "half_size", "density", "edge_falloff"};
 constexpr const char* kSphereVolumeKeys[] = {"shape", "center", "radius", "density", "edge_falloff"};
 
-glm::uvec3 readUvec3(const json& j, const std::string& path) {
-    if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 integers" + got(j));
-    glm::uvec3 v;
-    for (int i = 0; i < 3; ++i)
-        v[i] = readUint32(j[std::size_t(i)], element(path, std::size_t(i)));
-    return v;
-}
-
 postfx::FroxelDepthDistribution readDistribution(const json& j, const std::string& path) {
     if (j.is_string()) {
         if (j.get<std::string>() == "power") return postfx::FroxelDepthDistribution::Power;

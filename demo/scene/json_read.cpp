@@ -177,4 +177,43 @@ json vec3(const glm::vec3& v) {
     return json::array({number(v.x), number(v.y), number(v.z)});
 }
 
+namespace {
+template <class V>
+V readUvec(const json& j, const std::string& path) {
+    constexpr auto n = std::size_t(V::length());
+    if (!j.is_array() || j.size() != n)
+        fail(path, "expected an array of " + std::to_string(n) + " integers" + got(j));
+    V v;
+    for (std::size_t i = 0; i < n; ++i)
+        v[glm::length_t(i)] = readUint32(j[i], element(path, i));
+    return v;
+}
+}  // namespace
+
+postfx::UVec2 readUvec2(const json& j, const std::string& path) {
+    return readUvec<postfx::UVec2>(j, path);
+}
+postfx::UVec3 readUvec3(const json& j, const std::string& path) {
+    return readUvec<postfx::UVec3>(j, path);
+}
+
+void readOptional(const json& j, const std::string& path, const char* key, float& out) {
+    if (const json* v = find(j, key)) out = readNumber(*v, child(path, key));
+}
+void readOptional(const json& j, const std::string& path, const char* key, postfx::Vec3& out) {
+    if (const json* v = find(j, key)) out = postfx::Vec3(readVec3(*v, child(path, key)));
+}
+void readOptional(const json& j, const std::string& path, const char* key, bool& out) {
+    if (const json* v = find(j, key)) out = readBool(*v, child(path, key));
+}
+void readOptional(const json& j, const std::string& path, const char* key, uint32_t& out) {
+    if (const json* v = find(j, key)) out = readUint32(*v, child(path, key));
+}
+void readOptional(const json& j, const std::string& path, const char* key, postfx::UVec2& out) {
+    if (const json* v = find(j, key)) out = readUvec2(*v, child(path, key));
+}
+void readOptional(const json& j, const std::string& path, const char* key, postfx::UVec3& out) {
+    if (const json* v = find(j, key)) out = readUvec3(*v, child(path, key));
+}
+
 }  // namespace demo::json_read

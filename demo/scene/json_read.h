@@ -3,6 +3,8 @@
 // ReadError, which parseScene catches: it never leaves demo_scene.
 #pragma once
 
+#include <postfx/types.h>
+
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -59,6 +61,19 @@ glm::vec3 readDirection(const json& j, const std::string& path);
 bool readBool(const json& j, const std::string& path);
 // A whole number in [0, 4294967295], written as an integer or a decimal with no fraction (32, 32.0).
 uint32_t readUint32(const json& j, const std::string& path);
+
+// An array of V::length() whole numbers (readUint32 each): [w, h], [x, y, z].
+postfx::UVec2 readUvec2(const json& j, const std::string& path);
+postfx::UVec3 readUvec3(const json& j, const std::string& path);
+
+// `out` = the value at `key` of object `j` (path `path`) read as its type's reader reads it, when the key is
+// present; unchanged otherwise (the settings' default).
+void readOptional(const json& j, const std::string& path, const char* key, float& out);
+void readOptional(const json& j, const std::string& path, const char* key, postfx::Vec3& out);
+void readOptional(const json& j, const std::string& path, const char* key, bool& out);
+void readOptional(const json& j, const std::string& path, const char* key, uint32_t& out);
+void readOptional(const json& j, const std::string& path, const char* key, postfx::UVec2& out);
+void readOptional(const json& j, const std::string& path, const char* key, postfx::UVec3& out);
 
 // Writers, in the form the readers accept back exactly.
 json number(float f);

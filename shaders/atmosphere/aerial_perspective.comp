@@ -40,7 +40,7 @@ void main() {
     vec4 p = atmo.apClipToView * vec4(ndc, 0.5, 1.0);
     vec3 dir = normalize(p.xyz / p.w);
     vec3 origin = atmo.apCamera.xyz;
-    vec2 top = atmosphereRaySphere(origin, dir, atmo.radii.y);
+    vec2 top = raySphere(origin, dir, atmo.radii.y);
     float tBegin = max(top.x, 0.0);
     float sliceLength = atmo.apCamera.w / float(slices);
 

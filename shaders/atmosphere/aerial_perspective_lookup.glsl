@@ -15,7 +15,7 @@ void aerialPerspective(vec3 x, out vec3 luminance, out vec3 transmittance) {
     vec2 uv = clip.w > 0.0 ? clamp(clip.xy / clip.w * 0.5 + 0.5, 0.0, 1.0) : vec2(0.5);
     // From space the LUT's slices start where each ray enters the atmosphere; inside it, at the camera.
     float entry = 0.0;
-    if (atmo.apOffset.w != 0.0) entry = max(atmosphereRaySphere(atmo.apCamera.xyz, dir, atmo.radii.y).x, 0.0);
+    if (atmo.apOffset.w != 0.0) entry = max(raySphere(atmo.apCamera.xyz, dir, atmo.radii.y).x, 0.0);
     float w = clamp((distance - entry) * atmo.applyAp.x, 0.0, 1.0);  // [0, 1] over the LUT's depth
     // L: filtered between the slices' ends (texel k holds the end of slice k); within the first slice it
     // runs from 0 at the entry.

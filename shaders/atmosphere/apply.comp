@@ -30,15 +30,8 @@ const float kColorMax = 65504.0;  // largest finite half: never write Inf
 #endif
 
 #include "atmosphere/model.glsl"
+#include "common/composite.glsl"
 #include "atmosphere/aerial_perspective_lookup.glsl"
-
-// out = color·T + L, as the fogs composite (fog/composite.glsl): ±Inf in the host's color counts as
-// ±kColorMax, the result is clamped to the format's range, a NaN channel of the host's stays NaN.
-vec3 compositeAtmosphere(vec3 color, vec3 transmittance, vec3 luminance) {
-    vec3 bounded = clamp(color, vec3(-kColorMax), vec3(kColorMax));
-    vec3 result = clamp(bounded * transmittance + luminance, vec3(-kColorMax), vec3(kColorMax));
-    return mix(result, color, isnan(color));
-}
 
 // The transmittance LUT's T from planet-centred p along unit d to the top (d not toward the ground).
 vec3 transmittanceToTop(vec3 p, vec3 d) {
@@ -75,7 +68,7 @@ void applyPixel(uvec2 pixel, vec2 ndc, vec4 color, float depth) {
     if (!noGeometry) {
         vec3 L, T;
         aerialPerspective(p.xyz / p.w, L, T);
-        result = compositeAtmosphere(color.rgb, T, L * E);
+        result = compositeOver(color.rgb, T, L * E);
     } else {
         vec3 d = normalize(p.w < 0.0 ? -p.xyz : p.xyz);  // p.xyz / p.w, normalised
         vec3 o = atmo.camera.xyz;
@@ -101,7 +94,7 @@ void applyPixel(uvec2 pixel, vec2 ndc, vec4 color, float depth) {
             }
             if (disk) L += T * atmo.sun.w;  // the disk: E / solid angle, per unit illuminance
         }
-        result = compositeAtmosphere(mix(background, color.rgb, isnan(color.rgb)), T, L * E);
+        result = compositeOver(mix(background, color.rgb, isnan(color.rgb)), T, L * E);
     }
     imageStore(colorOut, ivec2(pixel), vec4(result, color.a));
 }

@@ -6,6 +6,7 @@
 #define POSTFX_ATMOSPHERE_MODEL_GLSL
 
 #include "atmosphere/transmittance_lut.glsl"
+#include "common/ray_sphere.glsl"
 
 const float kAtmospherePi = 3.14159265358979;
 
@@ -31,29 +32,13 @@ AtmosphereMedium atmosphereMedium(float altitude) {
     return m;
 }
 
-// Ray o + t·d (|d| = 1) against the sphere of `radius` at the origin: (tNear, tFar), or both -1 when it
-// misses. The discriminant as radius² - h², h the ray's distance to the centre, and the roots as q and
-// c/q, so neither cancels for an origin far from the sphere or on it.
-vec2 atmosphereRaySphere(vec3 o, vec3 d, float radius) {
-    float b = dot(o, d);
-    float h = length(o - b * d);
-    float disc = (radius - h) * (radius + h);
-    if (disc < 0.0) return vec2(-1.0);
-    float len = length(o);
-    float c = (len - radius) * (len + radius);
-    float q = -b - (b < 0.0 ? -1.0 : 1.0) * sqrt(disc);
-    if (q == 0.0) return vec2(0.0);
-    float t0 = q, t1 = c / q;
-    return vec2(min(t0, t1), max(t0, t1));
-}
-
 // The part of ray o + t·d (t >= 0) inside the atmosphere and before the ground: x = begin, y = end
 // (end <= begin: none), z = 1 when it ends on the ground.
 vec3 atmosphereSegment(vec3 o, vec3 d) {
-    vec2 top = atmosphereRaySphere(o, d, atmo.radii.y);
+    vec2 top = raySphere(o, d, atmo.radii.y);
     if (top.y <= 0.0) return vec3(0.0);
     vec3 seg = vec3(max(top.x, 0.0), top.y, 0.0);
-    vec2 ground = atmosphereRaySphere(o, d, atmo.radii.x);
+    vec2 ground = raySphere(o, d, atmo.radii.x);
     if (ground.x < ground.y && ground.x >= 0.0 && ground.x < seg.y) seg.yz = vec2(ground.x, 1.0);
     return seg;
 }

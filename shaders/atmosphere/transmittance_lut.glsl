@@ -21,4 +21,15 @@ bool rayMeetsGround(float r, float mu, float ground) {
     return mu < 0.0 && (r <= ground || (ground - r) * (ground + r) + r * r * mu * mu >= 0.0);
 }
 
+// The sun's transmittance through the atmosphere from planet-centred p toward unit `toSun`, from the LUT
+// `lut` of `size` texels: 0 where the planet hides the sun, 1 above the top (for the effects lit by the sun
+// through the atmosphere: the fogs' samples, the clouds').
+vec3 sunTransmittanceFromLut(sampler2D lut, vec3 p, vec3 toSun, float ground, float top, vec2 size) {
+    float r = length(p);
+    float mu = dot(p, toSun) / r;
+    if (rayMeetsGround(r, mu, ground)) return vec3(0.0);
+    if (r >= top) return vec3(1.0);
+    return textureLod(lut, transmittanceLutUv(r, mu, ground, top, size), 0.0).rgb;
+}
+
 #endif

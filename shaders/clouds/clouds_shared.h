@@ -9,8 +9,7 @@
 namespace postfx::gpu {
 #endif
 
-PFX_CONST(uint, kCloudGroupSize, 8);       // march workgroup: 8×8 pixels
-PFX_CONST(uint, kCloudNoiseGroupSize, 4);  // noise generation: 4×4×4 texels
+PFX_CONST(uint, kCloudGroupSize, 8);  // march workgroup: 8×8 pixels
 
 PFX_CONST(uint, kCloudBindingUniforms, 0);     // uniform buffer: CloudUniforms
 PFX_CONST(uint, kCloudBindingColorIn, 1);      // storage image: host color (read)
@@ -23,7 +22,6 @@ PFX_CONST(uint, kCloudBindingAtmosphere, 6);        // uniform buffer: Atmospher
 PFX_CONST(uint, kCloudBindingTransmittanceLut, 7);  // sampler2D: the sun's transmittance (r, μ)
 PFX_CONST(uint, kCloudBindingApScattering, 8);      // sampler3D: aerial perspective's in-scattering
 PFX_CONST(uint, kCloudBindingApTransmittance, 9);   // sampler2DArray: aerial perspective's T
-PFX_CONST(uint, kCloudNoiseBindingTexture, 0);      // noise generation: storage image (r8)
 
 // Flags in CloudUniforms.flags.x
 PFX_CONST(uint, kCloudFlagNoise, 1u);   // sample the noise textures (off: the field is 1)
@@ -64,10 +62,6 @@ struct CloudUniforms {
     uvec4 counts;       // x: steps, y: light steps, z: octaves
     uvec4 extent;       // xy: color extent [px], z: frame index, w: 0
     uvec4 flags;        // x: kCloudFlag* bits
-};
-
-struct CloudNoisePush {
-    uvec4 params;  // x: size, y: seed, z: 0 Perlin–Worley (base), 1 Worley fBm (detail)
 };
 
 #ifdef __cplusplus

@@ -4,21 +4,7 @@
 #ifndef POSTFX_CLOUDS_DENSITY_GLSL
 #define POSTFX_CLOUDS_DENSITY_GLSL
 
-// Ray o + t·d (|d| = 1) against the sphere of `radius` at the origin: (tNear, tFar), or (1, -1) when it
-// misses. Roots as q and c/q, so neither cancels.
-vec2 cloudRaySphere(vec3 o, vec3 d, float radius) {
-    float b = dot(o, d);
-    vec3 perpendicular = o - b * d;
-    float h = length(perpendicular);
-    float disc = (radius - h) * (radius + h);
-    if (disc < 0.0) return vec2(1.0, -1.0);
-    float len = length(o);
-    float c = (len - radius) * (len + radius);
-    float q = -b - (b < 0.0 ? -1.0 : 1.0) * sqrt(disc);
-    if (q == 0.0) return vec2(0.0);
-    float t0 = q, t1 = c / q;
-    return vec2(min(t0, t1), max(t0, t1));
-}
+#include "common/ray_sphere.glsl"
 
 // The part of ray o + t·d inside the shape, t in [0, far]: (begin, end), end <= begin when none. Rays
 // that cross a curved layer twice (from above it, through the space under it) are marched over both
@@ -39,15 +25,15 @@ vec2 cloudSegment(vec3 x0, vec3 d, float far) {
     } else if ((flags & kCloudFlagCurved) != 0u) {
         vec3 o = cl.origin.xyz + x0;
         float ground = cl.layer.z;
-        vec2 outer = cloudRaySphere(o, d, ground + cl.layer.y);
-        if (outer.y < outer.x) return vec2(1.0, 0.0);
+        vec2 outer = raySphere(o, d, ground + cl.layer.y);
+        if (outer.y <= 0.0) return vec2(1.0, 0.0);  // misses it (-1, -1) or it lies behind
         seg = vec2(max(seg.x, outer.x), min(seg.y, outer.y));
         // Inside the bottom sphere at the start: begin where the ray leaves it.
-        vec2 inner = cloudRaySphere(o, d, ground + cl.layer.x);
+        vec2 inner = raySphere(o, d, ground + cl.layer.x);
         if (inner.y > inner.x && inner.x <= seg.x && inner.y > seg.x) seg.x = inner.y;
         // From inside or above the layer into the bottom sphere: the planet's side of it; a ray that meets
         // the ground there ends at it.
-        vec2 planet = cloudRaySphere(o, d, ground);
+        vec2 planet = raySphere(o, d, ground);
         if (planet.y > planet.x && planet.x > 0.0) seg.y = min(seg.y, planet.x);
     } else {
         float y = cl.origin.y + x0.y;

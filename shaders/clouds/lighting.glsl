@@ -35,12 +35,8 @@ float cloudPhase(vec3 d, float scale) {
 #ifdef ATMOSPHERE
 // The atmosphere's transmittance from camera-relative x toward the sun (0 where the planet hides it).
 vec3 cloudAtmosphereTransmittance(vec3 x) {
-    vec3 p = atmo.camera.xyz + x;
-    float r = length(p);
-    float mu = dot(p, cl.toSun.xyz) / r;
-    if (rayMeetsGround(r, mu, atmo.radii.x)) return vec3(0.0);
-    if (r >= atmo.radii.y) return vec3(1.0);
-    return textureLod(transmittanceLut, transmittanceUv(r, mu), 0.0).rgb;
+    return sunTransmittanceFromLut(transmittanceLut, atmo.camera.xyz + x, cl.toSun.xyz, atmo.radii.x,
+                                   atmo.radii.y, vec2(atmo.transmittanceLut.xy));
 }
 #endif
 

@@ -48,15 +48,8 @@ layout(binding = kCloudBindingApTransmittance) uniform sampler2DArray apTransmit
 #include "clouds/density.glsl"
 #include "clouds/lighting.glsl"
 #include "common/ign.glsl"
+#include "common/composite.glsl"
 #include "common/integrate.glsl"
-
-// out = color·T + L clamped to the format's range (±Inf in color counts as ±kColorMax; a NaN channel of
-// the host's stays NaN), as the other effects composite.
-vec3 compositeClouds(vec3 color, float transmittance, vec3 luminance) {
-    vec3 bounded = clamp(color, vec3(-kColorMax), vec3(kColorMax));
-    vec3 result = clamp(bounded * transmittance + luminance, vec3(-kColorMax), vec3(kColorMax));
-    return mix(result, color, isnan(color));
-}
 
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
@@ -101,7 +94,7 @@ void main() {
         aerialPerspective(d * (weightedDistance / (1.0 - T)), apL, apT);
         L = apT * L + (1.0 - T) * apL * atmo.sun.rgb;
 #endif
-        result = compositeClouds(color.rgb, T, L);
+        result = compositeOver(color.rgb, T, L);
     }
     imageStore(colorOut, ivec2(pixel), vec4(result, color.a));
 }

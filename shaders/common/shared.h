@@ -35,6 +35,16 @@ PFX_CONST(uint, kNoiseWorleyBasePeriod, 4u);  // cells per tile of the first Wor
 // Perlin–Worley values below this map to 0 (stretches the used range to mean ~0.5; noise.glsl).
 PFX_CONST(float, kNoiseRangeLow, 0.3f);
 
+// ---- the noise generation pass (shaders/common/noise_generate.comp): the fogs' and the clouds' textures
+// ----
+PFX_CONST(uint, kNoiseGroupSize, 4);       // workgroup: kNoiseGroupSize³ texels
+PFX_CONST(uint, kNoiseBindingTexture, 0);  // storage image: the r8 noise texture being generated
+PFX_CONST(uint, kNoisePerlinWorley, 0u);   // NoisePush.params.z: the Perlin–Worley fBm
+PFX_CONST(uint, kNoiseWorley, 1u);         // NoisePush.params.z: the inverted Worley fBm alone
+struct NoisePush {                         // push constants of noise_generate.comp
+    uvec4 params;  // x: texture size [texels], y: seed, z: kNoisePerlinWorley or kNoiseWorley
+};
+
 // ---- temporal accumulation, both fogs (docs/temporal.md; postfx/src/core/temporal.h) ----
 PFX_CONST(uint, kTemporalMaxSpheres, 64u);  // postfx::kTemporalMaxRejectedSpheres
 
@@ -49,6 +59,7 @@ struct TemporalUniforms {
 
 #ifdef __cplusplus
 static_assert(sizeof(TemporalUniforms) == 64 + 3 * 16 + 64 * 16, "TemporalUniforms must match std140");
+static_assert(sizeof(NoisePush) == 16, "NoisePush must match the shader's push constants");
 }  // namespace postfx::gpu
 #endif
 

@@ -12,14 +12,8 @@ layout(binding = kFogBindingAtmosphere) uniform sampler2D atmosphereTransmittanc
 // T of the atmosphere from camera-relative x toward the sun; 1 with the atmosphere off.
 vec3 atmosphereSunTransmittance(vec3 x) {
     if ((fog.flags.x & kFogFlagAtmosphere) == 0u) return vec3(1.0);
-    vec3 p = fog.planetCamera.xyz + x;
-    float r = length(p);
-    float mu = dot(p, fog.toSun.xyz) / r;
-    float ground = fog.planet.x, top = fog.planet.y;
-    if (rayMeetsGround(r, mu, ground)) return vec3(0.0);
-    if (r >= top) return vec3(1.0);
-    return textureLod(atmosphereTransmittance, transmittanceLutUv(r, mu, ground, top, fog.planet.zw), 0.0)
-        .rgb;
+    return sunTransmittanceFromLut(atmosphereTransmittance, fog.planetCamera.xyz + x, fog.toSun.xyz,
+                                   fog.planet.x, fog.planet.y, fog.planet.zw);
 }
 
 #endif

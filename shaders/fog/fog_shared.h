@@ -44,9 +44,6 @@ PFX_CONST(float, kFogTemporalFilterRange, 0.25f);
 // is used for a pixel when its surface distance is within this fraction of the pixel's [1].
 PFX_CONST(float, kFogUpsampleDistanceTolerance, 0.1f);
 
-PFX_CONST(uint, kNoiseGroupSize, 4);       // noise generation workgroup: kNoiseGroupSize³ texels
-PFX_CONST(uint, kNoiseBindingTexture, 0);  // storage image: the r8 noise texture being generated
-
 // The height term's exponent -height_falloff·(y - base_height) is clamped to at most this, so that
 // h(y) = e^80 ≈ 5.5e34 stays finite in float far below the base height (fog.md, "Model").
 PFX_CONST(float, kMaxHeightExponent, 80.0f);
@@ -84,14 +81,8 @@ struct FogUniforms {
     vec4 planetCamera;
 };
 
-// ---- the fog's noise generation pass (shaders/fog/noise_generate.comp; formula: common/noise.glsl) ----
-struct NoisePush {  // push constants of noise_generate.comp
-    uvec4 params;   // x: texture size [texels], y: seed
-};
-
 #ifdef __cplusplus
 static_assert(sizeof(FogUniforms) == 2 * 64 + 15 * 16, "FogUniforms must match std140");
-static_assert(sizeof(NoisePush) == 16, "NoisePush must match the shader's push constants");
 }  // namespace postfx::gpu
 #endif
 

@@ -15,7 +15,7 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 #include "common/phase.glsl"
 #include "fog/medium.glsl"
 #include "fog/ray.glsl"
-#include "fog/composite.glsl"
+#include "common/composite.glsl"
 #include "fog/march.glsl"
 
 void main() {
@@ -24,5 +24,5 @@ void main() {
     vec4 color = imageLoad(colorIn, ivec2(pixel));
     FogScatter s = marchFog(fogRay(pixel), pixel);
     imageStore(colorOut, ivec2(pixel),
-               vec4(compositeFog(color.rgb, s.transmittance, s.inScattered), color.a));
+               vec4(compositeOver(color.rgb, s.transmittance, s.inScattered), color.a));
 }

@@ -44,7 +44,7 @@ layout(binding = kFogBindingTemporal, std140) uniform Temporal {
 
 #include "fog/ray.glsl"
 #ifdef COMPOSITE
-#include "fog/composite.glsl"
+#include "common/composite.glsl"
 #endif
 
 bool finite(vec4 v) {
@@ -181,6 +181,6 @@ void main() {
     imageStore(historyOut, ivec2(texel), result);
 #ifdef COMPOSITE
     vec4 color = imageLoad(colorIn, ivec2(texel));
-    imageStore(colorOut, ivec2(texel), vec4(compositeFog(color.rgb, result.a, result.rgb), color.a));
+    imageStore(colorOut, ivec2(texel), vec4(compositeOver(color.rgb, result.a, result.rgb), color.a));
 #endif
 }

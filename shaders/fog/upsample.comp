@@ -18,7 +18,7 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 #include "fog/scatter_image.glsl"
 
 #include "fog/ray.glsl"
-#include "fog/composite.glsl"
+#include "common/composite.glsl"
 
 // |a - b|, 0 when both are infinite (pixels with no geometry match each other), ∞ when one is.
 float distanceDifference(float a, float b) {
@@ -62,5 +62,5 @@ void main() {
         }
     }
     vec4 scatter = weight > 0.0 ? sum / weight : nearest;
-    imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, scatter.a, scatter.rgb), color.a));
+    imageStore(colorOut, ivec2(pixel), vec4(compositeOver(color.rgb, scatter.a, scatter.rgb), color.a));
 }

@@ -2,7 +2,7 @@
 // Pass 3 of the froxel fog (docs/effects/froxel-fog.md, "Passes"): each pixel reads the integrated
 // volume (L, T) at its surface distance along its ray (max distance for pixels beyond it or with no
 // geometry), adds the ray-marched fog's analytic tail beyond max distance, and writes
-// out = color · T + L (fog/composite.glsl).
+// out = color · T + L (common/composite.glsl).
 // Variants: COLOR_RGBA32F selects the storage format of the color images (default rgba16f).
 #extension GL_GOOGLE_include_directive : require
 
@@ -18,7 +18,7 @@ layout(binding = kFroxelBindingIntegrated) uniform sampler3D integratedVolume;
 #include "fog/medium.glsl"
 #include "fog/atmosphere_light.glsl"
 #include "fog/ray.glsl"
-#include "fog/composite.glsl"
+#include "common/composite.glsl"
 #include "froxel_fog/grid.glsl"
 
 // The volume at normalised coordinate p with the hardware's trilinear filter, or a tricubic B-spline
@@ -70,5 +70,5 @@ void main() {
     addAnalyticTail(ray.dir, ray.surfaceDistance,
                     sunPhase * atmosphereSunTransmittance(ray.dir * fog.medium.w), inScattered,
                     transmittance);
-    imageStore(colorOut, ivec2(pixel), vec4(compositeFog(color.rgb, transmittance, inScattered), color.a));
+    imageStore(colorOut, ivec2(pixel), vec4(compositeOver(color.rgb, transmittance, inScattered), color.a));
 }

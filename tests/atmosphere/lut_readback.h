@@ -3,7 +3,7 @@
 #pragma once
 
 #include "core/gpu_resources.h"
-#include "gpu_test.h"
+#include "fog_harness.h"
 
 #include <postfx/context.h>
 
@@ -11,6 +11,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -24,26 +25,17 @@ struct LutTexels {
 inline LutTexels readLutTexels(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
                                const postfx::Context& context, const char* name) {
     LutTexels lut;
-    postfx::core::GpuBuffer buffer;
-    EXPECT_TRUE(buffer.create(gpu, 64u << 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "lut readback").ok());
     VkExtent3D extent{};
-    VkDeviceSize bytes = 0;
-    postfx::Status status;
-    std::string error;
-    EXPECT_TRUE(host.submitAndWait(
-        [&](VkCommandBuffer cmd) {
-            status = context.recordImageReadback({name}, cmd, buffer.handle(), 0, extent, bytes);
-        },
-        error))
-        << error;
-    EXPECT_TRUE(status.ok()) << status.message;
+    const std::vector<uint8_t> bytes = readHeldImage(host, gpu, context, name, extent);
     lut.width = extent.width;
     lut.height = extent.height;
     lut.depth = extent.depth;
-    const auto* half = static_cast<const uint16_t*>(buffer.mapped());
-    lut.rgba.resize(bytes / 2);
-    for (size_t i = 0; i < lut.rgba.size(); ++i)
-        lut.rgba[i] = glm::unpackHalf1x16(half[i]);
+    lut.rgba.resize(bytes.size() / 2);
+    for (size_t i = 0; i < lut.rgba.size(); ++i) {
+        uint16_t half;
+        std::memcpy(&half, &bytes[2 * i], sizeof half);
+        lut.rgba[i] = glm::unpackHalf1x16(half);
+    }
     return lut;
 }
 

@@ -28,14 +28,6 @@ namespace {
 
 namespace atm = postfx::atmosphere;
 
-// A camera at world `position` looking along `forward` (reversed Z, finite far).
-postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dvec3 up, float fovYDeg,
-                               float aspect) {
-    postfx::CameraInput camera = testCamera(position, fovYDeg, aspect, 0.1f, 1e6f, true);
-    camera.view = glm::mat4(glm::lookAt(position, position + forward, up));
-    return camera;
-}
-
 struct LutImage : LutTexels {
     glm::dvec4 at(uint32_t x, uint32_t y, uint32_t z = 0) const {
         const size_t i = ((size_t(z) * height + y) * width + x) * 4;
@@ -43,17 +35,8 @@ struct LutImage : LutTexels {
     }
 };
 
-class AtmosphereGpuTest : public GpuTest {
+class AtmosphereGpuTest : public ReversedZContextTest {
 protected:
-    void SetUp() override {
-        GpuTest::SetUp();
-        ASSERT_TRUE(host);
-        ASSERT_TRUE(gpu.init(hostHandles()).ok());
-        postfx::ContextCreateInfo info;
-        info.depth.reversedZ = true;
-        ASSERT_TRUE(createContext(context, info).ok());
-    }
-
     // A frame of `width`×`height` sky pixels (depth 0: no geometry) over black, or with geometry at
     // `distance` [m] along each pixel's ray when distance > 0.
     FogHarnessImages images(const postfx::CameraInput& camera, uint32_t width, uint32_t height,
@@ -90,9 +73,6 @@ protected:
         frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.05, 0.0}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
         return frame;
     }
-
-    postfx::core::Gpu gpu;
-    std::unique_ptr<postfx::Context> context;
 };
 
 // Each transmittance texel against exp(-τ) of its (r, μ) marched with 4096 steps in double: the LUT's

@@ -14,26 +14,14 @@
 namespace test {
 namespace {
 
-std::vector<std::string> passNames(const postfx::FramePlan& plan) {
-    std::vector<std::string> names;
-    for (const postfx::PlannedPass& p : plan.passes)
-        names.push_back(p.name);
-    return names;
-}
-
 const std::string kT = "atmosphere.transmittance", kMs = "atmosphere.multiple_scattering",
                   kSky = "atmosphere.sky_view", kAp = "atmosphere.aerial_perspective",
                   kApply = "atmosphere.apply";
 
-class AtmospherePlanTest : public GpuTest {
+class AtmospherePlanTest : public ReversedZContextTest {
 protected:
     void SetUp() override {
-        GpuTest::SetUp();
-        ASSERT_TRUE(host);
-        ASSERT_TRUE(gpu.init(hostHandles()).ok());
-        postfx::ContextCreateInfo info;
-        info.depth.reversedZ = true;
-        ASSERT_TRUE(createContext(context, info).ok());
+        ReversedZContextTest::SetUp();
         frame.atmosphere.enabled = true;
         frame.sun.toSun = {0.8f, 0.6f, 0.0f};
         frame.sun.illuminance = postfx::Vec3(1e5f);
@@ -54,26 +42,10 @@ protected:
     // Plans and records the frame; the recorded passes (timings) must be the plan's.
     std::vector<std::string> planAndRun() {
         frame.frameIndex = frameIndex++;
-        postfx::FramePlan plan;
-        postfx::Status planned = postfx::Status::success();
-        FogHarness harness(*host, gpu);
-        harness.onBeforeRecord = [&](const postfx::FrameInfo& f) { planned = context->plan(f, plan); };
-        std::vector<float> out;
-        const postfx::Status s = harness.run(*context, im, frame, out);
-        EXPECT_TRUE(s.ok()) << s.message;
-        EXPECT_TRUE(planned.ok()) << planned.message;
-        std::vector<postfx::PassTiming> timings;
-        EXPECT_TRUE(context->readPassTimings(frame.frameIndex, timings).ok());
-        std::vector<std::string> recorded;
-        for (const postfx::PassTiming& t : timings)
-            recorded.push_back(t.name);
-        EXPECT_EQ(recorded, passNames(plan)) << "frame " << frame.frameIndex;
-        last = plan;
-        return passNames(plan);
+        last = planAndRecord(*host, gpu, *context, im, frame);
+        return passNames(last);
     }
 
-    postfx::core::Gpu gpu;
-    std::unique_ptr<postfx::Context> context;
     postfx::FrameInfo frame;
     FogHarnessImages im;
     postfx::FramePlan last;

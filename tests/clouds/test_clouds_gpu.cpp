@@ -3,6 +3,7 @@
 // CPU reference in double (reference::renderClouds) from below, inside, above and grazing, and through the
 // atmosphere. Small images on lavapipe.
 #include "clouds/clouds_effect.h"
+#include "clouds_frames.h"
 #include "fog/noise_cpu.h"
 #include "fog_harness.h"
 #include "image_compare.h"
@@ -20,25 +21,8 @@
 namespace test {
 namespace {
 
-// A camera at world `position` looking along `forward` (reversed Z, finite far).
-postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dvec3 up, float fovYDeg,
-                               float aspect) {
-    postfx::CameraInput camera = testCamera(position, fovYDeg, aspect, 0.1f, 1e6f, true);
-    camera.view = glm::mat4(glm::lookAt(position, position + forward, up));
-    return camera;
-}
-
-class CloudsGpuTest : public GpuTest {
+class CloudsGpuTest : public ReversedZContextTest {
 protected:
-    void SetUp() override {
-        GpuTest::SetUp();
-        ASSERT_TRUE(host);
-        ASSERT_TRUE(gpu.init(hostHandles()).ok());
-        postfx::ContextCreateInfo info;
-        info.depth.reversedZ = true;
-        ASSERT_TRUE(createContext(context, info).ok());
-    }
-
     // `width`×`height` sky pixels (no geometry) of color `sky`.
     static FogHarnessImages images(uint32_t width, uint32_t height, float sky) {
         FogHarnessImages im;
@@ -60,23 +44,11 @@ protected:
 
     // A noise texture read back as floats in [0, 1].
     std::vector<float> readNoise(const char* name) {
-        postfx::core::GpuBuffer buffer;
-        EXPECT_TRUE(buffer.create(gpu, 32u << 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "noise").ok());
         VkExtent3D extent{};
-        VkDeviceSize bytes = 0;
-        postfx::Status status;
-        std::string error;
-        EXPECT_TRUE(host->submitAndWait(
-            [&](VkCommandBuffer cmd) {
-                status = context->recordImageReadback({name}, cmd, buffer.handle(), 0, extent, bytes);
-            },
-            error))
-            << error;
-        EXPECT_TRUE(status.ok()) << status.message;
-        const auto* p = static_cast<const uint8_t*>(buffer.mapped());
-        std::vector<float> v(bytes);
+        const std::vector<uint8_t> bytes = readHeldImage(*host, gpu, *context, name, extent);
+        std::vector<float> v(bytes.size());
         for (size_t i = 0; i < v.size(); ++i)
-            v[i] = float(p[i]) / 255.0f;
+            v[i] = float(bytes[i]) / 255.0f;
         return v;
     }
 
@@ -103,21 +75,13 @@ protected:
         EXPECT_TRUE(s.ok()) << s.message;
         return out;
     }
-
-    postfx::core::Gpu gpu;
-    std::unique_ptr<postfx::Context> context;
 };
 
 // A flat homogeneous layer (noise off, coverage 1), no light: each sky pixel is the sky times
 // exp(-σ·thickness / cos θ).
 TEST_F(CloudsGpuTest, HomogeneousLayerSeenUpIsBeerLambert) {
     postfx::FrameInfo frame;
-    frame.clouds.enabled = true;
-    frame.clouds.noise.enabled = false;
-    frame.clouds.coverage = 1.0f;
-    frame.clouds.bottomHeight = 1000.0f;
-    frame.clouds.topHeight = 2000.0f;
-    frame.clouds.density = 0.002f;
+    frame.clouds = homogeneousLayer();
     frame.camera = lookCamera({0.0, 10.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}, 60.0f, 1.0f);
     const FogHarnessImages im = images(8, 8, 1.0f);
     const std::vector<float> out = render(frame, im);
@@ -190,15 +154,8 @@ TEST_F(CloudsGpuTest, MatchesReferenceFromBelowInsideAboveAndGrazing) {
                           {"grazing", {0.0, 200.0, 0.0}, {1.0, 0.02, -0.3}}};
     for (const View& v : views) {
         postfx::FrameInfo frame;
-        frame.clouds.enabled = true;
-        frame.clouds.coverage = 0.6f;
-        frame.clouds.noise.baseSize = 32;
-        frame.clouds.noise.detailSize = 16;
+        frame.clouds = finelyMarchedNoisyClouds();
         frame.clouds.noise.tiling = 8000.0f;
-        frame.clouds.steps = 256;
-        frame.clouds.lightSteps = 32;
-        frame.clouds.maxDistance = 30000.0f;
-        frame.clouds.jitter = false;
         frame.sun.toSun = glm::normalize(glm::vec3(0.6f, 0.7f, 0.3f));
         frame.sun.illuminance = postfx::Vec3(10.0f);
         frame.ambient = postfx::Vec3(0.3f, 0.4f, 0.6f);
@@ -208,7 +165,6 @@ TEST_F(CloudsGpuTest, MatchesReferenceFromBelowInsideAboveAndGrazing) {
         const std::vector<float> out = render(frame, im);
         const std::vector<float> base = readNoise("clouds.base_noise");
         const std::vector<float> detail = readNoise("clouds.detail_noise");
-        frame.clouds.lightSteps = 32;
         const std::vector<float> ref = reference(frame, im, base, detail);
         const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.05, 1e-2);
         std::printf("[ clouds ] %s: GPU vs reference %s\n", v.name, stats.summary().c_str());
@@ -223,14 +179,7 @@ TEST_F(CloudsGpuTest, CurvedLayerThroughTheAtmosphereMatchesReference) {
     postfx::FrameInfo frame;
     frame.atmosphere.enabled = true;
     frame.atmosphere.multipleScattering = false;
-    frame.clouds.enabled = true;
-    frame.clouds.coverage = 0.6f;
-    frame.clouds.noise.baseSize = 32;
-    frame.clouds.noise.detailSize = 16;
-    frame.clouds.steps = 256;
-    frame.clouds.lightSteps = 32;
-    frame.clouds.maxDistance = 30000.0f;
-    frame.clouds.jitter = false;
+    frame.clouds = finelyMarchedNoisyClouds();
     frame.sun.toSun = glm::normalize(glm::vec3(0.6f, 0.3f, 0.3f));
     frame.sun.illuminance = postfx::Vec3(10.0f);
     frame.camera = lookCamera({0.0, 200.0, 0.0}, {1.0, 0.25, 0.2}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
@@ -241,7 +190,6 @@ TEST_F(CloudsGpuTest, CurvedLayerThroughTheAtmosphereMatchesReference) {
     postfx::FrameInfo skyOnly = frame;
     skyOnly.clouds.enabled = false;
     im.color = render(skyOnly, im);
-    frame.clouds.enabled = true;
     render(frame, images(4, 2, 0.0f));  // holds the noise textures again for the read-back
     const std::vector<float> base = readNoise("clouds.base_noise");
     const std::vector<float> detail = readNoise("clouds.detail_noise");

@@ -2,6 +2,7 @@
 // single scattering of the sun in a homogeneous slab, the phase function's normalisation, the shapes'
 // intersections.
 #include "clouds/clouds_model.h"
+#include "clouds_frames.h"
 
 #include <gtest/gtest.h>
 
@@ -16,12 +17,7 @@ namespace cl = postfx::clouds;
 // A flat homogeneous layer (noise off, coverage 1) between 1000 and 2000 m, camera at 10 m.
 postfx::FrameInfo homogeneousFrame() {
     postfx::FrameInfo f;
-    f.clouds.enabled = true;
-    f.clouds.noise.enabled = false;
-    f.clouds.coverage = 1.0f;
-    f.clouds.bottomHeight = 1000.0f;
-    f.clouds.topHeight = 2000.0f;
-    f.clouds.density = 0.002f;
+    f.clouds = test::homogeneousLayer();
     f.clouds.albedo = 0.9f;
     f.clouds.multipleScattering.octaves = 1;
     f.clouds.lightDistance = 1e5f;

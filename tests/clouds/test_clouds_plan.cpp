@@ -14,24 +14,16 @@ namespace {
 
 using Passes = std::vector<std::string>;
 
-class CloudsPlanTest : public GpuTest {
+class CloudsPlanTest : public ReversedZContextTest {
 protected:
     void SetUp() override {
-        GpuTest::SetUp();
-        ASSERT_TRUE(host);
-        ASSERT_TRUE(gpu.init(hostHandles()).ok());
-        postfx::ContextCreateInfo info;
-        info.depth.reversedZ = true;
-        ASSERT_TRUE(createContext(context, info).ok());
+        ReversedZContextTest::SetUp();
         frame.clouds.enabled = true;
         frame.clouds.noise.baseSize = 32;
         frame.clouds.noise.detailSize = 16;
         frame.sun.toSun = {0.6f, 0.8f, 0.0f};
         frame.sun.illuminance = postfx::Vec3(1e5f);
-        const glm::dvec3 position(0.0, 10.0, 0.0);
-        frame.camera = testCamera(position, 60.0f, 2.0f, 0.1f, 1e5f, true);
-        frame.camera.view =
-            glm::mat4(glm::lookAt(position, position + glm::dvec3(1.0, 0.4, 0.0), glm::dvec3(0.0, 1.0, 0.0)));
+        frame.camera = lookCamera({0.0, 10.0, 0.0}, {1.0, 0.4, 0.0}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
         im.width = 16;
         im.height = 8;
         im.colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
@@ -42,24 +34,8 @@ protected:
     // Plans and records the frame; the recorded passes (timings) must be the plan's.
     Passes planAndRun() {
         frame.frameIndex = frameIndex++;
-        postfx::FramePlan plan;
-        postfx::Status planned = postfx::Status::success();
-        FogHarness harness(*host, gpu);
-        harness.onBeforeRecord = [&](const postfx::FrameInfo& f) { planned = context->plan(f, plan); };
-        std::vector<float> out;
-        const postfx::Status s = harness.run(*context, im, frame, out);
-        EXPECT_TRUE(s.ok()) << s.message;
-        EXPECT_TRUE(planned.ok()) << planned.message;
-        std::vector<postfx::PassTiming> timings;
-        EXPECT_TRUE(context->readPassTimings(frame.frameIndex, timings).ok());
-        Passes recorded, names;
-        for (const postfx::PassTiming& t : timings)
-            recorded.push_back(t.name);
-        for (const postfx::PlannedPass& p : plan.passes)
-            names.push_back(p.name);
-        EXPECT_EQ(recorded, names) << "frame " << frame.frameIndex;
-        last = plan;
-        return names;
+        last = planAndRecord(*host, gpu, *context, im, frame);
+        return passNames(last);
     }
 
     uint64_t bytesOf(const std::string& name) const {
@@ -68,8 +44,6 @@ protected:
         return 0;
     }
 
-    postfx::core::Gpu gpu;
-    std::unique_ptr<postfx::Context> context;
     postfx::FrameInfo frame;
     FogHarnessImages im;
     postfx::FramePlan last;

@@ -2,6 +2,7 @@
 
 #include "core/barriers.h"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
 #include <cstring>
@@ -235,6 +236,67 @@ float depthAtDistance(const postfx::CameraInput& camera, glm::dvec3 direction, d
     rotation[3] = glm::dvec4(0, 0, 0, 1);
     const glm::dvec4 clip = glm::dmat4(camera.projection) * rotation * glm::dvec4(direction * distance, 1.0);
     return float(clip.z / clip.w);
+}
+
+postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dvec3 up, float fovYDeg,
+                               float aspect) {
+    postfx::CameraInput camera = testCamera(position, fovYDeg, aspect, 0.1f, 1e6f, true);
+    camera.view = glm::mat4(glm::lookAt(position, position + forward, up));
+    return camera;
+}
+
+void ReversedZContextTest::SetUp() {
+    GpuTest::SetUp();
+    ASSERT_TRUE(host);
+    ASSERT_TRUE(gpu.init(hostHandles()).ok());
+    postfx::ContextCreateInfo info;
+    info.depth.reversedZ = true;
+    ASSERT_TRUE(createContext(context, info).ok());
+}
+
+std::vector<std::string> passNames(const postfx::FramePlan& plan) {
+    std::vector<std::string> names;
+    for (const postfx::PlannedPass& p : plan.passes)
+        names.push_back(p.name);
+    return names;
+}
+
+postfx::FramePlan planAndRecord(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
+                                postfx::Context& context, const FogHarnessImages& images,
+                                const postfx::FrameInfo& frame) {
+    postfx::FramePlan plan;
+    postfx::Status planned = postfx::Status::success();
+    FogHarness harness(host, gpu);
+    harness.onBeforeRecord = [&](const postfx::FrameInfo& f) { planned = context.plan(f, plan); };
+    std::vector<float> out;
+    const postfx::Status s = harness.run(context, images, frame, out);
+    EXPECT_TRUE(s.ok()) << s.message;
+    EXPECT_TRUE(planned.ok()) << planned.message;
+    std::vector<postfx::PassTiming> timings;
+    EXPECT_TRUE(context.readPassTimings(frame.frameIndex, timings).ok());
+    std::vector<std::string> recorded;
+    for (const postfx::PassTiming& t : timings)
+        recorded.push_back(t.name);
+    EXPECT_EQ(recorded, passNames(plan)) << "frame " << frame.frameIndex;
+    return plan;
+}
+
+std::vector<uint8_t> readHeldImage(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
+                                   const postfx::Context& context, const char* name, VkExtent3D& extent) {
+    postfx::core::GpuBuffer buffer;
+    EXPECT_TRUE(buffer.create(gpu, 64u << 20, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback").ok());
+    VkDeviceSize bytes = 0;
+    postfx::Status status;
+    std::string error;
+    EXPECT_TRUE(host.submitAndWait(
+        [&](VkCommandBuffer cmd) {
+            status = context.recordImageReadback({name}, cmd, buffer.handle(), 0, extent, bytes);
+        },
+        error))
+        << error;
+    EXPECT_TRUE(status.ok()) << status.message;
+    const auto* p = static_cast<const uint8_t*>(buffer.mapped());
+    return status.ok() ? std::vector<uint8_t>(p, p + bytes) : std::vector<uint8_t>{};
 }
 
 }  // namespace test

@@ -7,7 +7,11 @@
 
 #include <glm/glm.hpp>
 
+#include <postfx/frame_plan.h>
+
 #include <functional>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace test {
@@ -51,5 +55,31 @@ postfx::CameraInput testCamera(glm::dvec3 position, float fovYDeg, float aspect,
 // point at distance `distance` along it, for `camera`.
 glm::dvec3 pixelDirection(const postfx::CameraInput& camera, uint32_t i, uint32_t j, uint32_t w, uint32_t h);
 float depthAtDistance(const postfx::CameraInput& camera, glm::dvec3 direction, double distance);
+
+// A camera at world `position` looking along `forward` with `up` (reversed Z, near 0.1 m, far 1e6 m).
+postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dvec3 up, float fovYDeg,
+                               float aspect);
+
+// A GpuTest with postfx's device functions (`gpu`) and a context of reversed Z (`context`) on its host.
+class ReversedZContextTest : public GpuTest {
+protected:
+    void SetUp() override;
+
+    postfx::core::Gpu gpu;
+    std::unique_ptr<postfx::Context> context;
+};
+
+// Plans `frame` and records it with `images` (FogHarness): expects both to succeed and the passes it
+// recorded (their timings) to be the plan's; returns the plan.
+postfx::FramePlan planAndRecord(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
+                                postfx::Context& context, const FogHarnessImages& images,
+                                const postfx::FrameInfo& frame);
+// A resource postfx holds (Context::recordImageReadback: a LUT, a noise texture) read back as stored,
+// texel after texel; `extent` receives its extent.
+std::vector<uint8_t> readHeldImage(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
+                                   const postfx::Context& context, const char* name, VkExtent3D& extent);
+
+// The plan's passes' names, in recording order.
+std::vector<std::string> passNames(const postfx::FramePlan& plan);
 
 }  // namespace test

@@ -2,6 +2,7 @@
 
 #include "atmosphere/atmosphere_effect.h"
 #include "atmosphere/atmosphere_shared.h"
+#include "clouds/clouds_model.h"
 #include "clouds/clouds_settings.h"
 #include "core/camera_math.h"
 #include "fog/medium_noise.h"
@@ -31,7 +32,7 @@ constexpr core::Binding kMarchAtmosphereBindings[] = {
     {gpu::kCloudBindingBaseNoise, kSampled},    {gpu::kCloudBindingDetailNoise, kSampled},
     {gpu::kCloudBindingAtmosphere, kUniform},   {gpu::kCloudBindingTransmittanceLut, kSampled},
     {gpu::kCloudBindingApScattering, kSampled}, {gpu::kCloudBindingApTransmittance, kSampled}};
-constexpr core::Binding kNoiseBindings[] = {{gpu::kCloudNoiseBindingTexture, kStorage}};
+constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
 
 // [atmosphere][rgba32]
 const core::ComputePipelineDesc kMarch[2][2] = {
@@ -39,10 +40,10 @@ const core::ComputePipelineDesc kMarch[2][2] = {
      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F, kMarchBindings}},
     {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE, kMarchAtmosphereBindings},
      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE, kMarchAtmosphereBindings}}};
-const core::ComputePipelineDesc kBaseNoisePass{"clouds.base_noise", spirv::clouds_noise_generate_comp,
-                                               kNoiseBindings, sizeof(gpu::CloudNoisePush)};
-const core::ComputePipelineDesc kDetailNoisePass{"clouds.detail_noise", spirv::clouds_noise_generate_comp,
-                                                 kNoiseBindings, sizeof(gpu::CloudNoisePush)};
+const core::ComputePipelineDesc kBaseNoisePass{"clouds.base_noise", spirv::common_noise_generate_comp,
+                                               kNoiseBindings, sizeof(gpu::NoisePush)};
+const core::ComputePipelineDesc kDetailNoisePass{"clouds.detail_noise", spirv::common_noise_generate_comp,
+                                                 kNoiseBindings, sizeof(gpu::NoisePush)};
 
 uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kCloudGroupSize - 1) / gpu::kCloudGroupSize;
@@ -54,49 +55,23 @@ double wrap(double value, double period) {
     return r < 0.0 ? r + period : r;
 }
 
-// A generated noise texture: persistent, its pass run only when its size or seed changed.
-core::ImageRef declareNoise(core::FrameBuilder& b, const core::ResourceId& id,
-                            const core::ComputePipelineDesc& pass, uint32_t size, uint32_t seed,
-                            uint32_t kind) {
-    core::ImageDesc desc;
-    desc.type = VK_IMAGE_TYPE_3D;
-    desc.format = fog::kNoiseFormat;
-    desc.extent = {size, size, size};
-    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    const core::ImageRef image = b.persistentImage(id, desc, (uint64_t(size) << 32) | seed);
-    const uint32_t groups = size / gpu::kCloudNoiseGroupSize;  // a power of two >= 8
-    const gpu::CloudNoisePush push{glm::uvec4(size, seed, kind, 0u)};
-    b.pass(pass, groups, groups, groups)
-        .bind(gpu::kCloudNoiseBindingTexture, image, Use::StorageWrite)
-        .push(&push, sizeof push);
-    return image;
-}
-
 }  // namespace
 
 gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth) {
     const CloudSettings& s = frame.clouds;
-    const bool curved = frame.atmosphere.enabled && s.shape == CloudShape::Layer;
+    const bool curved = followsPlanet(frame);
     const glm::dvec3 camera(frame.camera.position);
     gpu::CloudUniforms u{};
     const glm::dmat4 viewToClip = glm::dmat4(frame.camera.projection) * core::rotationOnly(frame.camera.view);
     u.clipToView = glm::mat4(glm::inverse(viewToClip));
     // The box's frame: rotated by yaw about y, then pitch about its x; camera-relative x -> box frame.
-    glm::dmat4 boxToWorld = glm::rotate(glm::dmat4(1.0), glm::radians(double(s.box.yawDeg)), {0.0, 1.0, 0.0});
-    boxToWorld = glm::rotate(boxToWorld, glm::radians(double(s.box.pitchDeg)), {1.0, 0.0, 0.0});
-    const glm::dmat4 worldToBox = glm::transpose(boxToWorld);
-    u.boxFromView =
-        glm::mat4(worldToBox * glm::translate(glm::dmat4(1.0), camera - glm::dvec3(s.box.center)));
+    u.boxFromView = glm::mat4(glm::dmat4(worldToBox(s.box)) *
+                              glm::translate(glm::dmat4(1.0), camera - glm::dvec3(s.box.center)));
     const double ground = frame.atmosphere.groundRadius;
     u.origin = curved ? glm::vec4(glm::vec3(camera + glm::dvec3(0.0, ground, 0.0)), 1.0f)
                       : glm::vec4(0.0f, float(camera.y), 0.0f, 0.0f);
-    double bottom = s.bottomHeight, top = s.topHeight;
-    if (s.shape == CloudShape::Box) {
-        bottom = -double(s.box.halfSize.y);
-        top = double(s.box.halfSize.y);
-    }
-    u.layer =
-        glm::vec4(float(bottom), float(top), curved ? float(ground) : 0.0f, float(1.0 / (top - bottom)));
+    const glm::dvec2 range = heightRange(s);
+    u.layer = glm::vec4(glm::vec2(range), curved ? float(ground) : 0.0f, float(1.0 / (range.y - range.x)));
     u.boxHalf = glm::vec4(s.box.halfSize, 0.0f);
     // Noise coordinates: (x + offset) / period, offset = (camera - wind·t) modulo the period, in double.
     const glm::dvec3 moved = camera - glm::dvec3(s.wind) * frame.timeSeconds;
@@ -107,9 +82,7 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     };
     u.noiseBase = glm::vec4(offset(basePeriod), float(1.0 / basePeriod));
     u.noiseDetail = glm::vec4(offset(detailPeriod), float(1.0 / detailPeriod));
-    const double topFalloff = gpu::kCloudTopFalloffStratus +
-                              (gpu::kCloudTopFalloffCumulus - gpu::kCloudTopFalloffStratus) * s.cloudType;
-    u.shape = glm::vec4(s.coverage, float(1.0 / topFalloff), s.noise.detailStrength, s.density);
+    u.shape = glm::vec4(s.coverage, float(1.0 / topFalloff(s.cloudType)), s.noise.detailStrength, s.density);
     u.phase = glm::vec4(s.anisotropyForward, s.anisotropyBack, s.lobeMix, s.albedo);
     const CloudMultipleScattering& ms = s.multipleScattering;
     u.multiScatter = glm::vec4(ms.attenuation, ms.contribution, ms.eccentricity, float(ms.octaves));
@@ -152,9 +125,10 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
 
     core::ImageRef base, detail;
     if (s.noise.enabled) {
-        base = declareNoise(b, kBaseNoise, kBaseNoisePass, s.noise.baseSize, s.noise.seed, 0u);
-        detail =
-            declareNoise(b, kDetailNoise, kDetailNoisePass, s.noise.detailSize, detailSeed(s.noise.seed), 1u);
+        base = fog::declareGeneratedNoise(b, kBaseNoise, kBaseNoisePass, s.noise.baseSize, s.noise.seed,
+                                          gpu::kNoisePerlinWorley);
+        detail = fog::declareGeneratedNoise(b, kDetailNoise, kDetailNoisePass, s.noise.detailSize,
+                                            detailSeed(s.noise.seed), gpu::kNoiseWorley);
     } else {
         core::ImageDesc one;
         one.type = VK_IMAGE_TYPE_3D;

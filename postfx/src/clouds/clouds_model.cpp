@@ -18,16 +18,11 @@ using glm::dvec3;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// (tNear, tFar) of ray o + t·d against the sphere of `radius` at the origin, (1, -1) when it misses.
+// (tNear, tFar) of ray o + t·d against the sphere of `radius` at the origin, (-1, -1) when it misses
+// (as shaders/common/ray_sphere.glsl).
 dvec2 raySphere(const dvec3& o, const dvec3& d, double radius) {
-    const double b = glm::dot(o, d);
-    const double c = glm::dot(o, o) - radius * radius;
-    const double disc = b * b - c;
-    if (disc < 0.0) return {1.0, -1.0};
-    const double q = -b - (b < 0.0 ? -1.0 : 1.0) * std::sqrt(disc);
-    if (q == 0.0) return {0.0, 0.0};
-    const double t0 = q, t1 = c / q;
-    return {std::min(t0, t1), std::max(t0, t1)};
+    const atmosphere::SphereHit hit = atmosphere::raySphere(o, d, radius);
+    return hit.hit ? dvec2(hit.tNear, hit.tFar) : dvec2(-1.0);
 }
 
 double clamp01(double v) {
@@ -55,25 +50,39 @@ double NoiseVolume::sample(const dvec3& uvw) const {
     return result;
 }
 
+bool followsPlanet(const FrameInfo& frame) {
+    return frame.atmosphere.enabled && frame.clouds.shape == CloudShape::Layer;
+}
+
+glm::dvec2 heightRange(const CloudSettings& s) {
+    if (s.shape == CloudShape::Box) return {-double(s.box.halfSize.y), double(s.box.halfSize.y)};
+    return {s.bottomHeight, s.topHeight};
+}
+
+glm::dmat3 worldToBox(const CloudBox& box) {
+    glm::dmat4 boxToWorld = glm::rotate(glm::dmat4(1.0), glm::radians(double(box.yawDeg)), {0.0, 1.0, 0.0});
+    boxToWorld = glm::rotate(boxToWorld, glm::radians(double(box.pitchDeg)), {1.0, 0.0, 0.0});
+    return glm::transpose(glm::dmat3(boxToWorld));
+}
+
+double topFalloff(double cloudType) {
+    return gpu::kCloudTopFalloffStratus +
+           (gpu::kCloudTopFalloffCumulus - gpu::kCloudTopFalloffStratus) * cloudType;
+}
+
 Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail) {
     Model m;
     m.s = frame.clouds;
     const CloudSettings& s = m.s;
     m.camera = dvec3(frame.camera.position);
-    m.curved = frame.atmosphere.enabled && s.shape == CloudShape::Layer;
+    m.curved = followsPlanet(frame);
     m.groundRadius = frame.atmosphere.groundRadius;
-    m.bottom = s.bottomHeight;
-    m.top = s.topHeight;
-    if (s.shape == CloudShape::Box) {
-        m.bottom = -double(s.box.halfSize.y);
-        m.top = double(s.box.halfSize.y);
-    }
-    glm::dmat4 boxToWorld = glm::rotate(glm::dmat4(1.0), glm::radians(double(s.box.yawDeg)), {0.0, 1.0, 0.0});
-    boxToWorld = glm::rotate(boxToWorld, glm::radians(double(s.box.pitchDeg)), {1.0, 0.0, 0.0});
-    m.worldToBox = glm::transpose(glm::dmat3(boxToWorld));
+    const glm::dvec2 range = heightRange(s);
+    m.bottom = range.x;
+    m.top = range.y;
+    m.worldToBox = worldToBox(s.box);
     m.boxCenter = dvec3(s.box.center);
-    m.topFalloff = gpu::kCloudTopFalloffStratus +
-                   (gpu::kCloudTopFalloffCumulus - gpu::kCloudTopFalloffStratus) * double(s.cloudType);
+    m.topFalloff = topFalloff(s.cloudType);
     m.noiseOrigin = m.camera - dvec3(s.wind) * frame.timeSeconds;
     m.base = base;
     m.detail = detail;
@@ -102,7 +111,7 @@ dvec2 segment(const Model& m, const dvec3& x0, const dvec3& d, double far) {
     } else if (m.curved) {
         const dvec3 o = m.camera + x0 + dvec3(0.0, m.groundRadius, 0.0);
         const dvec2 outer = raySphere(o, d, m.groundRadius + m.top);
-        if (outer.y < outer.x) return {1.0, 0.0};
+        if (outer.y <= 0.0) return {1.0, 0.0};  // misses it or it lies behind
         seg = dvec2(std::max(seg.x, outer.x), std::min(seg.y, outer.y));
         const dvec2 inner = raySphere(o, d, m.groundRadius + m.bottom);
         if (inner.y > inner.x && inner.x <= seg.x && inner.y > seg.x) seg.x = inner.y;

@@ -39,6 +39,17 @@ struct Model {
     std::shared_ptr<const atmosphere::TransmittanceTable> atmosphere;
 };
 
+// Whether the layer follows the planet (a Layer with the atmosphere on: spheres around its centre).
+bool followsPlanet(const FrameInfo& frame);
+// The shape's bottom and top along its height: the layer's altitudes, or -half.y, half.y in the box's frame
+// [m].
+glm::dvec2 heightRange(const CloudSettings& settings);
+// The box's rotation from world to its own axes: the inverse of yaw about world y, then pitch about its x.
+glm::dmat3 worldToBox(const CloudBox& box);
+// The fraction of the layer over which the height profile falls to 0 at its top, for a cloud type in
+// [0, 1]: from kCloudTopFalloffStratus (0) to kCloudTopFalloffCumulus (1), linearly.
+double topFalloff(double cloudType);
+
 // The model of `frame`'s clouds (settings validated), reading the noise from `base` and `detail`.
 Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail);
 

@@ -64,7 +64,7 @@ const core::ComputePipelineDesc kTemporal[2][2] = {
      {"fog.temporal", spirv::fog_temporal_comp_COLOR_RGBA32F, kTemporalBindings}},
     {{"fog.temporal", spirv::fog_temporal_comp_COMPOSITE, kTemporalCompositeBindings},
      {"fog.temporal", spirv::fog_temporal_comp_COLOR_RGBA32F_COMPOSITE, kTemporalCompositeBindings}}};
-const core::ComputePipelineDesc kNoiseGenerate{"fog.noise", spirv::fog_noise_generate_comp, kNoiseBindings,
+const core::ComputePipelineDesc kNoiseGenerate{"fog.noise", spirv::common_noise_generate_comp, kNoiseBindings,
                                                sizeof(gpu::NoisePush)};
 
 uint32_t groupsFor(uint32_t size) {

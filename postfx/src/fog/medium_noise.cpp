@@ -22,23 +22,27 @@ Status checkNoiseSupported(const FogNoiseSettings& noise, bool formatSupported, 
                 prefix + ".noise.hostTexture instead)"};
 }
 
+core::ImageRef declareGeneratedNoise(core::FrameBuilder& b, const core::ResourceId& id,
+                                     const core::ComputePipelineDesc& pass, uint32_t size, uint32_t seed,
+                                     uint32_t kind) {
+    core::ImageDesc desc;
+    desc.type = VK_IMAGE_TYPE_3D;
+    desc.format = kNoiseFormat;
+    desc.extent = {size, size, size};
+    desc.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    const core::ImageRef image = b.persistentImage(id, desc, (uint64_t(size) << 32) | seed);
+    const uint32_t groups = size / gpu::kNoiseGroupSize;
+    const gpu::NoisePush push{glm::uvec4(size, seed, kind, 0u)};
+    b.pass(pass, groups, groups, groups)
+        .bind(gpu::kNoiseBindingTexture, image, core::Use::StorageWrite)
+        .push(&push, sizeof push);
+    return image;
+}
+
 core::ImageRef declareNoise(core::FrameBuilder& b, const FogNoiseSettings& noise, const NoiseDeclaration& d) {
-    if (noise.enabled && !noise.hostTexture) {
-        core::ImageDesc desc;
-        desc.type = VK_IMAGE_TYPE_3D;
-        desc.format = kNoiseFormat;
-        desc.extent = {noise.textureSize, noise.textureSize, noise.textureSize};
-        desc.usage =
-            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        const core::ImageRef image =
-            b.persistentImage(d.generated, desc, (uint64_t(noise.textureSize) << 32) | noise.seed);
-        const uint32_t groups = noise.textureSize / gpu::kNoiseGroupSize;  // a power of two >= 16
-        const gpu::NoisePush push{glm::uvec4(noise.textureSize, noise.seed, 0u, 0u)};
-        b.pass(d.generatePass, groups, groups, groups)
-            .bind(gpu::kNoiseBindingTexture, image, core::Use::StorageWrite)
-            .push(&push, sizeof push);
-        return image;
-    }
+    if (noise.enabled && !noise.hostTexture)
+        return declareGeneratedNoise(b, d.generated, d.generatePass, noise.textureSize, noise.seed,
+                                     gpu::kNoisePerlinWorley);
     if (noise.enabled) return b.external("host.noise", noise.hostTexture, noise.hostTextureLayout);
     core::ImageDesc one;
     one.type = VK_IMAGE_TYPE_3D;

@@ -28,6 +28,13 @@ struct NoiseDeclaration {
     const core::ComputePipelineDesc& generatePass;  // fog/noise_generate.comp under the effect's name
 };
 
+// A generated noise texture of size³ R8 texels (persistent: `pass`, shaders/common/noise_generate.comp,
+// runs only when no texture of that size and seed is held): the Perlin–Worley fBm (kNoisePerlinWorley)
+// or the Worley fBm alone (kNoiseWorley). `size` is a power of two >= kNoiseGroupSize.
+core::ImageRef declareGeneratedNoise(core::FrameBuilder& builder, const core::ResourceId& id,
+                                     const core::ComputePipelineDesc& pass, uint32_t size, uint32_t seed,
+                                     uint32_t kind);
+
 // Declares the noise image (and its generation pass when it must be built) and returns it.
 core::ImageRef declareNoise(core::FrameBuilder& builder, const FogNoiseSettings& noise,
                             const NoiseDeclaration& declaration);

@@ -38,8 +38,9 @@ struct PixelRay {
 PixelRay pixelRay(const glm::dmat4& clipToView, double farDepth, uint32_t width, uint32_t height, uint32_t i,
                   uint32_t j, double z);
 
-// Composite: out.rgb = color.rgb · T + L, out.a = color.a, as the GPU does it (shaders/fog/composite.glsl):
-// ±Inf color counts as ±FLT_MAX, the result is clamped to ±FLT_MAX, a NaN channel stays NaN.
+// Composite: out.rgb = color.rgb · T + L, out.a = color.a, as the GPU does it
+// (shaders/common/composite.glsl): ±Inf color counts as ±FLT_MAX, the result is clamped to ±FLT_MAX, a NaN
+// channel stays NaN.
 void composite(const glm::dvec3& L, double T, const float* color, float* out);
 
 // What both references' marches read of the shared medium and the frame, converted to double once.

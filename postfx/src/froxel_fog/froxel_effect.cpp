@@ -79,7 +79,7 @@ const core::ComputePipelineDesc kIntegratePass[2] = {
 const core::ComputePipelineDesc kApplyPass[2] = {
     {"froxel_fog.apply", spirv::froxel_fog_apply_comp, kApplyBindings},
     {"froxel_fog.apply", spirv::froxel_fog_apply_comp_COLOR_RGBA32F, kApplyBindings}};
-const core::ComputePipelineDesc kNoiseGenerate{"froxel_fog.noise", spirv::fog_noise_generate_comp,
+const core::ComputePipelineDesc kNoiseGenerate{"froxel_fog.noise", spirv::common_noise_generate_comp,
                                                kNoiseBindings, sizeof(gpu::NoisePush)};
 
 uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kFroxelGroupSize) {

@@ -374,7 +374,7 @@ TEST_F(FogShaderFunctions, CompositeFollowsTheHostColorRule) {
                 cases.push_back(c);
             }
     const std::vector<glm::vec4> r = evaluate(cases);
-    Check check{"compositeFog"};
+    Check check{"compositeOver"};
     constexpr double kMax = 65504.0;
     for (size_t i = 0; i < cases.size(); ++i) {
         const double color = cases[i].a.x, t = cases[i].a.w, l = cases[i].b.x;

@@ -18,7 +18,7 @@ layout(binding = 3) uniform sampler3D noiseTexture;
 #include "common/ign.glsl"
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
-#include "fog/composite.glsl"
+#include "common/composite.glsl"
 #include "fog/medium.glsl"
 
 // Must match FunctionCase in test_shader_functions.cpp.
@@ -76,7 +76,7 @@ void main() {
             r.x = interleavedGradientNoise(fc.op.yz, fc.op.w);
             break;
         case kComposite:
-            r.xyz = compositeFog(fc.a.xyz, fc.a.w, fc.b.xyz);
+            r.xyz = compositeOver(fc.a.xyz, fc.a.w, fc.b.xyz);
             break;
         case kIntegrateStep:
             r.x = integrateStep(fc.a.x, vec3(fc.a.y), fc.a.z).x;
