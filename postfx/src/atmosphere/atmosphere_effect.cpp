@@ -227,6 +227,10 @@ core::ImageDesc lutDesc(VkImageType type, uint32_t x, uint32_t y, uint32_t z = 1
 
 }  // namespace
 
+uint64_t viewLutSettingsKey(const AtmosphereSettings& settings) {
+    return skyViewSettingsKey(settings);
+}
+
 SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& b, core::ImageRef standIn) {
     const core::ImageRef lut = b.frame().atmosphere.enabled ? b.find(kTransmittanceLut) : core::ImageRef{};
     if (lut.valid()) return {lut, Use::Sampled, SamplerKind::LinearClamp};

@@ -23,12 +23,7 @@ inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmi
 // For an effect lit by the sun (docs/effects/atmosphere.md, "The sun for every effect"): the transmittance
 // LUT the atmosphere declared earlier this frame, sampled; with the atmosphere off, `standIn` bound only
 // (the pipeline's layout has the binding; the shader's kFogFlagAtmosphere is off).
-struct SunTransmittanceLut {
-    core::ImageRef image;
-    core::Use use = core::Use::BoundOnly;
-    core::SamplerKind sampler = core::SamplerKind::NearestClamp;  // linear for the LUT (a depth stand-in
-                                                                  // may not filter linearly)
-};
+using SunTransmittanceLut = core::OptionalSampled;
 SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& builder, core::ImageRef standIn);
 
 // The luminance LUTs' storage scale (AtmosphereUniforms::skyView.w): the multiple-scattering, sky-view and
@@ -36,6 +31,10 @@ SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& builder, core:
 // scattering optical depth of a channel, so their texels stay normal half floats (about 0.01 to 1) for
 // an atmosphere 1e-4 or 1e3 times as dense as Earth's; in [1e-3, 1e6].
 double lutStorageScale(const AtmosphereSettings& settings);
+
+// The key of every setting the aerial perspective and sky view depend on (media, sizes, steps): consumers'
+// temporal histories (the clouds') reset when it changes.
+uint64_t viewLutSettingsKey(const AtmosphereSettings& settings);
 
 // The camera and sun a view-dependent LUT was built for (docs/effects/atmosphere.md#frame-plan).
 struct LutView {

@@ -168,6 +168,10 @@ ImageRef FrameBuilder::historyImage(const ResourceId& id, const ImageDesc& desc)
     return ownedImage(id, desc, ResourceDecl::Kind::History, 0);
 }
 
+void FrameBuilder::exportImage(ImageRef image) {
+    if (image.valid()) f_.resources[image.index].exported = true;
+}
+
 ImageRef FrameBuilder::find(const ResourceId& id) const {
     for (size_t i = 0; i < f_.resources.size(); ++i)
         if (f_.resources[i].id == &id && isImage(f_.resources[i])) return {uint16_t(i)};
@@ -296,7 +300,7 @@ void FrameGraph::compile(Frame& f) const {
             const Access& x = f.accesses[a];
             if (!writes(x.use) || x.resource == kNoResource) continue;
             const ResourceDecl& r = f.resources[x.resource];
-            if (r.kind == ResourceDecl::Kind::Host)
+            if (r.kind == ResourceDecl::Kind::Host || r.exported)
                 p.live = true;
             else if (r.kind == ResourceDecl::Kind::Persistent)
                 p.live |= readLater[x.resource] && r.needsBuild;
@@ -652,7 +656,10 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                 OwnedImage& o = *resourceImages_[x.resource];
                 pending = &o.pendingWrite;
                 readSince = &o.readSinceWrite;
-                if (m.write && r.kind == ResourceDecl::Kind::Persistent) {
+                // Written once: readable by the host (imageView, recordImageReadback); a history image
+                // holds the frame's result (the clouds' shadow map, the fogs' accumulations).
+                if (m.write &&
+                    (r.kind == ResourceDecl::Kind::Persistent || r.kind == ResourceDecl::Kind::History)) {
                     o.built = true;
                     o.builtKey = r.buildKey;
                 }

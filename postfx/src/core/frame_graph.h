@@ -86,6 +86,7 @@ struct ResourceDecl {
     uint32_t uniformBytes = 0;
     bool needsBuild = false;  // persistent: no held image with this desc and key (compile())
     bool held = false;        // a recorded pass uses it (compile())
+    bool exported = false;    // read after the frame (by the host): its writers are live (exportImage)
 };
 
 struct PassDecl {
@@ -114,6 +115,16 @@ struct Frame {
 class FrameGraph;
 
 // What an effect declares through; handed to Effect::declare.
+// An image another effect may have declared earlier this frame, for a consumer's sampled binding: that
+// image, sampled; or, when it did not, a stand-in bound only (the pipeline's layout has the binding; the
+// shader's flag for it is off).
+struct OptionalSampled {
+    ImageRef image;
+    Use use = Use::BoundOnly;
+    SamplerKind sampler = SamplerKind::NearestClamp;  // linear for a real image (a depth stand-in may not
+                                                      // filter linearly)
+};
+
 class FrameBuilder {
 public:
     FrameBuilder(const FrameGraph& graph, Frame& frame, int effect)
@@ -143,6 +154,9 @@ public:
     // does not declare it. Passes writing it are live when a later pass reads it, like a transient's;
     // whether its contents are valid is the declaring effect's to know (core/temporal.h).
     ImageRef historyImage(const ResourceId& id, const ImageDesc& desc);
+    // Marks an owned image as read after the frame (by the host, through Context::imageView, like the
+    // clouds' shadow map): the passes writing it are live even when no later pass of the frame reads it.
+    void exportImage(ImageRef image);
     // An image another effect declared earlier this frame (invalid if it did not).
     ImageRef find(const ResourceId& id) const;
     // Uniform data another effect declared earlier this frame (invalid if it did not).
