@@ -22,6 +22,15 @@ PFX_CONST(uint, kCloudBindingAtmosphere, 6);        // uniform buffer: Atmospher
 PFX_CONST(uint, kCloudBindingTransmittanceLut, 7);  // sampler2D: the sun's transmittance (r, μ)
 PFX_CONST(uint, kCloudBindingApScattering, 8);      // sampler3D: aerial perspective's in-scattering
 PFX_CONST(uint, kCloudBindingApTransmittance, 9);   // sampler2DArray: aerial perspective's T
+// Reduced resolution and temporal accumulation (docs/effects/clouds.md, "Resolution and temporal").
+PFX_CONST(uint, kCloudBindingScatter, 10);  // storage image: the march's (L, T) at its extent
+PFX_CONST(uint, kCloudBindingDistance,
+          11);  // storage image r32ui: this frame's distances (packCloudDistances)
+PFX_CONST(uint, kCloudBindingHistoryIn, 12);   // storage image rgba32f: accumulated (L, T), last frame
+PFX_CONST(uint, kCloudBindingHistoryOut, 13);  // storage image rgba32f: accumulated (L, T), this frame
+PFX_CONST(uint, kCloudBindingDistanceIn, 14);  // storage image r32ui: last frame's distances
+PFX_CONST(uint, kCloudBindingTemporal, 15);    // uniform buffer: TemporalUniforms (common/shared.h)
+PFX_CONST(uint, kCloudBindingShadowOut, 16);   // storage image r32f: the shadow map (clouds.shadow)
 
 // Flags in CloudUniforms.flags.x
 PFX_CONST(uint, kCloudFlagNoise, 1u);   // sample the noise textures (off: the field is 1)
@@ -32,7 +41,10 @@ PFX_CONST(uint, kCloudFlagJitter, 16u);
 
 // The model's constants (docs/effects/clouds.md, "Density" and "Light").
 PFX_CONST(float, kCloudDetailTilingRatio, 8.0f);  // the detail texture repeats tiling / this [m]
-PFX_CONST(float, kCloudBottomRamp, 0.1f);         // the profile rises from 0 over this height fraction
+// A sample inside the march's segment may compute a height fraction a rounding error outside [0, 1]; up
+// to this much outside it counts as on the boundary.
+PFX_CONST(float, kCloudHeightSlack, 1e-4f);
+PFX_CONST(float, kCloudBottomRamp, 0.1f);  // the profile rises from 0 over this height fraction
 // Top falloff of the height profile, as a fraction of the layer: stratus (cloud type 0) to cumulus (1).
 PFX_CONST(float, kCloudTopFalloffStratus, 0.9f);
 PFX_CONST(float, kCloudTopFalloffCumulus, 0.3f);
@@ -41,6 +53,13 @@ PFX_CONST(float, kCloudTopFalloffCumulus, 0.3f);
 // light through a slab: T ≈ exp(-1.66·τ).
 PFX_CONST(float, kCloudDiffusivity, 1.66f);
 PFX_CONST(float, kCloudTransmittanceCutoff, 1e-3f);  // the march stops below this transmittance
+PFX_CONST(uint, kCloudShadowSteps, 32u);             // samples of each shadow-map texel's ray toward the sun
+// The upsample blends the march's texels whose ray ends within this fraction of the pixel's own surface
+// distance (else the nearest in distance); the temporal pass takes history whose reprojection distance is
+// within this fraction of the expected one. Clouds' mean distance moves with the jitter by up to a step.
+PFX_CONST(float, kCloudUpsampleDistanceTolerance, 0.1f);
+PFX_CONST(float, kCloudTemporalDistanceTolerance, 0.15f);
+PFX_CONST(float, kCloudTemporalClipGamma, 1.0f);  // the history box: mean ± γ·σ of the 3×3 neighbourhood
 
 struct CloudUniforms {
     mat4 clipToView;   // Vulkan clip -> camera-relative world (this frame's camera)
@@ -59,13 +78,16 @@ struct CloudUniforms {
     vec4 toSun;         // xyz: unit toward the sun
     vec4 ambient;       // rgb: uniform incident radiance
     vec4 march;         // x: max distance [m], y: no-geometry depth
-    uvec4 counts;       // x: steps, y: light steps, z: octaves
-    uvec4 extent;       // xy: color extent [px], z: frame index, w: 0
+    vec4 shadow;     // shadow map: xyz its centre on the shape's bottom plane (camera-relative), w extent [m]
+    uvec4 counts;    // x: steps, y: light steps, z: octaves, w: shadow map size [texels]
+    vec4 windDelta;  // xyz: how far the wind moved the clouds since the previous recorded frame [m]
+    uvec4 extent;    // xy: color extent [px], z: frame index, w: 0
+    uvec4 marchExtent;  // xy: the march's extent [px] (the color's at resolution scale 1)
     uvec4 flags;        // x: kCloudFlag* bits
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudUniforms) == 2 * 64 + 15 * 16, "CloudUniforms must match std140");
+static_assert(sizeof(CloudUniforms) == 2 * 64 + 18 * 16, "CloudUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

@@ -71,7 +71,8 @@ float cloudHeightProfile(float h) {
 // shape N·profile(h) thresholded by the coverage c, (shape - (1 - c)) / c clamped, then eroded by the
 // detail D·strength = e: (field - e) / (1 - e) clamped (Schneider 2015's remaps). Noise off: 1.
 float cloudField(vec3 x, float h) {
-    if (h < 0.0 || h > 1.0) return 0.0;
+    if (h < -kCloudHeightSlack || h > 1.0 + kCloudHeightSlack) return 0.0;
+    h = clamp(h, 0.0, 1.0);
     if ((cl.flags.x & kCloudFlagNoise) == 0u) return 1.0;
     float coverage = cl.shape.x;
     float shape =

@@ -1,14 +1,18 @@
 #version 450
-// The clouds' march (docs/effects/clouds.md, "March" and "Composite"): one invocation per pixel.
+// The clouds' march (docs/effects/clouds.md, "March" and "Composite"): one invocation per pixel of the
+// march (the color's at resolution scale 1).
 // The view ray's part inside the shape and before the geometry (and max distance) is split into `steps`
 // equal steps whatever its length; each sample's extinction σt comes from the density field, its light
 // from lighting.glsl, and each step is integrated in closed form (T·S·(1 - e^{-σt·Δ})/σt, in which the
 // density appears once). The march stops once T < kCloudTransmittanceCutoff.
 // out = color·T + L. With ATMOSPHERE the clouds are seen through the air in front of them: the aerial
 // perspective (L_ap, T_ap) at the clouds' extinction-weighted mean distance gives
-// out = color·T + T_ap·L + (1 - T)·L_ap·E (the air in front of the clouds, which the sky behind them
-// already held, is no longer attenuated by them).
-// Variants: COLOR_RGBA32F (the color format), ATMOSPHERE.
+// L' = T_ap·L + (1 - T)·L_ap·E (the air in front of the clouds, which the sky behind them already held,
+// is no longer attenuated by them).
+// Variants: COLOR_RGBA32F (the color format), ATMOSPHERE; SCATTER writes (L', T) into the march's own
+// image at its extent (reduced resolution or temporal: upsample.comp composites it), TEMPORAL also the
+// texel's distances (clouds/distances.glsl): the reprojection distance (the clouds' mean distance, or
+// where the ray ends when it meets none; -1 for a NaN depth: no history) and the surface's.
 #extension GL_GOOGLE_include_directive : require
 
 #include "clouds/clouds_shared.h"
@@ -24,14 +28,10 @@ layout(binding = kCloudBindingUniforms, std140) uniform Uniforms {
 layout(binding = kCloudBindingDepth) uniform sampler2D depthTexture;
 layout(binding = kCloudBindingBaseNoise) uniform sampler3D baseNoise;
 layout(binding = kCloudBindingDetailNoise) uniform sampler3D detailNoise;
-#ifdef COLOR_RGBA32F
-layout(binding = kCloudBindingColorIn, rgba32f) uniform restrict readonly image2D colorIn;
-layout(binding = kCloudBindingColorOut, rgba32f) uniform restrict writeonly image2D colorOut;
-const float kColorMax = 3.402823466e38;
-#else
-layout(binding = kCloudBindingColorIn, rgba16f) uniform restrict readonly image2D colorIn;
-layout(binding = kCloudBindingColorOut, rgba16f) uniform restrict writeonly image2D colorOut;
-const float kColorMax = 65504.0;  // largest finite half: never write Inf
+#include "clouds/images.glsl"
+#if defined(SCATTER) && defined(TEMPORAL)
+layout(binding = kCloudBindingDistance, r32ui) uniform restrict writeonly uimage2D distanceOut;
+#include "clouds/distances.glsl"
 #endif
 
 #ifdef ATMOSPHERE
@@ -45,6 +45,7 @@ layout(binding = kCloudBindingApTransmittance) uniform sampler2DArray apTransmit
 #include "atmosphere/aerial_perspective_lookup.glsl"
 #endif
 
+#include "clouds/ray.glsl"
 #include "clouds/density.glsl"
 #include "clouds/lighting.glsl"
 #include "common/ign.glsl"
@@ -52,25 +53,24 @@ layout(binding = kCloudBindingApTransmittance) uniform sampler2DArray apTransmit
 #include "common/integrate.glsl"
 
 void main() {
-    uvec2 pixel = gl_GlobalInvocationID.xy;
-    if (any(greaterThanEqual(pixel, cl.extent.xy))) return;
-    vec4 color = imageLoad(colorIn, ivec2(pixel));
-    float depth = texelFetch(depthTexture, ivec2(pixel), 0).r;
-    vec2 ndc = (vec2(pixel) + 0.5) / vec2(cl.extent.xy) * 2.0 - 1.0;
-    bool noGeometry = depth == cl.march.y;
-    vec4 p = cl.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);
-    vec3 view = p.xyz / p.w;
-    vec3 d = normalize(p.w < 0.0 ? -p.xyz : p.xyz);
-    float far = noGeometry ? cl.march.x : min(length(view), cl.march.x);
+    uvec2 texel = gl_GlobalInvocationID.xy;
+    if (any(greaterThanEqual(texel, cl.marchExtent.xy))) return;
+    CloudRay ray = cloudTexelRay(texel);
+    vec3 d = ray.dir;
 
-    vec2 seg = cloudSegment(vec3(0.0), d, far);
+    vec2 seg = cloudSegment(vec3(0.0), d, ray.far);
+    // T = e^{-τ} from the summed optical depth τ (a product of per-step exponentials drifts, and 1 - T
+    // cancels for thin clouds: oneMinusExp(τ) keeps it). The mean distance weights each step by the
+    // share of the light it removes, T·(1 - e^{-σΔ}), normalised by their sum (no division by 1 - T).
+    float tau = 0.0;
     float T = 1.0;
     vec3 L = vec3(0.0);
     float weightedDistance = 0.0;
+    float weightSum = 0.0;
     if (seg.y > seg.x) {
         float dt = (seg.y - seg.x) / float(cl.counts.x);
         float offset =
-            (cl.flags.x & kCloudFlagJitter) != 0u ? interleavedGradientNoise(pixel, cl.extent.z) : 0.5;
+            (cl.flags.x & kCloudFlagJitter) != 0u ? interleavedGradientNoise(texel, cl.extent.z) : 0.5;
         float albedo = cl.phase.w;
         for (uint i = 0u; i < cl.counts.x; ++i) {
             float t = seg.x + (float(i) + offset) * dt;
@@ -81,20 +81,32 @@ void main() {
             float opticalDepth = sigma * dt;
             vec3 light = cloudInScattered(x, d, sigma, h);
             L += integrateStep(T, vec3(albedo) * light, opticalDepth);
-            float next = T * exp(-opticalDepth);
-            weightedDistance += t * (T - next);
-            T = next;
+            float removed = T * oneMinusExp(opticalDepth);
+            weightedDistance += t * removed;
+            weightSum += removed;
+            tau += opticalDepth;
+            T = exp(-tau);
             if (T < kCloudTransmittanceCutoff) break;
         }
     }
-    vec3 result = color.rgb;
-    if (T < 1.0) {
+    bool met = tau > 0.0;  // any extinction on the ray
+    float meanDistance = weightSum > 0.0 ? weightedDistance / weightSum : ray.far;
 #ifdef ATMOSPHERE
+    if (met) {
         vec3 apL, apT;
-        aerialPerspective(d * (weightedDistance / (1.0 - T)), apL, apT);
-        L = apT * L + (1.0 - T) * apL * atmo.sun.rgb;
-#endif
-        result = compositeOver(color.rgb, T, L);
+        aerialPerspective(d * meanDistance, apL, apT);
+        L = apT * L + oneMinusExp(tau) * apL * atmo.sun.rgb;
     }
-    imageStore(colorOut, ivec2(pixel), vec4(result, color.a));
+#endif
+#ifdef SCATTER
+    imageStore(scatterImage, ivec2(texel), vec4(min(L, vec3(kColorMax)), T));
+#ifdef TEMPORAL
+    imageStore(distanceOut, ivec2(texel),
+               uvec4(packCloudDistances(isnan(ray.surface) ? -1.0 : meanDistance, ray.surface)));
+#endif
+#else
+    vec4 color = imageLoad(colorIn, ivec2(texel));
+    vec3 result = met ? compositeOver(color.rgb, T, L) : color.rgb;
+    imageStore(colorOut, ivec2(texel), vec4(result, color.a));
+#endif
 }

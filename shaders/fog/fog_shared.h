@@ -30,6 +30,9 @@ PFX_CONST(uint, kFogBindingTemporal, 11);   // uniform buffer: TemporalUniforms
 // With the atmosphere on (docs/effects/atmosphere.md): its transmittance LUT, for the sun's light at each
 // sample (fog/atmosphere_light.glsl); the froxel fog binds it at the same number.
 PFX_CONST(uint, kFogBindingAtmosphere, 12);  // sampler2D rgba16f: the atmosphere's transmittance LUT
+// With clouds casting shadows (docs/effects/clouds.md, "Shadows"): their shadow map, for the sun's light
+// at each sample; the froxel fog binds it at the same number.
+PFX_CONST(uint, kFogBindingCloudShadow, 13);  // sampler2D r32f: transmittance toward the sun
 // A history texel is used for a pixel when the distance its ray ended at (min(surface, max distance))
 // is within this fraction of the distance from the previous camera to the pixel's point (disocclusion).
 PFX_CONST(float, kFogTemporalDistanceTolerance, 0.1f);
@@ -57,7 +60,8 @@ PFX_CONST(uint, kFogFlagSelfShadow, 16u);
 PFX_CONST(uint, kFogFlagAnalyticTail, 32u);
 PFX_CONST(uint, kFogFlagDepthReversedZ, 64u);
 PFX_CONST(uint, kFogFlagSkipEmptySpace, 128u);
-PFX_CONST(uint, kFogFlagAtmosphere, 256u);  // the sun's light through the atmosphere's transmittance LUT
+PFX_CONST(uint, kFogFlagAtmosphere, 256u);   // the sun's light through the atmosphere's transmittance LUT
+PFX_CONST(uint, kFogFlagCloudShadow, 512u);  // the sun's light through the clouds' shadow map
 
 struct FogUniforms {
     mat4 clipToView;      // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))
@@ -79,10 +83,13 @@ struct FogUniforms {
     // transmittance LUT's size [texels]; planetCamera.xyz: the camera's planet-centred position [m].
     vec4 planet;
     vec4 planetCamera;
+    // kFogFlagCloudShadow: the clouds' shadow map's uv of camera-relative x: (dot(u.xyz, x) + u.w, ...)
+    vec4 cloudShadowU;
+    vec4 cloudShadowV;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(FogUniforms) == 2 * 64 + 15 * 16, "FogUniforms must match std140");
+static_assert(sizeof(FogUniforms) == 2 * 64 + 17 * 16, "FogUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

@@ -51,7 +51,7 @@ FogScatter marchFog(FogRay ray, uvec2 jitterPixel) {
         float sigmaT = extinction(x);
         if (sigmaT <= 0.0) continue;
         vec3 sunLight = sunPhase * (shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y)) *
-                        atmosphereSunTransmittance(x);
+                        atmosphereSunTransmittance(x) * cloudShadowVisibility(x);
         float opticalDepth = sigmaT * dt;
         inScattered += integrateStep(transmittance, albedo * (sunLight + ambient), opticalDepth);
         transmittance *= exp(-opticalDepth);

@@ -2,6 +2,8 @@
 #ifndef POSTFX_FOG_RAY_GLSL
 #define POSTFX_FOG_RAY_GLSL
 
+#include "common/reduced_resolution.glsl"
+
 struct FogRay {
     vec3 dir;               // unit direction from the camera
     float surfaceDistance;  // to the reconstructed surface [m]; infinite for pixels with no geometry
@@ -30,10 +32,10 @@ float fogTemporalDistance(FogRay ray) {
     return isnan(ray.surfaceDistance) ? -1.0 : ray.surfaceDistance;
 }
 
-// Reduced resolution: the full-resolution pixel whose ray the scatter texel `texel` marches, the one
-// nearest the texel's centre: floor((texel + 0.5) · extent / scatterExtent), in exact integers.
+// Reduced resolution: the full-resolution pixel whose ray the scatter texel `texel` marches
+// (common/reduced_resolution.glsl).
 uvec2 fogSourcePixel(uvec2 texel) {
-    return min((2u * texel + 1u) * fog.extent.xy / (2u * fog.scatterExtent.xy), fog.extent.xy - 1u);
+    return reducedSourcePixel(texel, fog.extent.xy, fog.scatterExtent.xy);
 }
 
 #endif

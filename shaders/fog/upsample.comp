@@ -31,20 +31,9 @@ void main() {
     vec4 color = imageLoad(colorIn, ivec2(pixel));
     float distance = fogRay(pixel).surfaceDistance;
 
-    // The pixel centre in scatter texels, u = (pixel + 0.5) · w / W - 0.5, in exact integers:
-    // u = num / (2W) with num = (2·pixel + 1)·w - W; clamped to the image at its borders.
-    uvec2 size = fog.scatterExtent.xy;
-    uvec2 num = (2u * pixel + 1u) * size;
-    uvec2 den = 2u * fog.extent.xy;
-    bvec2 inside = greaterThanEqual(num, fog.extent.xy);
-    uvec2 shifted = num - min(num, fog.extent.xy);
-    uvec2 t0 = min(shifted / den, size - 1u);
-    vec2 f = mix(vec2(0.0), vec2(shifted - t0 * den) / vec2(den), inside);
-    f = min(f, vec2(1.0));
-    uvec2 t1 = min(t0 + 1u, size - 1u);
-
-    uvec2 texels[4] = uvec2[4](t0, uvec2(t1.x, t0.y), uvec2(t0.x, t1.y), t1);
-    float bilinear[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+    uvec2 texels[4];
+    float bilinear[4];
+    reducedFootprint(pixel, fog.extent.xy, fog.scatterExtent.xy, texels, bilinear);
     vec4 sum = vec4(0.0);
     float weight = 0.0;
     vec4 nearest = vec4(0.0);

@@ -36,6 +36,8 @@ PFX_CONST(uint, kFroxelBindingHistory, 10);   // sampler3D rgba32f: previous acc
 PFX_CONST(uint, kFroxelBindingTemporal, 11);  // uniform buffer: TemporalUniforms
 // sampler2D: the atmosphere's transmittance LUT (fog/atmosphere_light.glsl), with the atmosphere on
 PFX_CONST(uint, kFroxelBindingAtmosphere, kFogBindingAtmosphere);
+// sampler2D: the clouds' shadow map (fog/atmosphere_light.glsl), with clouds casting shadows
+PFX_CONST(uint, kFroxelBindingCloudShadow, kFogBindingCloudShadow);
 
 // Flags in FroxelUniforms.counts.y
 PFX_CONST(uint, kFroxelFlagLogSlices, 1u);  // depth distribution Log (else Power)

@@ -165,7 +165,7 @@ void main() {
         if (any(greaterThan(sun, vec3(0.0))))
             light += sun * henyeyGreensteinDirections(dir, fog.toSun.xyz, fog.medium.z) *
                      shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y) *
-                     atmosphereSunTransmittance(x);
+                     atmosphereSunTransmittance(x) * cloudShadowVisibility(x);
 #ifdef LOCAL_LIGHTS
         light += localLightsScatter(id, x, dir);
 #endif

@@ -15,6 +15,8 @@ inline postfx::CloudSettings homogeneousLayer() {
     s.bottomHeight = 1000.0f;
     s.topHeight = 2000.0f;
     s.density = 0.002f;
+    s.resolutionScale = 1.0f;  // every pixel its own ray, one frame (the closed forms are per pixel)
+    s.temporal.enabled = false;
     return s;
 }
 
@@ -30,6 +32,8 @@ inline postfx::CloudSettings finelyMarchedNoisyClouds() {
     s.lightSteps = 32;
     s.maxDistance = 30000.0f;
     s.jitter = false;
+    s.resolutionScale = 1.0f;
+    s.temporal.enabled = false;
     return s;
 }
 

@@ -102,6 +102,8 @@ TEST_F(CloudsGpuTest, ForwardScatteringPeaksTowardTheSun) {
     frame.clouds.coverage = 1.0f;
     frame.clouds.density = 0.0005f;
     frame.clouds.jitter = false;
+    frame.clouds.resolutionScale = 1.0f;
+    frame.clouds.temporal.enabled = false;
     frame.sun.toSun = glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f));
     frame.sun.illuminance = postfx::Vec3(1.0f);
     const FogHarnessImages im = images(4, 4, 0.0f);
@@ -123,6 +125,7 @@ TEST_F(CloudsGpuTest, NoiseTexturesMatchTheCpuPort) {
     frame.clouds.noise.baseSize = 32;
     frame.clouds.noise.detailSize = 16;
     frame.clouds.noise.seed = 7;
+    frame.clouds.temporal.enabled = false;
     frame.camera = lookCamera({0.0, 10.0, 0.0}, {1.0, 0.3, 0.0}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
     render(frame, images(4, 2, 0.0f));
     const std::vector<float> base = readNoise("clouds.base_noise");

@@ -1,6 +1,8 @@
 // The clouds' frame plan (docs/frame-plan.md): the first frame generates the two noise textures, later
-// frames march only; coverage or density 0 runs nothing; with the atmosphere the march follows its passes
-// and reads its LUTs; the recorded passes are the plan's; the textures' bytes.
+// frames only the shadow map, march, temporal accumulation and upsample (at full resolution without
+// temporal or shadows: the march alone); coverage or density 0 runs nothing; with the atmosphere the march
+// follows its passes and reads its LUTs; the fogs read the shadow map after it is made; the recorded passes
+// are the plan's; the resources' bytes.
 #include "fog_harness.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -50,7 +52,47 @@ protected:
     uint64_t frameIndex = 0;
 };
 
+// The defaults: shadows, half resolution, temporal.
+TEST_F(CloudsPlanTest, DefaultsMakeTheShadowMapMarchAtHalfSizeAccumulateAndUpsample) {
+    const Passes every{"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"};
+    Passes first{"clouds.base_noise", "clouds.detail_noise"};
+    first.insert(first.end(), every.begin(), every.end());
+    EXPECT_EQ(planAndRun(), first);
+    EXPECT_EQ(bytesOf("clouds.shadow_map"), 512u * 512 * 4);  // R32F
+    EXPECT_EQ(bytesOf("clouds.scatter"), 8u * 4 * 8);         // half of 16×8, the color's RGBA16F
+    EXPECT_EQ(bytesOf("clouds.history_a"), 8u * 4 * 16);      // RGBA32F
+    EXPECT_EQ(bytesOf("clouds.history_distance_b"), 8u * 4 * 4);
+    EXPECT_EQ(planAndRun(), every);
+    frame.clouds.temporal.enabled = false;  // half size without temporal: march and upsample
+    EXPECT_EQ(planAndRun(), (Passes{"clouds.shadow", "clouds.march", "clouds.upsample"}));
+    EXPECT_EQ(bytesOf("clouds.history_a"), 0u);
+    frame.clouds.castShadows = false;  // no shadow map held
+    EXPECT_EQ(planAndRun(), (Passes{"clouds.march", "clouds.upsample"}));
+    EXPECT_EQ(bytesOf("clouds.shadow_map"), 0u);
+}
+
+// Both fogs read the shadow map the clouds made earlier in the frame.
+TEST_F(CloudsPlanTest, TheFogsReadTheShadowMapAfterItIsMade) {
+    for (bool froxel : {false, true}) {
+        frame.fog.enabled = !froxel;
+        frame.froxelFog.enabled = froxel;
+        const Passes passes = planAndRun();
+        const char* consumer = froxel ? "froxel_fog.scatter" : "fog.raymarch";
+        const auto shadow = std::find(passes.begin(), passes.end(), "clouds.shadow");
+        const auto fog = std::find(passes.begin(), passes.end(), consumer);
+        ASSERT_NE(fog, passes.end()) << consumer;
+        EXPECT_LT(shadow, fog) << consumer;
+        for (const postfx::PlannedPass& p : last.passes) {
+            if (p.name != consumer) continue;
+            EXPECT_NE(std::find(p.reads.begin(), p.reads.end(), "clouds.shadow_map"), p.reads.end());
+        }
+    }
+}
+
 TEST_F(CloudsPlanTest, NoiseOnceThenOnlyTheMarchAndNothingWithoutCoverage) {
+    frame.clouds.resolutionScale = 1.0f;  // at full size, without temporal and shadows: the march alone
+    frame.clouds.temporal.enabled = false;
+    frame.clouds.castShadows = false;
     EXPECT_EQ(planAndRun(), (Passes{"clouds.base_noise", "clouds.detail_noise", "clouds.march"}));
     EXPECT_EQ(bytesOf("clouds.base_noise"), 32u * 32 * 32);
     EXPECT_EQ(bytesOf("clouds.detail_noise"), 16u * 16 * 16);
@@ -72,6 +114,9 @@ TEST_F(CloudsPlanTest, NoiseOnceThenOnlyTheMarchAndNothingWithoutCoverage) {
 
 TEST_F(CloudsPlanTest, WithTheAtmosphereTheMarchReadsItsLuts) {
     frame.atmosphere.enabled = true;
+    frame.clouds.resolutionScale = 1.0f;
+    frame.clouds.temporal.enabled = false;
+    frame.clouds.castShadows = false;
     const Passes passes = planAndRun();
     const auto apply = std::find(passes.begin(), passes.end(), "atmosphere.apply");
     const auto march = std::find(passes.begin(), passes.end(), "clouds.march");

@@ -10,6 +10,7 @@
 
 #include <postfx/export.h>
 #include <postfx/result.h>
+#include <postfx/temporal.h>
 #include <postfx/types.h>
 
 #include <cstdint>
@@ -23,6 +24,17 @@ enum class CloudShape : uint32_t {
     Layer,
     // Inside an oriented box (the seed's cloud); bottom/top heights are the box's own bottom and top.
     Box,
+};
+
+// Quality presets (docs/effects/clouds.md, "Quality presets"): each sets steps, light_steps,
+// resolution_scale and temporal.enabled to values chosen from the benchmark's measurements. The defaults of
+// those four settings below are Medium's. A value cast from another int is rejected.
+enum class CloudQuality : uint32_t {
+    Custom,  // steps, light_steps, resolution_scale and temporal as set
+    Low,
+    Medium,
+    High,
+    Ultra,
 };
 
 // The box of CloudShape::Box.
@@ -60,8 +72,17 @@ struct CloudMultipleScattering {
     float eccentricity = 0.5f;  // c [1]; in [0, 1]
 };
 
+// The clouds' shadow map (docs/effects/clouds.md, "Shadows"): the transmittance toward the sun through the
+// clouds over a square around the camera, which both fogs' sunlight and a host's surface lighting read.
+struct CloudShadowMapSettings {
+    uint32_t size = 512;      // edge [texels]; in [16, 4096]
+    float extent = 20000.0f;  // edge [m], centred on the camera; in [100, 1e6]. Beyond it: no cloud shadow.
+};
+
 struct CloudSettings {
     bool enabled = false;
+    // Custom uses steps, light_steps, resolution_scale and temporal.enabled below; a preset replaces them.
+    CloudQuality quality = CloudQuality::Custom;
     CloudShape shape = CloudShape::Layer;
     // The layer's bottom and top above the ground (y = 0) [m]: bottom in [0, 1e6], top in (bottom, 1e6].
     float bottomHeight = 1500.0f;
@@ -97,8 +118,22 @@ struct CloudSettings {
     // Offset each pixel's first sample by interleaved gradient noise of pixel and frame (the temporal
     // accumulation averages it out); false: at the step's midpoint.
     bool jitter = true;
+    // March at this fraction of the color image's width and height (rounded up), then composite at full
+    // resolution with a depth-aware upsample (docs/effects/clouds.md, "Resolution and temporal") [1]; in
+    // [0.25, 1]. 0.5 marches a quarter of the rays, 0.25 a sixteenth.
+    float resolutionScale = 0.5f;
+    // Temporal accumulation of the march's (L, T), reprojected at the clouds' mean distance and moved by
+    // the wind (docs/temporal.md): on by default for the clouds; blend weight in (0, 1].
+    TemporalSettings temporal{true, 0.1f};
+    // Cast shadows: the shadow map (clouds.shadow_map) dims the sun in both fogs and, through
+    // cloudShadowTransform, on the host's surfaces.
+    bool castShadows = true;
+    CloudShadowMapSettings shadowMap;
     CloudNoiseSettings noise;
 };
+
+// `settings` with `quality`'s steps, light_steps, resolution_scale and temporal.enabled (Custom: unchanged).
+POSTFX_API CloudSettings applyCloudQuality(const CloudSettings& settings, CloudQuality quality);
 
 // Checks every setting against its documented range; InvalidArgument naming the first bad field with its
 // scene-file key ("clouds.top_height: 1000 must be greater than bottom_height (1500)"). Checked whether or
@@ -109,5 +144,21 @@ POSTFX_API Status validateCloudSettings(const CloudSettings& settings);
 // Context::recordImageReadback: held while clouds with noise run.
 inline constexpr ResourceName kCloudsBaseNoise{"clouds.base_noise"};
 inline constexpr ResourceName kCloudsDetailNoise{"clouds.detail_noise"};
+// The shadow map (2D, R32_SFLOAT: transmittance toward the sun), held while clouds cast shadows; sample it
+// with linear filtering and clamp-to-edge addressing at cloudShadowTransform's uv.
+inline constexpr ResourceName kCloudsShadowMap{"clouds.shadow_map"};
+
+// Where a world position reads the shadow map of the frame `frame` recorded: uv = (dot(u.xyz, P) + u.w,
+// dot(v.xyz, P) + v.w) for world position P [m]; outside [0, 1]² there is no cloud shadow (transmittance
+// 1). The map holds the transmittance from the shape's bottom along the sun's direction: exact for points
+// below the clouds, too dark for points inside them. A host lighting its surfaces before Context::record
+// reads the map held from the previous frame with that frame's FrameInfo (one frame late: the clouds move
+// by one frame of wind). With the sun at or below the horizon every point maps outside.
+struct CloudShadowTransform {
+    DVec4 u{0.0, 0.0, 0.0, -1.0};
+    DVec4 v{0.0, 0.0, 0.0, -1.0};
+};
+struct FrameInfo;
+POSTFX_API CloudShadowTransform cloudShadowTransform(const FrameInfo& frame);
 
 }  // namespace postfx

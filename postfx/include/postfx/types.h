@@ -18,6 +18,7 @@ namespace postfx {
 // In a build with GLM's defaults (as postfx's own) they are glm::vec3, glm::dvec3, glm::mat4, ...
 using Vec3 = glm::vec<3, float, glm::packed_highp>;
 using DVec3 = glm::vec<3, double, glm::packed_highp>;
+using DVec4 = glm::vec<4, double, glm::packed_highp>;
 using UVec2 = glm::vec<2, glm::uint, glm::packed_highp>;
 using UVec3 = glm::vec<3, glm::uint, glm::packed_highp>;
 using Mat4 = glm::mat<4, 4, float, glm::packed_highp>;

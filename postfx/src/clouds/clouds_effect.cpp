@@ -1,9 +1,11 @@
 #include "clouds/clouds_effect.h"
 
+#include <postfx/fog.h>
 #include "atmosphere/atmosphere_effect.h"
 #include "atmosphere/atmosphere_shared.h"
 #include "clouds/clouds_model.h"
 #include "clouds/clouds_settings.h"
+#include "clouds/clouds_shadow.h"
 #include "core/camera_math.h"
 #include "fog/medium_noise.h"
 #include "postfx_objects_spirv.h"
@@ -32,14 +34,78 @@ constexpr core::Binding kMarchAtmosphereBindings[] = {
     {gpu::kCloudBindingBaseNoise, kSampled},    {gpu::kCloudBindingDetailNoise, kSampled},
     {gpu::kCloudBindingAtmosphere, kUniform},   {gpu::kCloudBindingTransmittanceLut, kSampled},
     {gpu::kCloudBindingApScattering, kSampled}, {gpu::kCloudBindingApTransmittance, kSampled}};
+// The march into its own image (SCATTER): no color images; with TEMPORAL the distance image too.
+constexpr core::Binding kScatterBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
+                                              {gpu::kCloudBindingScatter, kStorage},
+                                              {gpu::kCloudBindingDepth, kSampled},
+                                              {gpu::kCloudBindingBaseNoise, kSampled},
+                                              {gpu::kCloudBindingDetailNoise, kSampled}};
+constexpr core::Binding kScatterAtmosphereBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
+                                                        {gpu::kCloudBindingScatter, kStorage},
+                                                        {gpu::kCloudBindingDepth, kSampled},
+                                                        {gpu::kCloudBindingBaseNoise, kSampled},
+                                                        {gpu::kCloudBindingDetailNoise, kSampled},
+                                                        {gpu::kCloudBindingAtmosphere, kUniform},
+                                                        {gpu::kCloudBindingTransmittanceLut, kSampled},
+                                                        {gpu::kCloudBindingApScattering, kSampled},
+                                                        {gpu::kCloudBindingApTransmittance, kSampled}};
+constexpr core::Binding kScatterTemporalBindings[] = {
+    {gpu::kCloudBindingUniforms, kUniform},    {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDepth, kSampled},       {gpu::kCloudBindingBaseNoise, kSampled},
+    {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingDistance, kStorage}};
+constexpr core::Binding kScatterTemporalAtmosphereBindings[] = {
+    {gpu::kCloudBindingUniforms, kUniform},
+    {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDepth, kSampled},
+    {gpu::kCloudBindingBaseNoise, kSampled},
+    {gpu::kCloudBindingDetailNoise, kSampled},
+    {gpu::kCloudBindingAtmosphere, kUniform},
+    {gpu::kCloudBindingTransmittanceLut, kSampled},
+    {gpu::kCloudBindingApScattering, kSampled},
+    {gpu::kCloudBindingApTransmittance, kSampled},
+    {gpu::kCloudBindingDistance, kStorage}};
+constexpr core::Binding kTemporalBindings[] = {
+    {gpu::kCloudBindingUniforms, kUniform},   {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDistance, kStorage},   {gpu::kCloudBindingHistoryIn, kStorage},
+    {gpu::kCloudBindingHistoryOut, kStorage}, {gpu::kCloudBindingDistanceIn, kStorage},
+    {gpu::kCloudBindingTemporal, kUniform}};
+constexpr core::Binding kUpsampleBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
+                                               {gpu::kCloudBindingColorIn, kStorage},
+                                               {gpu::kCloudBindingColorOut, kStorage},
+                                               {gpu::kCloudBindingDepth, kSampled},
+                                               {gpu::kCloudBindingScatter, kStorage}};
+constexpr core::Binding kShadowBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
+                                             {gpu::kCloudBindingBaseNoise, kSampled},
+                                             {gpu::kCloudBindingDetailNoise, kSampled},
+                                             {gpu::kCloudBindingShadowOut, kStorage}};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
 
-// [atmosphere][rgba32]
-const core::ComputePipelineDesc kMarch[2][2] = {
-    {{"clouds.march", spirv::clouds_march_comp, kMarchBindings},
-     {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F, kMarchBindings}},
-    {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE, kMarchAtmosphereBindings},
-     {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE, kMarchAtmosphereBindings}}};
+// [mode: composite, scatter, scatter + temporal][atmosphere][rgba32]
+const core::ComputePipelineDesc kMarch[3][2][2] = {
+    {{{"clouds.march", spirv::clouds_march_comp, kMarchBindings},
+      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F, kMarchBindings}},
+     {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE, kMarchAtmosphereBindings},
+      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE, kMarchAtmosphereBindings}}},
+    {{{"clouds.march", spirv::clouds_march_comp_SCATTER, kScatterBindings},
+      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_SCATTER, kScatterBindings}},
+     {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE_SCATTER, kScatterAtmosphereBindings},
+      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE_SCATTER,
+       kScatterAtmosphereBindings}}},
+    {{{"clouds.march", spirv::clouds_march_comp_SCATTER_TEMPORAL, kScatterTemporalBindings},
+      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_SCATTER_TEMPORAL, kScatterTemporalBindings}},
+     {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE_SCATTER_TEMPORAL,
+       kScatterTemporalAtmosphereBindings},
+      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE_SCATTER_TEMPORAL,
+       kScatterTemporalAtmosphereBindings}}}};
+const core::ComputePipelineDesc kTemporal[2] = {
+    {"clouds.temporal", spirv::clouds_temporal_comp, kTemporalBindings},
+    {"clouds.temporal", spirv::clouds_temporal_comp_COLOR_RGBA32F, kTemporalBindings}};
+const core::ComputePipelineDesc kShadow{"clouds.shadow", spirv::clouds_shadow_comp, kShadowBindings};
+// [0]: RGBA16F color, [1]: RGBA32F color, [2]: RGBA16F color from the RGBA32F temporal history.
+const core::ComputePipelineDesc kUpsample[3] = {
+    {"clouds.upsample", spirv::clouds_upsample_comp, kUpsampleBindings},
+    {"clouds.upsample", spirv::clouds_upsample_comp_COLOR_RGBA32F, kUpsampleBindings},
+    {"clouds.upsample", spirv::clouds_upsample_comp_SCATTER_RGBA32F, kUpsampleBindings}};
 const core::ComputePipelineDesc kBaseNoisePass{"clouds.base_noise", spirv::common_noise_generate_comp,
                                                kNoiseBindings, sizeof(gpu::NoisePush)};
 const core::ComputePipelineDesc kDetailNoisePass{"clouds.detail_noise", spirv::common_noise_generate_comp,
@@ -47,6 +113,35 @@ const core::ComputePipelineDesc kDetailNoisePass{"clouds.detail_noise", spirv::c
 
 uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kCloudGroupSize - 1) / gpu::kCloudGroupSize;
+}
+
+// Everything the accumulated (L, T) depends on besides the camera, the light and the wind's motion
+// (core/temporal.h): the clouds' settings, the atmosphere's when on, the extent and format.
+uint64_t temporalKey(const FrameInfo& frame) {
+    using core::hashValue;
+    const CloudSettings& s = frame.clouds;
+    uint64_t h = core::kHashSeed;
+    h = hashValue(h, frame.color.extent.width);
+    h = hashValue(h, frame.color.extent.height);
+    h = hashValue(h, frame.color.format);
+    h = hashValue(h, s.shape);
+    h = hashValue(h, s.bottomHeight);
+    h = hashValue(h, s.topHeight);
+    h = hashValue(h, s.box.center);
+    h = hashValue(h, s.box.halfSize);
+    h = hashValue(h, s.box.yawDeg);
+    h = hashValue(h, s.box.pitchDeg);
+    for (float v : {s.coverage, s.cloudType, s.density, s.albedo, s.anisotropyForward, s.anisotropyBack,
+                    s.lobeMix, s.multipleScattering.attenuation, s.multipleScattering.contribution,
+                    s.multipleScattering.eccentricity, s.lightDistance, s.maxDistance, s.resolutionScale,
+                    s.noise.tiling, s.noise.detailStrength})
+        h = hashValue(h, v);
+    for (uint32_t v : {s.multipleScattering.octaves, s.steps, s.lightSteps, s.noise.baseSize,
+                       s.noise.detailSize, s.noise.seed, uint32_t(s.noise.enabled), uint32_t(s.jitter)})
+        h = hashValue(h, v);
+    h = hashValue(h, frame.atmosphere.enabled);
+    if (frame.atmosphere.enabled) h = hashValue(h, atmosphere::viewLutSettingsKey(frame.atmosphere));
+    return h;
 }
 
 // `value` modulo `period`, in [0, period).
@@ -57,7 +152,19 @@ double wrap(double value, double period) {
 
 }  // namespace
 
-gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth) {
+core::OptionalSampled shadowMapInput(const core::FrameBuilder& b, core::ImageRef standIn) {
+    const core::ImageRef map = castsShadows(b.frame()) ? b.find(kShadowMap) : core::ImageRef{};
+    if (map.valid()) return {map, Use::Sampled, SamplerKind::LinearClamp};
+    return {standIn, Use::BoundOnly, SamplerKind::NearestClamp};
+}
+
+glm::uvec2 marchExtent(uint32_t width, uint32_t height, float resolutionScale) {
+    const UVec2 e = fogMarchExtent(width, height, resolutionScale);  // the same rounding as the fog's
+    return {e.x, e.y};
+}
+
+gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth,
+                                 const glm::vec3& windDelta) {
     const CloudSettings& s = frame.clouds;
     const bool curved = followsPlanet(frame);
     const glm::dvec3 camera(frame.camera.position);
@@ -90,9 +197,14 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     u.toSun = glm::vec4(glm::vec3(glm::normalize(glm::dvec3(frame.sun.toSun))), 0.0f);
     u.ambient = glm::vec4(frame.ambient, 0.0f);
     u.march = glm::vec4(s.maxDistance, depth.reversedZ ? 0.0f : 1.0f, 0.0f, 0.0f);
-    u.counts = glm::uvec4(s.steps, s.lightSteps, ms.octaves, 0u);
+    const ShadowMapGeometry shadow = shadowMapGeometry(frame);
+    u.shadow = glm::vec4(glm::vec3(shadow.center - camera), float(shadow.extent));
+    u.counts = glm::uvec4(s.steps, s.lightSteps, ms.octaves, shadow.size);
+    u.windDelta = glm::vec4(windDelta, 0.0f);
     u.extent =
         glm::uvec4(frame.color.extent.width, frame.color.extent.height, uint32_t(frame.frameIndex), 0u);
+    u.marchExtent = glm::uvec4(
+        marchExtent(frame.color.extent.width, frame.color.extent.height, s.resolutionScale), 0u, 0u);
     u.flags.x = (s.noise.enabled ? gpu::kCloudFlagNoise : 0u) | (curved ? gpu::kCloudFlagCurved : 0u) |
                 (s.shape == CloudShape::Box ? gpu::kCloudFlagBox : 0u) |
                 (depth.reversedZ ? gpu::kCloudFlagDepthReversedZ : 0u) |
@@ -118,6 +230,28 @@ bool CloudsEffect::active(const FrameInfo& frame) const {
     return s.enabled && s.coverage > 0.0f && s.density > 0.0f;
 }
 
+core::QualityRequest CloudsEffect::quality(const FrameInfo& frame) const {
+    const CloudQuality q = frame.clouds.quality;
+    // Custom, or a value cast from another int (left for validateSettings to reject naming clouds.quality).
+    if (q == CloudQuality::Custom || uint32_t(q) > uint32_t(CloudQuality::Ultra)) return {};
+    return {core::QualityRequest::Kind::Preset, uint32_t(q) - uint32_t(CloudQuality::Low), 0.0f};
+}
+
+void CloudsEffect::applyPreset(FrameInfo& frame, uint32_t preset) const {
+    const CloudQuality q = CloudQuality(uint32_t(CloudQuality::Low) + preset);
+    frame.clouds = applyCloudQuality(frame.clouds, q);
+    frame.clouds.quality = q;
+}
+
+void CloudsEffect::recorded(const FrameInfo& frame, bool active) {
+    if (active && frame.clouds.temporal.enabled) {
+        history_.recorded(frame, frame.clouds.temporal, temporalKey(frame), false);
+        historyTime_ = frame.timeSeconds;
+    } else {
+        history_.dropped();
+    }
+}
+
 Status CloudsEffect::declare(core::FrameBuilder& b) const {
     const FrameInfo& frame = b.frame();
     const CloudSettings& s = frame.clouds;
@@ -137,20 +271,44 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         base = detail = b.transientImage(kNoNoise, one);
     }
     const Use noiseUse = s.noise.enabled ? Use::Sampled : Use::BoundOnly;
-    const gpu::CloudUniforms u = buildUniforms(frame, b.depthConvention());
+    const uint32_t width = frame.color.extent.width, height = frame.color.extent.height;
+    const glm::uvec2 march = marchExtent(width, height, s.resolutionScale);
+    const bool temporal = s.temporal.enabled;
+    const bool scatter = temporal || march != glm::uvec2(width, height);
+    core::TemporalFrame t;
+    glm::vec3 windDelta(0.0f);
+    if (temporal) {
+        t = history_.decide(frame, s.temporal, temporalKey(frame), false);
+        if (t.historyValid) windDelta = glm::vec3(glm::dvec3(s.wind) * (frame.timeSeconds - historyTime_));
+    }
+    const gpu::CloudUniforms u = buildUniforms(frame, b.depthConvention(), windDelta);
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
 
     // The atmosphere's, declared earlier this frame when it runs.
     const core::BufferRef atmosphereUniforms =
         frame.atmosphere.enabled ? b.findUniforms(atmosphere::kUniforms) : core::BufferRef{};
     const bool withAtmosphere = atmosphereUniforms.valid();
+    const core::ImageRef depth = b.host(core::HostImage::Depth);
 
-    const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-    b.pass(kMarch[withAtmosphere][rgba32], groupsFor(frame.color.extent.width),
-           groupsFor(frame.color.extent.height), 1)
+    if (castsShadows(frame)) {  // before the fogs, which read it; held: the host reads it next frame
+        core::ImageDesc shadowDesc;
+        shadowDesc.format = VK_FORMAT_R32_SFLOAT;
+        shadowDesc.extent = {s.shadowMap.size, s.shadowMap.size, 1};
+        shadowDesc.usage =
+            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+        const core::ImageRef shadowMap = b.historyImage(kShadowMap, shadowDesc);
+        b.exportImage(shadowMap);
+        b.pass(kShadow, groupsFor(s.shadowMap.size), groupsFor(s.shadowMap.size), 1)
+            .bind(gpu::kCloudBindingUniforms, uniforms)
+            .bind(gpu::kCloudBindingBaseNoise, base, noiseUse, SamplerKind::LinearRepeat)
+            .bind(gpu::kCloudBindingDetailNoise, detail, noiseUse, SamplerKind::LinearRepeat)
+            .bind(gpu::kCloudBindingShadowOut, shadowMap, Use::StorageWrite);
+    }
+
+    b.pass(kMarch[scatter ? 1 + temporal : 0][withAtmosphere][rgba32], groupsFor(march.x), groupsFor(march.y),
+           1)
         .bind(gpu::kCloudBindingUniforms, uniforms)
-        .bind(gpu::kCloudBindingColorIn, source, Use::StorageRead)
-        .bind(gpu::kCloudBindingDepth, b.host(core::HostImage::Depth), Use::Sampled)
+        .bind(gpu::kCloudBindingDepth, depth, Use::Sampled)
         .bind(gpu::kCloudBindingBaseNoise, base, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kCloudBindingDetailNoise, detail, noiseUse, SamplerKind::LinearRepeat);
     if (withAtmosphere) {
@@ -162,7 +320,48 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kCloudBindingApTransmittance, b.find(atmosphere::kApTransmittanceLut), Use::Sampled,
                   SamplerKind::LinearClamp);
     }
-    b.bind(gpu::kCloudBindingColorOut, target, Use::StorageWrite);
+    if (!scatter) {  // full size without temporal: the march composites
+        b.bind(gpu::kCloudBindingColorIn, b.compositeSource(), Use::StorageRead)
+            .bind(gpu::kCloudBindingColorOut, b.compositeTarget(), Use::StorageWrite);
+        return Status::success();
+    }
+    core::ImageDesc marchDesc;
+    marchDesc.format = frame.color.format;
+    marchDesc.extent = {march.x, march.y, 1};
+    marchDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+    const core::ImageRef scatterImage = b.transientImage(kScatter, marchDesc);
+    b.bind(gpu::kCloudBindingScatter, scatterImage, Use::StorageWrite);
+    core::ImageRef result = scatterImage;
+    if (temporal) {
+        core::ImageDesc historyDesc = marchDesc;  // RGBA32F: in half, small updates would be lost
+        historyDesc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
+        core::ImageDesc distanceDesc = marchDesc;
+        distanceDesc.format = VK_FORMAT_R32_UINT;  // two halfs (shaders/clouds/distances.glsl)
+        core::ImageRef history[2], distance[2];
+        for (int i = 0; i < 2; ++i) {
+            history[i] = b.historyImage(kHistory[i], historyDesc);
+            distance[i] = b.historyImage(kHistoryDistance[i], distanceDesc);
+        }
+        // The march stores this frame's distances in the slot written this frame (the next one's "in").
+        b.bind(gpu::kCloudBindingDistance, distance[t.writeSlot], Use::StorageWrite);
+        const gpu::TemporalUniforms tu = core::temporalUniforms(t);
+        const core::BufferRef temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
+        b.pass(kTemporal[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
+            .bind(gpu::kCloudBindingUniforms, uniforms)
+            .bind(gpu::kCloudBindingScatter, scatterImage, Use::StorageRead)
+            .bind(gpu::kCloudBindingDistance, distance[t.writeSlot], Use::StorageRead)
+            .bind(gpu::kCloudBindingHistoryIn, history[t.readSlot], Use::StorageRead)
+            .bind(gpu::kCloudBindingDistanceIn, distance[t.readSlot], Use::StorageRead)
+            .bind(gpu::kCloudBindingTemporal, temporalUniforms)
+            .bind(gpu::kCloudBindingHistoryOut, history[t.writeSlot], Use::StorageWrite);
+        result = history[t.writeSlot];
+    }
+    b.pass(kUpsample[temporal && !rgba32 ? 2 : rgba32], groupsFor(width), groupsFor(height), 1)
+        .bind(gpu::kCloudBindingUniforms, uniforms)
+        .bind(gpu::kCloudBindingColorIn, b.compositeSource(), Use::StorageRead)
+        .bind(gpu::kCloudBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kCloudBindingScatter, result, Use::StorageRead)
+        .bind(gpu::kCloudBindingColorOut, b.compositeTarget(), Use::StorageWrite);
     return Status::success();
 }
 

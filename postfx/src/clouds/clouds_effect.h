@@ -7,6 +7,7 @@
 #include "core/effect.h"
 #include "core/frame_graph.h"
 #include "core/gpu.h"
+#include "core/temporal.h"
 
 #include "clouds/clouds_shared.h"
 
@@ -16,6 +17,16 @@ inline constexpr core::ResourceId kBaseNoise{"clouds.base_noise"};      // r8 3D
 inline constexpr core::ResourceId kDetailNoise{"clouds.detail_noise"};  // r8 3D, Worley fBm (persistent)
 inline constexpr core::ResourceId kNoNoise{"clouds.no_noise"};          // 1-texel stand-in, noise off
 inline constexpr core::ResourceId kUniforms{"clouds.uniforms"};         // CloudUniforms
+// Reduced resolution or temporal (docs/effects/clouds.md, "Resolution and temporal"): the march's (L, T)
+// and reprojection distance at its extent, two accumulated (L, T) and two distance images read and
+// written in turn, and the TemporalUniforms.
+inline constexpr core::ResourceId kScatter{"clouds.scatter"};
+inline constexpr core::ResourceId kHistory[2] = {{"clouds.history_a"}, {"clouds.history_b"}};
+inline constexpr core::ResourceId kHistoryDistance[2] = {{"clouds.history_distance_a"},
+                                                         {"clouds.history_distance_b"}};
+inline constexpr core::ResourceId kTemporalUniforms{"clouds.temporal_uniforms"};
+// The shadow map (R32F, held: the host reads it in the next frame), made when the clouds cast shadows.
+inline constexpr core::ResourceId kShadowMap{"clouds.shadow_map"};
 
 // The detail texture's seed: the base's, decorrelated (its Worley layers would otherwise repeat the
 // base's own Worley octaves at 1/8 of their size).
@@ -23,8 +34,17 @@ inline uint32_t detailSeed(uint32_t seed) {
     return seed ^ 0x5bd1e995u;
 }
 
-// The uniforms of `frame` (validated): exposed for the tests.
-gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth);
+// For a consumer of the clouds' shadow (both fogs): the shadow map the clouds declared earlier this frame,
+// or `standIn` bound only.
+core::OptionalSampled shadowMapInput(const core::FrameBuilder& builder, core::ImageRef standIn);
+
+// The march's extent for a color image of `width`×`height` at `resolutionScale` [px].
+glm::uvec2 marchExtent(uint32_t width, uint32_t height, float resolutionScale);
+
+// The uniforms of `frame` (validated): exposed for the tests. `windDelta`: how far the wind moved the
+// clouds since the previous recorded frame [m].
+gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth,
+                                 const glm::vec3& windDelta = glm::vec3(0.0f));
 
 class CloudsEffect final : public core::Effect {
 public:
@@ -34,10 +54,19 @@ public:
     Status validate(const FrameInfo& frame) const override;
     // Enabled with some coverage and density.
     bool active(const FrameInfo& frame) const override;
+
+    uint32_t presetCount() const override { return 4; }  // Low, Medium, High, Ultra
+    core::QualityRequest quality(const FrameInfo& frame) const override;
+    void applyPreset(FrameInfo& frame, uint32_t preset) const override;
+    uint32_t fallbackPreset() const override { return 1; }  // Medium
+
     Status declare(core::FrameBuilder& builder) const override;
+    void recorded(const FrameInfo& frame, bool active) override;
 
 private:
     bool noiseFormatSupported_ = false;
+    core::TemporalHistory history_;
+    double historyTime_ = 0.0;  // FrameInfo::timeSeconds of the last frame recorded with history
 };
 
 }  // namespace postfx::clouds

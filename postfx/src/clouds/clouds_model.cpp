@@ -145,7 +145,8 @@ double heightProfile(const Model& m, double h) {
 }
 
 double field(const Model& m, const dvec3& x, double h) {
-    if (h < 0.0 || h > 1.0) return 0.0;
+    if (h < -gpu::kCloudHeightSlack || h > 1.0 + gpu::kCloudHeightSlack) return 0.0;
+    h = clamp01(h);
     if (!m.s.noise.enabled) return 1.0;
     const double coverage = m.s.coverage;
     const dvec3 world = m.noiseOrigin + x;
@@ -209,7 +210,7 @@ MarchResult march(const Model& m, const dvec3& d, double far, uint32_t steps, do
     const dvec2 seg = segment(m, dvec3(0.0), d, far);
     if (!(seg.y > seg.x)) return r;
     const double dt = (seg.y - seg.x) / steps;
-    double weighted = 0.0;
+    double weighted = 0.0, weightSum = 0.0;
     for (uint32_t i = 0; i < steps; ++i) {
         const double t = seg.x + (i + offset) * dt;
         const dvec3 x = d * t;
@@ -220,11 +221,13 @@ MarchResult march(const Model& m, const dvec3& d, double far, uint32_t steps, do
         const dvec3 light = inScattered(m, x, d, sigma, h, lightSteps);
         // T·S·(1 - e^{-σt·Δ})/σt with S = albedo·σt·light: the density once.
         r.luminance += r.transmittance * m.s.albedo * light * -std::expm1(-opticalDepth);
-        const double next = r.transmittance * std::exp(-opticalDepth);
-        weighted += t * (r.transmittance - next);
-        r.transmittance = next;
+        // Each step weighted by the light it removes, T·(1 - e^{-σΔ}) (as march.comp).
+        const double removed = r.transmittance * -std::expm1(-opticalDepth);
+        weighted += t * removed;
+        weightSum += removed;
+        r.transmittance *= std::exp(-opticalDepth);
     }
-    if (r.transmittance < 1.0) r.meanDistance = weighted / (1.0 - r.transmittance);
+    if (weightSum > 0.0) r.meanDistance = weighted / weightSum;
     return r;
 }
 

@@ -85,6 +85,8 @@ Status validateMultipleScattering(const CloudMultipleScattering& m) {
 }  // namespace
 
 Status validateSettings(const CloudSettings& s) {
+    if (uint32_t(s.quality) > uint32_t(CloudQuality::Ultra))
+        return bad("quality", std::to_string(uint32_t(s.quality)) + " is not a CloudQuality");
     if (uint32_t(s.shape) > uint32_t(CloudShape::Box))
         return bad("shape", std::to_string(uint32_t(s.shape)) + " is not a CloudShape");
     if (Status r = range("bottom_height", s.bottomHeight, 0.0, kMaxHeight); !r) return r;
@@ -106,12 +108,29 @@ Status validateSettings(const CloudSettings& s) {
     if (Status r = positive("light_distance", s.lightDistance, kMaxLightDistance); !r) return r;
     if (Status r = positive("max_distance", s.maxDistance, kMaxDistance); !r) return r;
     if (Status r = vec3("wind", s.wind, -kMaxWind, kMaxWind); !r) return r;
+    if (Status r = range("resolution_scale", s.resolutionScale, kMinResolutionScale, 1.0); !r) return r;
+    if (Status r = positive("temporal.blend_weight", s.temporal.blendWeight, 1.0); !r) return r;
+    if (Status r = count("shadow_map.size", s.shadowMap.size, kMinShadowSize, kMaxShadowSize); !r) return r;
+    if (Status r = range("shadow_map.extent", s.shadowMap.extent, kMinShadowExtent, kMaxShadowExtent); !r)
+        return r;
     return validateNoise(s.noise);
 }
 
 }  // namespace postfx::clouds
 
 namespace postfx {
+CloudSettings applyCloudQuality(const CloudSettings& settings, CloudQuality quality) {
+    CloudSettings s = settings;
+    for (const clouds::QualityPreset& p : clouds::kQualityPresets)
+        if (p.quality == quality) {
+            s.steps = p.steps;
+            s.lightSteps = p.lightSteps;
+            s.resolutionScale = p.resolutionScale;
+            s.temporal.enabled = p.temporal;
+        }
+    return s;
+}
+
 Status validateCloudSettings(const CloudSettings& settings) {
     return clouds::validateSettings(settings);
 }

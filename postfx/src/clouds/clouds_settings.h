@@ -15,6 +15,23 @@ inline constexpr double kMinTiling = 1.0, kMaxTiling = 1e7;  // [m]
 inline constexpr uint32_t kMaxSteps = 1024, kMaxLightSteps = 64, kMaxOctaves = 8;
 inline constexpr uint32_t kMinBaseSize = 16, kMaxBaseSize = 256, kMinDetailSize = 8, kMaxDetailSize = 128;
 inline constexpr float kMaxAnisotropy = 0.999f;
+inline constexpr float kMinResolutionScale = 0.25f;
+inline constexpr uint32_t kMinShadowSize = 16, kMaxShadowSize = 4096;      // [texels]
+inline constexpr double kMinShadowExtent = 100.0, kMaxShadowExtent = 1e6;  // [m]
+
+// A quality preset's values (postfx/clouds.h, CloudQuality; docs/effects/clouds.md, "Quality presets").
+struct QualityPreset {
+    CloudQuality quality;
+    uint32_t steps, lightSteps;
+    float resolutionScale;
+    bool temporal;
+};
+inline constexpr QualityPreset kQualityPresets[] = {
+    {CloudQuality::Low, 32, 4, 0.25f, true},
+    {CloudQuality::Medium, 64, 6, 0.5f, true},
+    {CloudQuality::High, 96, 8, 0.5f, true},
+    {CloudQuality::Ultra, 128, 12, 1.0f, true},
+};
 
 Status validateSettings(const CloudSettings& settings);
 

@@ -1,6 +1,8 @@
 #include "fog/fog_effect.h"
 
 #include "atmosphere/atmosphere_effect.h"
+#include "clouds/clouds_effect.h"
+#include "clouds/clouds_shadow.h"
 #include "core/checks.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
@@ -23,13 +25,14 @@ constexpr core::Binding kNoiseTexture{gpu::kFogBindingNoise, VK_DESCRIPTOR_TYPE_
 constexpr core::Binding kUniformBuffer{gpu::kFogBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
 constexpr core::Binding kScatterImage{gpu::kFogBindingScatter, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
 constexpr core::Binding kAtmosphere{gpu::kFogBindingAtmosphere, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
-constexpr core::Binding kRaymarchBindings[] = {kColorIn,      kColorOut,      kDepth,     kShadowMap,
-                                               kNoiseTexture, kUniformBuffer, kAtmosphere};
-constexpr core::Binding kReducedBindings[] = {kDepth,         kShadowMap,    kNoiseTexture,
-                                              kUniformBuffer, kScatterImage, kAtmosphere};
+constexpr core::Binding kCloudShadow{gpu::kFogBindingCloudShadow, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+constexpr core::Binding kRaymarchBindings[] = {kColorIn,      kColorOut,      kDepth,      kShadowMap,
+                                               kNoiseTexture, kUniformBuffer, kAtmosphere, kCloudShadow};
+constexpr core::Binding kReducedBindings[] = {kDepth,        kShadowMap,  kNoiseTexture, kUniformBuffer,
+                                              kScatterImage, kAtmosphere, kCloudShadow};
 constexpr core::Binding kDistance{gpu::kFogBindingDistance, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
 constexpr core::Binding kReducedTemporalBindings[] = {
-    kDepth, kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage, kDistance, kAtmosphere};
+    kDepth, kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage, kDistance, kAtmosphere, kCloudShadow};
 constexpr core::Binding kUpsampleBindings[] = {kColorIn, kColorOut, kDepth, kUniformBuffer, kScatterImage};
 constexpr core::Binding kHistoryIn{gpu::kFogBindingHistoryIn, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
 constexpr core::Binding kHistoryOut{gpu::kFogBindingHistoryOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
@@ -84,6 +87,7 @@ uint64_t temporalKey(const FrameInfo& frame) {
     h = hashValue(h, s.resolutionScale);
     h = hashValue(h, s.transmittanceCutoff);
     h = hashValue(h, s.skipEmptySpace);
+    h = hashValue(h, clouds::castsShadows(frame));  // the sun's light under the clouds
     return hashValue(h, s.shadowKernel);
 }
 
@@ -150,6 +154,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const Use noiseUse = noise.enabled ? Use::Sampled : Use::BoundOnly;
     // Full size without temporal: one pass marches and composites.
     const atmosphere::SunTransmittanceLut sunLut = atmosphere::sunTransmittanceLut(b, depth);
+    const core::OptionalSampled cloudShadow = clouds::shadowMapInput(b, depth);
     if (!reduced && !temporal) {
         const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
         b.pass(kRaymarch[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
@@ -159,6 +164,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
             .bind(gpu::kFogBindingUniforms, uniforms)
             .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
+            .bind(gpu::kFogBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
             .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);
         return Status::success();
     }
@@ -184,6 +190,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFogBindingUniforms, uniforms)
         .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
+        .bind(gpu::kFogBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
         .bind(gpu::kFogBindingScatter, scatter, Use::StorageWrite);
     core::ImageRef result = scatter;
     if (temporal) {

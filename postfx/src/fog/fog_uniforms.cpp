@@ -1,5 +1,7 @@
 #include "fog/fog_uniforms.h"
 
+#include "clouds/clouds_shadow.h"
+
 #include "core/camera_math.h"
 #include "fog/fog_settings.h"
 
@@ -54,6 +56,14 @@ gpu::FogUniforms buildMediumUniforms(const FogMedium& s, const FrameInfo& frame,
         u.planet = glm::vec4(a.groundRadius, a.topRadius, float(a.transmittanceLutSize.x),
                              float(a.transmittanceLutSize.y));
         u.planetCamera = glm::vec4(glm::vec3(camera + glm::dvec3(0.0, a.groundRadius, 0.0)), 0.0f);
+    }
+    // The sun through the clouds (fog/atmosphere_light.glsl): their shadow map, which the clouds declare
+    // earlier in the frame whenever they cast shadows.
+    if (clouds::castsShadows(frame)) {
+        flags |= gpu::kFogFlagCloudShadow;
+        const clouds::ShadowRows rows = clouds::cameraRelativeShadowRows(frame);
+        u.cloudShadowU = rows.u;
+        u.cloudShadowV = rows.v;
     }
     u.flags = glm::uvec4(flags, 0u, 0u, 0u);
     return u;

@@ -1,6 +1,8 @@
 #include "froxel_fog/froxel_effect.h"
 
 #include "atmosphere/atmosphere_effect.h"
+#include "clouds/clouds_effect.h"
+#include "clouds/clouds_shadow.h"
 #include "fog/fog_settings.h"
 #include "fog/medium_noise.h"
 #include "froxel_fog/froxel_uniforms.h"
@@ -33,25 +35,28 @@ constexpr core::Binding kIntegratedImage{gpu::kFroxelBindingIntegrated, kStorage
 constexpr core::Binding kIntegratedSampled{gpu::kFroxelBindingIntegrated, kSampled};
 
 constexpr core::Binding kAtmosphere{gpu::kFroxelBindingAtmosphere, kSampled};
+constexpr core::Binding kCloudShadow{gpu::kFroxelBindingCloudShadow, kSampled};
 
 constexpr core::Binding kLightListBindings[] = {kUniformBuffer, kLightBuffer, kLightListImage};
-constexpr core::Binding kScatterBindings[] = {kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage,
-                                              kAtmosphere};
-constexpr core::Binding kScatterLightBindings[] = {kShadowMap,   kNoiseTexture, kUniformBuffer,
-                                                   kLightBuffer, kScatterImage, kAtmosphere};
-constexpr core::Binding kScatterListBindings[] = {
-    kShadowMap, kNoiseTexture, kUniformBuffer, kLightBuffer, kLightListImage, kScatterImage, kAtmosphere};
+constexpr core::Binding kScatterBindings[] = {kShadowMap,    kNoiseTexture, kUniformBuffer,
+                                              kScatterImage, kAtmosphere,   kCloudShadow};
+constexpr core::Binding kScatterLightBindings[] = {kShadowMap,    kNoiseTexture, kUniformBuffer, kLightBuffer,
+                                                   kScatterImage, kAtmosphere,   kCloudShadow};
+constexpr core::Binding kScatterListBindings[] = {kShadowMap,   kNoiseTexture,   kUniformBuffer,
+                                                  kLightBuffer, kLightListImage, kScatterImage,
+                                                  kAtmosphere,  kCloudShadow};
 // With temporal accumulation: the history volume and the temporal uniforms too.
 constexpr core::Binding kHistorySampled{gpu::kFroxelBindingHistory, kSampled};
 constexpr core::Binding kTemporalBuffer{gpu::kFroxelBindingTemporal, kUniform};
-constexpr core::Binding kScatterTemporalBindings[] = {
-    kShadowMap, kNoiseTexture, kUniformBuffer, kScatterImage, kHistorySampled, kTemporalBuffer, kAtmosphere};
+constexpr core::Binding kScatterTemporalBindings[] = {kShadowMap,    kNoiseTexture,   kUniformBuffer,
+                                                      kScatterImage, kHistorySampled, kTemporalBuffer,
+                                                      kAtmosphere,   kCloudShadow};
 constexpr core::Binding kScatterLightTemporalBindings[] = {kShadowMap,      kNoiseTexture, kUniformBuffer,
                                                            kLightBuffer,    kScatterImage, kHistorySampled,
-                                                           kTemporalBuffer, kAtmosphere};
-constexpr core::Binding kScatterListTemporalBindings[] = {kShadowMap,      kNoiseTexture,   kUniformBuffer,
-                                                          kLightBuffer,    kLightListImage, kScatterImage,
-                                                          kHistorySampled, kTemporalBuffer, kAtmosphere};
+                                                           kTemporalBuffer, kAtmosphere,   kCloudShadow};
+constexpr core::Binding kScatterListTemporalBindings[] = {
+    kShadowMap,    kNoiseTexture,   kUniformBuffer,  kLightBuffer, kLightListImage,
+    kScatterImage, kHistorySampled, kTemporalBuffer, kAtmosphere,  kCloudShadow};
 constexpr core::Binding kIntegrateBindings[] = {kUniformBuffer, kScatterImage, kIntegratedImage};
 constexpr core::Binding kApplyBindings[] = {kColorIn,       kColorOut,          kDepth,
                                             kUniformBuffer, kIntegratedSampled, kAtmosphere};
@@ -109,6 +114,7 @@ uint64_t temporalKey(const FrameInfo& frame) {
     h = hashValue(h, s.depthDistribution);
     h = hashValue(h, s.depthExponent);
     h = hashValue(h, s.jitter);
+    h = hashValue(h, clouds::castsShadows(frame));  // the sun's light under the clouds
     h = hashValue(h, s.volumeCount);
     for (uint32_t i = 0; i < s.volumeCount; ++i) {
         const FogVolume& v = s.volumes[i];
@@ -201,6 +207,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = s.noise.enabled ? Use::Sampled : Use::BoundOnly;
     const atmosphere::SunTransmittanceLut sunLut = atmosphere::sunTransmittanceLut(b, depth);
+    const core::OptionalSampled cloudShadow = clouds::shadowMapInput(b, depth);
 
     core::ImageRef lightLists;
     if (lists) {
@@ -232,6 +239,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         b.bind(gpu::kFroxelBindingHistory, history, Use::Sampled, SamplerKind::NearestClamp)
             .bind(gpu::kFroxelBindingTemporal, temporalUniforms);
     b.bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
+        .bind(gpu::kFroxelBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
         .bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
 
     b.pass(kIntegratePass[temporal ? 1 : 0], groupsFor(grid.x), groupsFor(grid.y), 1)
