@@ -8,10 +8,11 @@
 namespace demo {
 namespace {
 
-bool createSampler(VkDevice device, bool shadowCompare, VkSampler& out, std::string& error) {
+bool createSampler(VkDevice device, bool shadowCompare, VkSampler& out, std::string& error,
+                   VkFilter filter = VK_FILTER_NEAREST) {
     VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-    sci.magFilter = VK_FILTER_NEAREST;  // the shadow map is gathered (D32 linear filtering is optional)
-    sci.minFilter = VK_FILTER_NEAREST;
+    sci.magFilter = filter;  // the shadow map is gathered (D32 linear filtering is optional)
+    sci.minFilter = filter;
     sci.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     const VkSamplerAddressMode mode =
         shadowCompare ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -28,12 +29,14 @@ bool createSampler(VkDevice device, bool shadowCompare, VkSampler& out, std::str
 bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std::string& error) {
     const VkDevice device = host.device;
     if (!createSampler(device, false, pointSampler_, error) ||
-        !createSampler(device, true, shadowSampler, error))
+        !createSampler(device, true, shadowSampler, error) ||
+        !createSampler(device, false, linearSampler_, error, VK_FILTER_LINEAR))
         return false;
+    albedoView_ = in.albedo->view;
 
     using namespace shared;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    const std::array<VkDescriptorSetLayoutBinding, 7> bindings{{
+    const std::array<VkDescriptorSetLayoutBinding, 8> bindings{{
         {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
         {kBindingAlbedo, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
         {kBindingNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
@@ -41,6 +44,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
         {kBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
         {kBindingHdr, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, cs, nullptr},
         {kBindingLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
+        {kBindingCloudShadow, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
     }};
     VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     lci.bindingCount = uint32_t(bindings.size());
@@ -49,7 +53,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
                  "vkCreateDescriptorSetLayout", error))
         return false;
     const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
-                                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4},
+                                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5},
                                                      {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}}};
     VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pci.maxSets = 1;
@@ -75,7 +79,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
         {shadowSampler, in.shadowMap->view, depthReadOnly},
         {VK_NULL_HANDLE, in.hdr->view, VK_IMAGE_LAYOUT_GENERAL},
     }};
-    std::array<VkWriteDescriptorSet, 7> writes{};
+    std::array<VkWriteDescriptorSet, 7> writes{};  // the cloud shadow's: setCloudShadow below
     for (size_t i = 0; i < writes.size(); ++i) {
         writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
         writes[i].dstSet = set_;
@@ -90,6 +94,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
             writes[i].pImageInfo = &images[i - 1];
     }
     vkUpdateDescriptorSets(device, uint32_t(writes.size()), writes.data(), 0, nullptr);
+    setCloudShadow(device, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED);
 
     VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     plci.setLayoutCount = 1;
@@ -100,12 +105,30 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
                                  pipeline_, error);
 }
 
+void LightingPass::setCloudShadow(VkDevice device, VkImageView view, VkImageLayout layout) {
+    if (!view) layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;  // the albedo's
+    const bool first = cloudShadowLayout_ == VK_IMAGE_LAYOUT_UNDEFINED;
+    if (!first && view == cloudShadowView_ && layout == cloudShadowLayout_) return;
+    if (!first) vkDeviceWaitIdle(device);
+    cloudShadowView_ = view;
+    cloudShadowLayout_ = layout;
+    const VkDescriptorImageInfo image{linearSampler_, view ? view : albedoView_, layout};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set_;
+    write.dstBinding = shared::kBindingCloudShadow;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &image;
+    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
 void LightingPass::destroy(VkDevice device) {
     if (pipeline_) vkDestroyPipeline(device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(device, layout_, nullptr);
     if (pool_) vkDestroyDescriptorPool(device, pool_, nullptr);
     if (setLayout_) vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
     if (pointSampler_) vkDestroySampler(device, pointSampler_, nullptr);
+    if (linearSampler_) vkDestroySampler(device, linearSampler_, nullptr);
     if (shadowSampler) vkDestroySampler(device, shadowSampler, nullptr);
     *this = LightingPass{};
 }

@@ -23,11 +23,18 @@ public:
     void destroy(VkDevice device);
     // Dispatch only; the caller orders it against the writers and readers of the images.
     void record(VkCommandBuffer cmd, VkExtent2D extent) const;
+    // Points the cloud shadow binding at `view` in `layout` (VK_NULL_HANDLE: the albedo stand-in); when
+    // that changes the binding, first waits until the device is idle (no pending frame uses the set).
+    void setCloudShadow(VkDevice device, VkImageView view, VkImageLayout layout);
 
     VkSampler shadowSampler = VK_NULL_HANDLE;  // nearest, compare LESS_OR_EQUAL, border = depth 1 (lit)
 
 private:
     VkSampler pointSampler_ = VK_NULL_HANDLE;
+    VkSampler linearSampler_ = VK_NULL_HANDLE;  // the cloud shadow map: linear, clamp to edge
+    VkImageView albedoView_ = VK_NULL_HANDLE;   // the cloud shadow's stand-in
+    VkImageView cloudShadowView_ = VK_NULL_HANDLE;
+    VkImageLayout cloudShadowLayout_ = VK_IMAGE_LAYOUT_UNDEFINED;
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet set_ = VK_NULL_HANDLE;

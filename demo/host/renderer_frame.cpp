@@ -178,6 +178,20 @@ postfx::FrameInfo Renderer::frameInputs(VkCommandBuffer cmd, const Scene& scene,
                             postfx::ImageInput{});
 }
 
+postfx::CloudShadowTransform Renderer::Impl::bindCloudShadow(VkCommandBuffer cmd) {
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    const VkImageView view = postfx->imageView(postfx::kCloudsShadowMap, &layout);
+    // A new view or layout waits for the device (rare: the clouds' settings or the effects changed).
+    lighting.setCloudShadow(host.device, view, layout);
+    if (view == VK_NULL_HANDLE) return {};
+    // postfx's writes of the map in the previous frame before the lighting's reads.
+    VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+    vkCmdPipelineBarrier(cmd, kCompute, kCompute, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+    return cloudShadow;
+}
+
 bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                                  const postfx::ImageInput& fogOutput, std::string& error) {
     if (scene.lights.size() > shared::kMaxDemoLights) {
@@ -192,8 +206,11 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     shadowInfo.texelWorldSize = fit.texelWorldSize;
 
     // Frame uniforms: overwrite after the previous frame's readers (WAR), then publish to this frame's.
-    const shared::FrameUniforms u =
+    shared::FrameUniforms u =
         makeFrameUniforms(scene, options, projection(scene), fit, shadows, atmosphereLighting.update(scene));
+    const postfx::CloudShadowTransform clouds = bindCloudShadow(cmd);
+    u.cloudShadowU = glm::vec4(glm::dvec4(clouds.u));
+    u.cloudShadowV = glm::vec4(glm::dvec4(clouds.v));
     bufferBarrier(cmd, frameUniforms, kUniformStages, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdUpdateBuffer(cmd, frameUniforms.buffer, 0, sizeof(u), &u);
@@ -232,6 +249,7 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
         return false;
     }
     cameraCutRequested = false;  // told to postfx
+    cloudShadow = postfx::cloudShadowTransform(frame);
     return true;
 }
 

@@ -68,12 +68,19 @@ struct Renderer::Impl {
     // The surfaces' sun transmittance, ambient and sky through the scene's atmosphere, recomputed only when
     // the sun or the atmosphere change.
     mutable AtmosphereLightingCache atmosphereLighting;
+    // postfx's cloud shadow transform of the last recorded frame, whose shadow map the next frame's
+    // lighting reads (docs/effects/clouds.md, "Shadows").
+    postfx::CloudShadowTransform cloudShadow;
     // requestCameraCut(): the next recorded frame is a camera cut (FrameInfo::cameraCut).
     bool cameraCutRequested = false;
 
     // renderReference(): where postfx writes the fogged frame so that the HDR image keeps the
     // un-fogged scene (FrameInfo::output); created on first use.
     GpuImage fogScratch;
+
+    // Points the lighting at postfx's cloud shadow map held from the previous frame (or at none) and
+    // returns the rows its uniforms carry; orders the map's writes before the lighting's reads.
+    postfx::CloudShadowTransform bindCloudShadow(VkCommandBuffer cmd);
 
     bool createResources(std::string& error);
     bool createFrameSet(std::string& error);

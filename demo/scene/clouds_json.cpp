@@ -28,9 +28,15 @@ constexpr const char* kCloudKeys[] = {"enabled",
                                       "max_distance",
                                       "wind",
                                       "jitter",
+                                      "quality",
+                                      "resolution_scale",
+                                      "temporal",
+                                      "cast_shadows",
+                                      "shadow_map",
                                       "noise"};
 constexpr const char* kBoxKeys[] = {"center", "half_size", "yaw_deg", "pitch_deg"};
 constexpr const char* kMultipleScatteringKeys[] = {"octaves", "attenuation", "contribution", "eccentricity"};
+constexpr const char* kShadowMapKeys[] = {"size", "extent"};
 constexpr const char* kNoiseKeys[] = {"enabled", "base_size", "detail_size",
                                       "seed",    "tiling",    "detail_strength"};
 
@@ -45,6 +51,29 @@ const json* nestedObject(const json& j, const std::string& parent, const char* k
     expectObject(*o, path);
     checkKeys(*o, path, keys);
     return o;
+}
+
+struct QualityName {
+    postfx::CloudQuality quality;
+    const char* name;
+};
+constexpr QualityName kQualityNames[] = {{postfx::CloudQuality::Custom, "custom"},
+                                         {postfx::CloudQuality::Low, "low"},
+                                         {postfx::CloudQuality::Medium, "medium"},
+                                         {postfx::CloudQuality::High, "high"},
+                                         {postfx::CloudQuality::Ultra, "ultra"}};
+
+postfx::CloudQuality readQuality(const json& j, const std::string& path) {
+    if (j.is_string())
+        for (const QualityName& q : kQualityNames)
+            if (j.get<std::string>() == q.name) return q.quality;
+    fail(path, "expected \"custom\", \"low\", \"medium\", \"high\" or \"ultra\"" + got(j));
+}
+
+const char* qualityName(postfx::CloudQuality quality) {
+    for (const QualityName& q : kQualityNames)
+        if (q.quality == quality) return q.name;
+    return "custom";
 }
 
 postfx::CloudShape readShape(const json& j, const std::string& path) {
@@ -92,6 +121,15 @@ postfx::CloudSettings readClouds(const json& j, const std::string& path) {
     readOptional(j, path, "max_distance", s.maxDistance);
     readOptional(j, path, "wind", s.wind);
     readOptional(j, path, "jitter", s.jitter);
+    if (const json* v = find(j, "quality")) s.quality = readQuality(*v, child(path, "quality"));
+    readOptional(j, path, "resolution_scale", s.resolutionScale);
+    if (const json* v = find(j, "temporal"))
+        medium_json::readTemporal(*v, child(path, "temporal"), s.temporal);
+    readOptional(j, path, "cast_shadows", s.castShadows);
+    if (const json* m = nestedObject(j, path, "shadow_map", kShadowMapKeys, p)) {
+        readOptional(*m, p, "size", s.shadowMap.size);
+        readOptional(*m, p, "extent", s.shadowMap.extent);
+    }
     if (const json* n = nestedObject(j, path, "noise", kNoiseKeys, p)) {
         s.noise.enabled = true;  // a `noise` object turns the noise on unless it says otherwise
         readOptional(*n, p, "enabled", s.noise.enabled);
@@ -137,6 +175,11 @@ json cloudsToJson(const postfx::CloudSettings& s) {
                 {"max_distance", number(s.maxDistance)},
                 {"wind", vec3(glm::vec3(s.wind))},
                 {"jitter", s.jitter},
+                {"quality", qualityName(s.quality)},
+                {"resolution_scale", number(s.resolutionScale)},
+                {"temporal", medium_json::temporalToJson(s.temporal)},
+                {"cast_shadows", s.castShadows},
+                {"shadow_map", {{"size", s.shadowMap.size}, {"extent", number(s.shadowMap.extent)}}},
                 {"noise",
                  {{"enabled", n.enabled},
                   {"base_size", n.baseSize},

@@ -32,6 +32,9 @@ DEMO_CONST(uint, kBindingDepth, 3u);      // sampler2D, G-buffer depth (D32)
 DEMO_CONST(uint, kBindingShadowMap, 4u);  // sampler2DShadow, sun shadow map (standard Z)
 DEMO_CONST(uint, kBindingHdr, 5u);        // image2D rgba16f, output radiance
 DEMO_CONST(uint, kBindingLights, 6u);     // uniform LightsUniforms, the scene's local lights
+// sampler2D r32f, postfx's cloud shadow map of the previous frame (postfx::kCloudsShadowMap); the albedo
+// stands in while postfx holds none (then the rows below put every point outside it: never sampled)
+DEMO_CONST(uint, kBindingCloudShadow, 7u);
 
 DEMO_CONST(uint, kLightingGroupSize, 8u);  // lighting workgroup is kLightingGroupSize² threads
 
@@ -61,6 +64,10 @@ struct FrameUniforms {
     // exp(-depth). All 0 without the atmosphere.
     vec4 sunOpticalDepthLow;
     vec4 sunOpticalDepthHigh;
+    // postfx::cloudShadowTransform of the frame that made the cloud shadow map (the previous one), rows for
+    // world positions: uv = (dot(u.xyz, world) + u.w, dot(v.xyz, world) + v.w); outside [0, 1]²: no shadow.
+    vec4 cloudShadowU;
+    vec4 cloudShadowV;
 };
 
 // Local lights (scene `lights`, postfx::LocalLight), at most kMaxDemoLights (= postfx::kMaxLocalLights;
@@ -122,7 +129,7 @@ struct TonemapPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(FrameUniforms) == 3 * 64 + 9 * 16, "FrameUniforms must match std140");
+static_assert(sizeof(FrameUniforms) == 3 * 64 + 11 * 16, "FrameUniforms must match std140");
 static_assert(sizeof(LightsUniforms) == 16384, "LightsUniforms must match std140 and fit 16 KiB");
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match std430 push constants");
 static_assert(sizeof(TonemapPush) == 32, "TonemapPush must match std430 push constants");

@@ -4,6 +4,8 @@
 // T_atm: the sun's transmittance through postfx's atmosphere at the point, exp(-τ) with τ interpolated
 // linearly in altitude between two altitudes the host evaluated exactly (host/atmosphere_lighting.h: an
 // approximation, docs/effects/atmosphere.md "The demo"); 1 without the atmosphere (τ = 0).
+// visibility: the shadow map's times the clouds' transmittance toward the sun from postfx's cloud shadow
+// map of the previous frame (postfx::cloudShadowTransform; docs/effects/clouds.md, "Shadows").
 // Local lights cast no shadows; falloff and spot factor are demo_shared.h's (localLightFalloff, spotFactor).
 #version 450
 #extension GL_GOOGLE_include_directive : require
@@ -19,6 +21,7 @@ layout(set = 0, binding = kBindingNormal) uniform sampler2D gNormal;
 layout(set = 0, binding = kBindingDepth) uniform sampler2D gDepth;
 layout(set = 0, binding = kBindingShadowMap) uniform sampler2DShadow shadowMap;
 layout(set = 0, binding = kBindingHdr, rgba16f) uniform writeonly image2D hdr;
+layout(set = 0, binding = kBindingCloudShadow) uniform sampler2D cloudShadowMap;
 layout(set = 0, binding = kBindingLights, std140) uniform LightsBlock {
     LightsUniforms lightList;
 };
@@ -26,6 +29,14 @@ layout(set = 0, binding = kBindingLights, std140) uniform LightsBlock {
 #include "shadow.glsl"
 
 const float kPi = 3.14159265358979;
+
+// The clouds' transmittance toward the sun at world position p: 1 outside postfx's map.
+float cloudShadow(vec3 p) {
+    vec2 uv = vec2(dot(frame.cloudShadowU.xyz, p) + frame.cloudShadowU.w,
+                   dot(frame.cloudShadowV.xyz, p) + frame.cloudShadowV.w);
+    if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0)))) return 1.0;
+    return textureLod(cloudShadowMap, uv, 0.0).r;
+}
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -45,6 +56,7 @@ void main() {
         float nDotL = max(dot(n, frame.toSun.xyz), 0.0);
         float visibility = 1.0;
         if (frame.toSun.w > 0.5 && nDotL > 0.0) visibility = sunVisibility(world, n, nDotL);
+        if (nDotL > 0.0) visibility *= cloudShadow(world);
         float altitudeSpan = frame.sunOpticalDepthHigh.w - frame.sunOpticalDepthLow.w;
         float a = clamp((world.y - frame.sunOpticalDepthLow.w) / altitudeSpan, 0.0, 1.0);
         vec3 sunTransmittance = exp(-mix(frame.sunOpticalDepthLow.rgb, frame.sunOpticalDepthHigh.rgb, a));

@@ -28,7 +28,9 @@ TEST(CloudsScene, EveryKeyRoundTrips) {
       "anisotropy_forward": 0.7, "anisotropy_back": -0.2, "lobe_mix": 0.3,
       "multiple_scattering": {"octaves": 3, "attenuation": 0.6, "contribution": 0.4, "eccentricity": 0.3},
       "steps": 96, "light_steps": 8, "light_distance": 5000, "max_distance": 80000, "wind": [5, 0, 2],
-      "jitter": false,
+      "jitter": false, "quality": "high", "resolution_scale": 0.25,
+      "temporal": {"enabled": false, "blend_weight": 0.2}, "cast_shadows": false,
+      "shadow_map": {"size": 1024, "extent": 30000},
       "noise": {"base_size": 64, "detail_size": 16, "seed": 9, "tiling": 9000, "detail_strength": 0.5}
     })");
     demo::Scene scene;
@@ -43,6 +45,13 @@ TEST(CloudsScene, EveryKeyRoundTrips) {
     EXPECT_FLOAT_EQ(s.multipleScattering.contribution, 0.4f);
     EXPECT_EQ(s.steps, 96u);
     EXPECT_FALSE(s.jitter);
+    EXPECT_EQ(s.quality, postfx::CloudQuality::High);
+    EXPECT_FLOAT_EQ(s.resolutionScale, 0.25f);
+    EXPECT_FALSE(s.temporal.enabled);
+    EXPECT_FLOAT_EQ(s.temporal.blendWeight, 0.2f);
+    EXPECT_FALSE(s.castShadows);
+    EXPECT_EQ(s.shadowMap.size, 1024u);
+    EXPECT_FLOAT_EQ(s.shadowMap.extent, 30000.0f);
     EXPECT_TRUE(s.noise.enabled);
     EXPECT_EQ(s.noise.baseSize, 64u);
     EXPECT_FLOAT_EQ(s.noise.detailStrength, 0.5f);
@@ -63,6 +72,10 @@ TEST(CloudsScene, BadValuesNameTheirKeyPath) {
         {R"({"box": {"yaw": 3}})", "effects.clouds.box.yaw: unknown key"},
         {R"({"coverage": 2})", "effects.clouds.coverage: 2 is outside [0, 1]"},
         {R"({"cast": true})", "effects.clouds.cast: unknown key"},
+        {R"({"shadow_map": {"size": 8}})", "effects.clouds.shadow_map.size: 8 is outside [16, 4096]"},
+        {R"({"shadow_map": {"extent": -1}})", "effects.clouds.shadow_map.extent"},
+        {R"({"resolution_scale": 0.1})", "effects.clouds.resolution_scale: 0.1 is outside [0.25, 1]"},
+        {R"({"quality": "epic"})", "effects.clouds.quality: expected"},
     };
     for (const auto& [clouds, message] : cases) {
         json j = base();
