@@ -26,11 +26,12 @@ PFX_CONST(uint, kCloudBindingApTransmittance, 9);   // sampler2DArray: aerial pe
 PFX_CONST(uint, kCloudBindingScatter, 10);  // storage image: the march's (L, T) at its extent
 PFX_CONST(uint, kCloudBindingDistance,
           11);  // storage image r32ui: this frame's distances (packCloudDistances)
-PFX_CONST(uint, kCloudBindingHistoryIn, 12);   // storage image rgba32f: accumulated (L, T), last frame
-PFX_CONST(uint, kCloudBindingHistoryOut, 13);  // storage image rgba32f: accumulated (L, T), this frame
-PFX_CONST(uint, kCloudBindingDistanceIn, 14);  // storage image r32ui: last frame's distances
-PFX_CONST(uint, kCloudBindingTemporal, 15);    // uniform buffer: TemporalUniforms (common/shared.h)
-PFX_CONST(uint, kCloudBindingShadowOut, 16);   // storage image r32f: the shadow map (clouds.shadow)
+PFX_CONST(uint, kCloudBindingHistoryIn, 12);    // storage image rgba32f: accumulated (L, T), last frame
+PFX_CONST(uint, kCloudBindingHistoryOut, 13);   // storage image rgba32f: accumulated (L, T), this frame
+PFX_CONST(uint, kCloudBindingDistanceIn, 14);   // storage image r32ui: last frame's distances
+PFX_CONST(uint, kCloudBindingTemporal, 15);     // uniform buffer: TemporalUniforms (common/shared.h)
+PFX_CONST(uint, kCloudBindingShadowOut, 16);    // storage image r32f: the shadow map (clouds.shadow)
+PFX_CONST(uint, kCloudBindingCoverageMap, 17);  // sampler2D (repeat): the host's coverage map
 
 // Flags in CloudUniforms.flags.x
 PFX_CONST(uint, kCloudFlagNoise, 1u);   // sample the noise textures (off: the field is 1)
@@ -38,6 +39,7 @@ PFX_CONST(uint, kCloudFlagCurved, 2u);  // the layer follows the planet (atmosph
 PFX_CONST(uint, kCloudFlagBox, 4u);     // CloudShape::Box
 PFX_CONST(uint, kCloudFlagDepthReversedZ, 8u);
 PFX_CONST(uint, kCloudFlagJitter, 16u);
+PFX_CONST(uint, kCloudFlagCoverageMap, 32u);  // read the host's coverage map
 
 // The model's constants (docs/effects/clouds.md, "Density" and "Light").
 PFX_CONST(float, kCloudDetailTilingRatio, 8.0f);  // the detail texture repeats tiling / this [m]
@@ -66,11 +68,14 @@ struct CloudUniforms {
     mat4 boxFromView;  // Box: camera-relative world -> the box's frame (its centre at the origin)
     // xyz: the camera relative to the layer's origin: the planet's centre (curved) or (0, y, 0) (flat) [m]
     vec4 origin;
-    vec4 layer;         // x: bottom, y: top altitude [m], z: ground radius [m] (curved), w: 1 / thickness
-    vec4 boxHalf;       // Box: xyz half extents [m]
-    vec4 noiseBase;     // xyz: offset added to camera-relative x (camera - wind·t, modulo the period), w:
-                        // 1/period
-    vec4 noiseDetail;   // the same for the detail texture
+    vec4 layer;        // x: bottom, y: top altitude [m], z: ground radius [m] (curved), w: 1 / thickness
+    vec4 boxHalf;      // Box: xyz half extents [m]
+    vec4 noiseBase;    // xyz: offset added to camera-relative x (camera - wind·t, modulo the period), w:
+                       // 1/period
+    vec4 noiseDetail;  // the same for the detail texture
+    // Coverage map: xy: offset added to camera-relative (x, z) ((camera - wind·t - origin) modulo the
+    // size), z: 1 / size [1/m]
+    vec4 coverageMap;
     vec4 shape;         // x: coverage, y: 1 / top falloff, z: detail strength, w: σt where the field is 1
     vec4 phase;         // x: g forward, y: g back, z: lobe mix, w: albedo
     vec4 multiScatter;  // x: attenuation a, y: contribution b, z: eccentricity c, w: octaves
@@ -87,7 +92,7 @@ struct CloudUniforms {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudUniforms) == 2 * 64 + 18 * 16, "CloudUniforms must match std140");
+static_assert(sizeof(CloudUniforms) == 2 * 64 + 19 * 16, "CloudUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

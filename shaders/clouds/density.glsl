@@ -69,12 +69,19 @@ float cloudHeightProfile(float h) {
 
 // The density field in [0, 1] at camera-relative x, height fraction h (inside the shape): the base
 // shape N·profile(h) thresholded by the coverage c, (shape - (1 - c)) / c clamped, then eroded by the
-// detail D·strength = e: (field - e) / (1 - e) clamped (Schneider 2015's remaps). Noise off: 1.
+// detail D·strength = e: (field - e) / (1 - e) clamped (Schneider 2015's remaps), c times the coverage map's
+// value where one is given. Noise off: 1 (the map's value with a map).
 float cloudField(vec3 x, float h) {
     if (h < -kCloudHeightSlack || h > 1.0 + kCloudHeightSlack) return 0.0;
     h = clamp(h, 0.0, 1.0);
-    if ((cl.flags.x & kCloudFlagNoise) == 0u) return 1.0;
-    float coverage = cl.shape.x;
+    // The host's coverage map m at the point's world (x, z): coverage·m, no noise read where m = 0.
+    float map = 1.0;
+    if ((cl.flags.x & kCloudFlagCoverageMap) != 0u) {
+        map = textureLod(coverageMap, (x.xz + cl.coverageMap.xy) * cl.coverageMap.z, 0.0).r;
+        if (!(map > 0.0)) return 0.0;
+    }
+    if ((cl.flags.x & kCloudFlagNoise) == 0u) return map;
+    float coverage = cl.shape.x * map;
     float shape =
         textureLod(baseNoise, (x + cl.noiseBase.xyz) * cl.noiseBase.w, 0.0).r * cloudHeightProfile(h);
     float field = clamp((shape - (1.0 - coverage)) / coverage, 0.0, 1.0);

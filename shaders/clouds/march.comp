@@ -28,6 +28,7 @@ layout(binding = kCloudBindingUniforms, std140) uniform Uniforms {
 layout(binding = kCloudBindingDepth) uniform sampler2D depthTexture;
 layout(binding = kCloudBindingBaseNoise) uniform sampler3D baseNoise;
 layout(binding = kCloudBindingDetailNoise) uniform sampler3D detailNoise;
+layout(binding = kCloudBindingCoverageMap) uniform sampler2D coverageMap;
 #include "clouds/images.glsl"
 #if defined(SCATTER) && defined(TEMPORAL)
 layout(binding = kCloudBindingDistance, r32ui) uniform restrict writeonly uimage2D distanceOut;

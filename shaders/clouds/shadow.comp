@@ -15,6 +15,7 @@ layout(binding = kCloudBindingUniforms, std140) uniform Uniforms {
 };
 layout(binding = kCloudBindingBaseNoise) uniform sampler3D baseNoise;
 layout(binding = kCloudBindingDetailNoise) uniform sampler3D detailNoise;
+layout(binding = kCloudBindingCoverageMap) uniform sampler2D coverageMap;
 layout(binding = kCloudBindingShadowOut, r32f) uniform restrict writeonly image2D shadowOut;
 
 #include "clouds/density.glsl"

@@ -67,6 +67,23 @@ TEST(CloudsSettings, BadValuesNameTheirKey) {
         {"clouds.noise.detail_size", [](CloudSettings& s) { s.noise.detailSize = 4; }},
         {"clouds.noise.tiling", [](CloudSettings& s) { s.noise.tiling = 0.5f; }},
         {"clouds.noise.detail_strength", [](CloudSettings& s) { s.noise.detailStrength = 1.5f; }},
+        {"clouds.noise.host_texture_layout",
+         [](CloudSettings& s) {
+             s.noise.hostBaseTexture = reinterpret_cast<VkImageView>(uintptr_t(8));
+             s.noise.hostTextureLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+         }},
+        {"clouds.coverage_map.size", [](CloudSettings& s) { s.coverageMap.size = 0.5f; }},
+        {"clouds.coverage_map.origin_x", [&](CloudSettings& s) { s.coverageMap.originX = nan; }},
+        {"clouds.coverage_map.origin_z", [](CloudSettings& s) { s.coverageMap.originZ = -2e9; }},
+        {"clouds.coverage_map.layout",
+         [](CloudSettings& s) {
+             s.coverageMap.texture = reinterpret_cast<VkImageView>(uintptr_t(8));
+             s.coverageMap.layout = VK_IMAGE_LAYOUT_UNDEFINED;
+         }},
+        {"clouds.shadow_map.size", [](CloudSettings& s) { s.shadowMap.size = 8; }},
+        {"clouds.shadow_map.extent", [](CloudSettings& s) { s.shadowMap.extent = 50.0f; }},
+        {"clouds.resolution_scale", [](CloudSettings& s) { s.resolutionScale = 0.2f; }},
+        {"clouds.temporal.blend_weight", [](CloudSettings& s) { s.temporal.blendWeight = 0.0f; }},
     };
     for (const BadCase& c : cases) {
         CloudSettings s;

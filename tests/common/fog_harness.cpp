@@ -56,6 +56,40 @@ ImageTransition to(VkImage image, VkImageAspectFlags aspect, VkImageLayout from,
 
 }  // namespace
 
+GpuImage uploadSampledImage(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
+                            postfx::core::ImageDesc desc, const void* bytes, size_t size) {
+    desc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    GpuImage image;
+    postfx::core::GpuBuffer upload;
+    EXPECT_TRUE(image.create(gpu, desc, "test host texture").ok());
+    EXPECT_TRUE(upload.create(gpu, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true, "test upload").ok());
+    if (!image.handle() || !upload.mapped()) return image;
+    std::memcpy(upload.mapped(), bytes, size);
+    constexpr VkImageAspectFlags kColor = VK_IMAGE_ASPECT_COLOR_BIT;
+    std::string error;
+    EXPECT_TRUE(host.submitAndWait(
+        [&](VkCommandBuffer cmd) {
+            postfx::core::transition(
+                gpu, cmd,
+                to(image.handle(), kColor, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_ACCESS_TRANSFER_WRITE_BIT));
+            VkBufferImageCopy region{};
+            region.imageSubresource = {kColor, 0, 0, 1};
+            region.imageExtent = desc.extent;
+            vkCmdCopyBufferToImage(cmd, upload.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                   1, &region);
+            postfx::core::transition(gpu, cmd,
+                                     to(image.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                                        VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_READ_BIT));
+        },
+        error))
+        << error;
+    return image;
+}
+
 postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages& images,
                                postfx::FrameInfo frame, std::vector<float>& color,
                                std::vector<float>* output) {

@@ -79,6 +79,12 @@ postfx::FramePlan planAndRecord(demo::VulkanHost& host, const postfx::core::Gpu&
 std::vector<uint8_t> readHeldImage(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
                                    const postfx::Context& context, const char* name, VkExtent3D& extent);
 
+// A host texture for postfx to sample (a coverage map, noise): `desc` (usage SAMPLED | TRANSFER_DST
+// added) filled with `bytes` (tightly packed texels, x fastest) and left in SHADER_READ_ONLY_OPTIMAL.
+// Expects the upload to succeed.
+postfx::core::GpuImage uploadSampledImage(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
+                                          postfx::core::ImageDesc desc, const void* bytes, size_t size);
+
 // The plan's passes' names, in recording order.
 std::vector<std::string> passNames(const postfx::FramePlan& plan);
 

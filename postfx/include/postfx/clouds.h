@@ -60,6 +60,30 @@ struct CloudNoiseSettings {
     float tiling = 12000.0f;
     // How much the detail noise erodes the base shape's edges [1]; in [0, 1]. 0: none.
     float detailStrength = 0.35f;
+    // Optional host textures instead of the generated ones (each on its own): 3D views whose first
+    // channel holds values in [0, 1], repeat-tileable, sampled with trilinear filtering and repeat
+    // addressing over the same periods (tiling, tiling / 8), in `hostTextureLayout`. base_size,
+    // detail_size and seed then do not apply to that texture.
+    VkImageView hostBaseTexture = VK_NULL_HANDLE;
+    VkImageView hostDetailTexture = VK_NULL_HANDLE;
+    // With a host texture: SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL.
+    VkImageLayout hostTextureLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+};
+
+// A host's 2D coverage map (a weather map, docs/effects/clouds.md, "Density"): where its value m is
+// given, the local coverage is coverage × m (m = 0: no cloud there, and no noise is read), and with the
+// noise off the field is m. It lies on the world's x–z plane, u along +x and v along +z, its texel (0, 0)
+// corner at (origin_x, origin_z), repeating every `size` metres, and moves with the wind like the rest
+// of the field. A curved layer reads it at each point's world (x, z).
+struct CloudCoverageMap {
+    // 2D view whose first channel holds values in [0, 1], sampled with bilinear filtering and repeat
+    // addressing, in `layout`. VK_NULL_HANDLE: no map (the coverage is the same everywhere).
+    VkImageView texture = VK_NULL_HANDLE;
+    // SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL.
+    VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    float size = 50000.0f;  // edge of the area the map covers [m]; in [1, 1e7]
+    double originX = 0.0;   // world x of the map's u = 0 edge [m]; in [-1e9, 1e9]
+    double originZ = 0.0;   // world z of the map's v = 0 edge [m]; in [-1e9, 1e9]
 };
 
 // Wrenninge's multiple-scattering approximation (2015, "Art-directable multiple volumetric scattering"):
@@ -89,7 +113,9 @@ struct CloudSettings {
     float topHeight = 4000.0f;
     CloudBox box;  // CloudShape::Box only
     // Fraction of the sky the clouds cover [1]; in [0, 1]. 0: no clouds (the effect records nothing).
+    // With a coverage map, the map's value multiplies it.
     float coverage = 0.5f;
+    CloudCoverageMap coverageMap;
     // Cloud type: the height profile of the density in the layer [1]; in [0, 1]. 0: stratus (dense near
     // the bottom, thinning upward), 1: cumulus (full height, rounded top).
     float cloudType = 0.5f;

@@ -143,6 +143,13 @@ struct CloudInputs {
     // as the GPU generated them (read back) or as the CPU port generates them (empty: generated here from
     // the settings' sizes and seed, quantized to 8 bits as the GPU stores them).
     std::span<const float> baseNoise, detailNoise;
+    // Their edges when given and not the settings' base_size / detail_size (a host's own textures): 0 is
+    // the settings' size.
+    uint32_t baseNoiseSize = 0, detailNoiseSize = 0;
+    // The host's coverage map (settings.coverage_map's size and origin place it): width·height values in
+    // [0, 1], row-major, v = 0 row first, as the GPU samples its first channel; empty: no map.
+    std::span<const float> coverageMap;
+    uint32_t coverageMapWidth = 0, coverageMapHeight = 0;
 
     uint32_t stepsPerPixel = 1024;  // midpoint samples along each view ray's part inside the clouds; >= 1
     uint32_t lightSteps = 256;      // midpoint samples of each sample's march toward the sun; >= 1

@@ -25,44 +25,39 @@ constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
 
 constexpr core::Binding kMarchBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},  {gpu::kCloudBindingColorIn, kStorage},
-    {gpu::kCloudBindingColorOut, kStorage},  {gpu::kCloudBindingDepth, kSampled},
-    {gpu::kCloudBindingBaseNoise, kSampled}, {gpu::kCloudBindingDetailNoise, kSampled}};
+    {gpu::kCloudBindingUniforms, kUniform},   {gpu::kCloudBindingColorIn, kStorage},
+    {gpu::kCloudBindingColorOut, kStorage},   {gpu::kCloudBindingDepth, kSampled},
+    {gpu::kCloudBindingBaseNoise, kSampled},  {gpu::kCloudBindingDetailNoise, kSampled},
+    {gpu::kCloudBindingCoverageMap, kSampled}};
 constexpr core::Binding kMarchAtmosphereBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},     {gpu::kCloudBindingColorIn, kStorage},
-    {gpu::kCloudBindingColorOut, kStorage},     {gpu::kCloudBindingDepth, kSampled},
-    {gpu::kCloudBindingBaseNoise, kSampled},    {gpu::kCloudBindingDetailNoise, kSampled},
+    {gpu::kCloudBindingUniforms, kUniform},         {gpu::kCloudBindingColorIn, kStorage},
+    {gpu::kCloudBindingColorOut, kStorage},         {gpu::kCloudBindingDepth, kSampled},
+    {gpu::kCloudBindingBaseNoise, kSampled},        {gpu::kCloudBindingDetailNoise, kSampled},
+    {gpu::kCloudBindingCoverageMap, kSampled},      {gpu::kCloudBindingAtmosphere, kUniform},
+    {gpu::kCloudBindingTransmittanceLut, kSampled}, {gpu::kCloudBindingApScattering, kSampled},
+    {gpu::kCloudBindingApTransmittance, kSampled}};
+// The march into its own image (SCATTER): no color images; with TEMPORAL the distance image too.
+constexpr core::Binding kScatterBindings[] = {
+    {gpu::kCloudBindingUniforms, kUniform},    {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDepth, kSampled},       {gpu::kCloudBindingBaseNoise, kSampled},
+    {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingCoverageMap, kSampled}};
+constexpr core::Binding kScatterAtmosphereBindings[] = {
+    {gpu::kCloudBindingUniforms, kUniform},     {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDepth, kSampled},        {gpu::kCloudBindingBaseNoise, kSampled},
+    {gpu::kCloudBindingDetailNoise, kSampled},  {gpu::kCloudBindingCoverageMap, kSampled},
     {gpu::kCloudBindingAtmosphere, kUniform},   {gpu::kCloudBindingTransmittanceLut, kSampled},
     {gpu::kCloudBindingApScattering, kSampled}, {gpu::kCloudBindingApTransmittance, kSampled}};
-// The march into its own image (SCATTER): no color images; with TEMPORAL the distance image too.
-constexpr core::Binding kScatterBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
-                                              {gpu::kCloudBindingScatter, kStorage},
-                                              {gpu::kCloudBindingDepth, kSampled},
-                                              {gpu::kCloudBindingBaseNoise, kSampled},
-                                              {gpu::kCloudBindingDetailNoise, kSampled}};
-constexpr core::Binding kScatterAtmosphereBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
-                                                        {gpu::kCloudBindingScatter, kStorage},
-                                                        {gpu::kCloudBindingDepth, kSampled},
-                                                        {gpu::kCloudBindingBaseNoise, kSampled},
-                                                        {gpu::kCloudBindingDetailNoise, kSampled},
-                                                        {gpu::kCloudBindingAtmosphere, kUniform},
-                                                        {gpu::kCloudBindingTransmittanceLut, kSampled},
-                                                        {gpu::kCloudBindingApScattering, kSampled},
-                                                        {gpu::kCloudBindingApTransmittance, kSampled}};
 constexpr core::Binding kScatterTemporalBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},    {gpu::kCloudBindingScatter, kStorage},
     {gpu::kCloudBindingDepth, kSampled},       {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingDistance, kStorage}};
+    {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingCoverageMap, kSampled},
+    {gpu::kCloudBindingDistance, kStorage}};
 constexpr core::Binding kScatterTemporalAtmosphereBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},
-    {gpu::kCloudBindingScatter, kStorage},
-    {gpu::kCloudBindingDepth, kSampled},
-    {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled},
-    {gpu::kCloudBindingAtmosphere, kUniform},
-    {gpu::kCloudBindingTransmittanceLut, kSampled},
-    {gpu::kCloudBindingApScattering, kSampled},
-    {gpu::kCloudBindingApTransmittance, kSampled},
+    {gpu::kCloudBindingUniforms, kUniform},     {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDepth, kSampled},        {gpu::kCloudBindingBaseNoise, kSampled},
+    {gpu::kCloudBindingDetailNoise, kSampled},  {gpu::kCloudBindingCoverageMap, kSampled},
+    {gpu::kCloudBindingAtmosphere, kUniform},   {gpu::kCloudBindingTransmittanceLut, kSampled},
+    {gpu::kCloudBindingApScattering, kSampled}, {gpu::kCloudBindingApTransmittance, kSampled},
     {gpu::kCloudBindingDistance, kStorage}};
 constexpr core::Binding kTemporalBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},   {gpu::kCloudBindingScatter, kStorage},
@@ -77,6 +72,7 @@ constexpr core::Binding kUpsampleBindings[] = {{gpu::kCloudBindingUniforms, kUni
 constexpr core::Binding kShadowBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
                                              {gpu::kCloudBindingBaseNoise, kSampled},
                                              {gpu::kCloudBindingDetailNoise, kSampled},
+                                             {gpu::kCloudBindingCoverageMap, kSampled},
                                              {gpu::kCloudBindingShadowOut, kStorage}};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
 
@@ -139,6 +135,12 @@ uint64_t temporalKey(const FrameInfo& frame) {
     for (uint32_t v : {s.multipleScattering.octaves, s.steps, s.lightSteps, s.noise.baseSize,
                        s.noise.detailSize, s.noise.seed, uint32_t(s.noise.enabled), uint32_t(s.jitter)})
         h = hashValue(h, v);
+    h = hashValue(h, s.noise.hostBaseTexture);
+    h = hashValue(h, s.noise.hostDetailTexture);
+    h = hashValue(h, s.coverageMap.texture);
+    h = hashValue(h, s.coverageMap.size);
+    h = hashValue(h, s.coverageMap.originX);
+    h = hashValue(h, s.coverageMap.originZ);
     h = hashValue(h, frame.atmosphere.enabled);
     if (frame.atmosphere.enabled) h = hashValue(h, atmosphere::viewLutSettingsKey(frame.atmosphere));
     return h;
@@ -189,6 +191,9 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     };
     u.noiseBase = glm::vec4(offset(basePeriod), float(1.0 / basePeriod));
     u.noiseDetail = glm::vec4(offset(detailPeriod), float(1.0 / detailPeriod));
+    const CloudCoverageMap& map = s.coverageMap;
+    u.coverageMap = glm::vec4(float(wrap(moved.x - map.originX, map.size)),
+                              float(wrap(moved.z - map.originZ, map.size)), float(1.0 / map.size), 0.0f);
     u.shape = glm::vec4(s.coverage, float(1.0 / topFalloff(s.cloudType)), s.noise.detailStrength, s.density);
     u.phase = glm::vec4(s.anisotropyForward, s.anisotropyBack, s.lobeMix, s.albedo);
     const CloudMultipleScattering& ms = s.multipleScattering;
@@ -208,7 +213,8 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     u.flags.x = (s.noise.enabled ? gpu::kCloudFlagNoise : 0u) | (curved ? gpu::kCloudFlagCurved : 0u) |
                 (s.shape == CloudShape::Box ? gpu::kCloudFlagBox : 0u) |
                 (depth.reversedZ ? gpu::kCloudFlagDepthReversedZ : 0u) |
-                (s.jitter ? gpu::kCloudFlagJitter : 0u);
+                (s.jitter ? gpu::kCloudFlagJitter : 0u) |
+                (map.texture != VK_NULL_HANDLE ? gpu::kCloudFlagCoverageMap : 0u);
     return u;
 }
 
@@ -217,11 +223,14 @@ CloudsEffect::CloudsEffect(const core::Gpu& gpu) : noiseFormatSupported_(fog::no
 Status CloudsEffect::validate(const FrameInfo& frame) const {
     if (!frame.clouds.enabled) return Status::success();
     if (Status s = validateSettings(frame.clouds); !s) return s;
-    if (frame.clouds.noise.enabled && !noiseFormatSupported_)
+    const CloudNoiseSettings& n = frame.clouds.noise;
+    if (n.enabled && (!n.hostBaseTexture || !n.hostDetailTexture) && !noiseFormatSupported_)
         return {
             Result::Unsupported,
             "clouds.noise: the device cannot use VK_FORMAT_R8_UNORM as a storage image, linearly filtered "
-            "sampled image and transfer source (turn clouds.noise off)"};
+            "sampled image and transfer source (give clouds.noise.hostBaseTexture and hostDetailTexture, or "
+            "turn "
+            "clouds.noise off)"};
     return Status::success();
 }
 
@@ -257,19 +266,36 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     const CloudSettings& s = frame.clouds;
     const bool rgba32 = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT;
 
+    // The noise textures: the host's, or generated once per size and seed; a stand-in without noise.
+    core::ImageDesc one;
+    one.type = VK_IMAGE_TYPE_3D;
+    one.format = fog::kNoiseFormat;
+    one.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
     core::ImageRef base, detail;
-    if (s.noise.enabled) {
-        base = fog::declareGeneratedNoise(b, kBaseNoise, kBaseNoisePass, s.noise.baseSize, s.noise.seed,
-                                          gpu::kNoisePerlinWorley);
-        detail = fog::declareGeneratedNoise(b, kDetailNoise, kDetailNoisePass, s.noise.detailSize,
-                                            detailSeed(s.noise.seed), gpu::kNoiseWorley);
-    } else {
-        core::ImageDesc one;
-        one.type = VK_IMAGE_TYPE_3D;
-        one.format = fog::kNoiseFormat;
-        one.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
+    if (!s.noise.enabled) {
         base = detail = b.transientImage(kNoNoise, one);
+    } else {
+        const VkImageLayout layout = s.noise.hostTextureLayout;
+        base = s.noise.hostBaseTexture
+                   ? b.external("host.clouds_base_noise", s.noise.hostBaseTexture, layout)
+                   : fog::declareGeneratedNoise(b, kBaseNoise, kBaseNoisePass, s.noise.baseSize, s.noise.seed,
+                                                gpu::kNoisePerlinWorley);
+        detail = s.noise.hostDetailTexture
+                     ? b.external("host.clouds_detail_noise", s.noise.hostDetailTexture, layout)
+                     : fog::declareGeneratedNoise(b, kDetailNoise, kDetailNoisePass, s.noise.detailSize,
+                                                  detailSeed(s.noise.seed), gpu::kNoiseWorley);
     }
+    // The host's coverage map, or a stand-in.
+    const bool withMap = s.coverageMap.texture != VK_NULL_HANDLE;
+    core::ImageRef coverageMap;
+    if (withMap) {
+        coverageMap = b.external("host.clouds_coverage_map", s.coverageMap.texture, s.coverageMap.layout);
+    } else {
+        core::ImageDesc flat = one;
+        flat.type = VK_IMAGE_TYPE_2D;
+        coverageMap = b.transientImage(kNoCoverageMap, flat);
+    }
+    const Use mapUse = withMap ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = s.noise.enabled ? Use::Sampled : Use::BoundOnly;
     const uint32_t width = frame.color.extent.width, height = frame.color.extent.height;
     const glm::uvec2 march = marchExtent(width, height, s.resolutionScale);
@@ -302,6 +328,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kCloudBindingUniforms, uniforms)
             .bind(gpu::kCloudBindingBaseNoise, base, noiseUse, SamplerKind::LinearRepeat)
             .bind(gpu::kCloudBindingDetailNoise, detail, noiseUse, SamplerKind::LinearRepeat)
+            .bind(gpu::kCloudBindingCoverageMap, coverageMap, mapUse, SamplerKind::LinearRepeat)
             .bind(gpu::kCloudBindingShadowOut, shadowMap, Use::StorageWrite);
     }
 
@@ -310,7 +337,8 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kCloudBindingUniforms, uniforms)
         .bind(gpu::kCloudBindingDepth, depth, Use::Sampled)
         .bind(gpu::kCloudBindingBaseNoise, base, noiseUse, SamplerKind::LinearRepeat)
-        .bind(gpu::kCloudBindingDetailNoise, detail, noiseUse, SamplerKind::LinearRepeat);
+        .bind(gpu::kCloudBindingDetailNoise, detail, noiseUse, SamplerKind::LinearRepeat)
+        .bind(gpu::kCloudBindingCoverageMap, coverageMap, mapUse, SamplerKind::LinearRepeat);
     if (withAtmosphere) {
         b.bind(gpu::kCloudBindingAtmosphere, atmosphereUniforms)
             .bind(gpu::kCloudBindingTransmittanceLut, b.find(atmosphere::kTransmittanceLut), Use::Sampled,

@@ -50,6 +50,23 @@ double NoiseVolume::sample(const dvec3& uvw) const {
     return result;
 }
 
+double CoverageMapTexels::sample(const dvec2& uv) const {
+    const dvec2 p = uv * dvec2(width, height) - 0.5;
+    const dvec2 f0 = glm::floor(p);
+    const dvec2 f = p - f0;
+    const auto wrap = [](double v, uint32_t n) {
+        const auto i = int64_t(v) % int64_t(n);
+        return uint32_t(i < 0 ? i + int64_t(n) : i);
+    };
+    double result = 0.0;
+    for (int k = 0; k < 4; ++k) {
+        const int dx = k & 1, dy = k >> 1;
+        const uint32_t x = wrap(f0.x + dx, width), y = wrap(f0.y + dy, height);
+        result += (dx ? f.x : 1.0 - f.x) * (dy ? f.y : 1.0 - f.y) * texels[size_t(y) * width + x];
+    }
+    return result;
+}
+
 bool followsPlanet(const FrameInfo& frame) {
     return frame.atmosphere.enabled && frame.clouds.shape == CloudShape::Layer;
 }
@@ -70,7 +87,7 @@ double topFalloff(double cloudType) {
            (gpu::kCloudTopFalloffCumulus - gpu::kCloudTopFalloffStratus) * cloudType;
 }
 
-Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail) {
+Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail, CoverageMapTexels coverageMap) {
     Model m;
     m.s = frame.clouds;
     const CloudSettings& s = m.s;
@@ -86,6 +103,7 @@ Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail) {
     m.noiseOrigin = m.camera - dvec3(s.wind) * frame.timeSeconds;
     m.base = base;
     m.detail = detail;
+    m.coverageMap = coverageMap;
     m.toSun = glm::normalize(dvec3(frame.sun.toSun));
     m.sunIlluminance = dvec3(frame.sun.illuminance);
     m.ambient = dvec3(frame.ambient);
@@ -147,9 +165,15 @@ double heightProfile(const Model& m, double h) {
 double field(const Model& m, const dvec3& x, double h) {
     if (h < -gpu::kCloudHeightSlack || h > 1.0 + gpu::kCloudHeightSlack) return 0.0;
     h = clamp01(h);
-    if (!m.s.noise.enabled) return 1.0;
-    const double coverage = m.s.coverage;
     const dvec3 world = m.noiseOrigin + x;
+    double map = 1.0;  // the host's coverage map at the point's world (x, z)
+    if (m.coverageMap.present()) {
+        const CloudCoverageMap& c = m.s.coverageMap;
+        map = m.coverageMap.sample(dvec2(world.x - c.originX, world.z - c.originZ) / double(c.size));
+        if (!(map > 0.0)) return 0.0;
+    }
+    if (!m.s.noise.enabled) return map;
+    const double coverage = m.s.coverage * map;
     const double basePeriod = m.s.noise.tiling;
     const double detailPeriod = basePeriod / gpu::kCloudDetailTilingRatio;
     const double shape = m.base.sample(world / basePeriod) * heightProfile(m, h);

@@ -23,6 +23,14 @@ struct NoiseVolume {
     double sample(const glm::dvec3& uvw) const;
 };
 
+// A repeat-tileable width×height map of values in [0, 1], sampled as the GPU's bilinear REPEAT sampler.
+struct CoverageMapTexels {
+    std::span<const float> texels;  // row-major, v = 0 row first
+    uint32_t width = 0, height = 0;
+    bool present() const { return !texels.empty(); }
+    double sample(const glm::dvec2& uv) const;
+};
+
 struct Model {
     CloudSettings s;
     glm::dvec3 camera{0.0};  // world [m]
@@ -34,6 +42,7 @@ struct Model {
     double topFalloff = 1.0;      // fraction of the layer the profile falls to 0 over at its top
     glm::dvec3 noiseOrigin{0.0};  // world position - wind·t of the camera [m]
     NoiseVolume base, detail;
+    CoverageMapTexels coverageMap;  // the host's coverage map; empty: none
     glm::dvec3 toSun{0.0, 1.0, 0.0}, sunIlluminance{0.0}, ambient{0.0};
     // The atmosphere's transmittance toward the sun, null with the atmosphere off.
     std::shared_ptr<const atmosphere::TransmittanceTable> atmosphere;
@@ -50,8 +59,10 @@ glm::dmat3 worldToBox(const CloudBox& box);
 // [0, 1]: from kCloudTopFalloffStratus (0) to kCloudTopFalloffCumulus (1), linearly.
 double topFalloff(double cloudType);
 
-// The model of `frame`'s clouds (settings validated), reading the noise from `base` and `detail`.
-Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail);
+// The model of `frame`'s clouds (settings validated), reading the noise from `base` and `detail` and the
+// coverage map from `coverageMap` (empty: none).
+Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail,
+                CoverageMapTexels coverageMap = {});
 
 // The part of ray x0 + t·d inside the shape, t in [0, far]: (begin, end), end <= begin when none.
 glm::dvec2 segment(const Model& m, const glm::dvec3& x0, const glm::dvec3& d, double far);

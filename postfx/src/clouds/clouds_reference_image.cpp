@@ -49,14 +49,23 @@ Status validate(const CloudInputs& in) {
         return invalid("CloudInputs.lightSteps: " + std::to_string(in.lightSteps) + " is outside [1, " +
                        std::to_string(kMaxSteps) + "]");
     const CloudNoiseSettings& n = in.settings.noise;
+    const uint64_t base = in.baseNoiseSize ? in.baseNoiseSize : n.baseSize;
+    const uint64_t detailSize = in.detailNoiseSize ? in.detailNoiseSize : n.detailSize;
     if (n.enabled && !in.baseNoise.empty())
-        if (Status s = checkCount("CloudInputs.baseNoise", in.baseNoise.size(),
-                                  uint64_t(n.baseSize) * n.baseSize * n.baseSize, "noise.base_size³");
+        if (Status s = checkCount("CloudInputs.baseNoise", in.baseNoise.size(), base * base * base,
+                                  "baseNoiseSize³ (or noise.base_size³)");
             !s)
             return s;
     if (n.enabled && !in.detailNoise.empty())
-        if (Status s = checkCount("CloudInputs.detailNoise", in.detailNoise.size(),
-                                  uint64_t(n.detailSize) * n.detailSize * n.detailSize, "noise.detail_size³");
+        if (Status s =
+                checkCount("CloudInputs.detailNoise", in.detailNoise.size(),
+                           detailSize * detailSize * detailSize, "detailNoiseSize³ (or noise.detail_size³)");
+            !s)
+            return s;
+    if (!in.coverageMap.empty())
+        if (Status s = checkCount("CloudInputs.coverageMap", in.coverageMap.size(),
+                                  uint64_t(in.coverageMapWidth) * in.coverageMapHeight,
+                                  "coverageMapWidth · coverageMapHeight");
             !s)
             return s;
     return Status::success();
@@ -97,10 +106,12 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out) {
     frame.clouds = in.settings;
     frame.atmosphere = in.atmosphere;
     clouds::NoiseVolume base{baseTexels.empty() ? in.baseNoise : std::span<const float>(baseTexels),
-                             n.baseSize};
-    clouds::NoiseVolume detail{detailTexels.empty() ? in.detailNoise : std::span<const float>(detailTexels),
-                               n.detailSize};
-    const clouds::Model model = clouds::modelFrom(frame, base, detail);
+                             baseTexels.empty() && in.baseNoiseSize ? in.baseNoiseSize : n.baseSize};
+    clouds::NoiseVolume detail{
+        detailTexels.empty() ? in.detailNoise : std::span<const float>(detailTexels),
+        detailTexels.empty() && in.detailNoiseSize ? in.detailNoiseSize : n.detailSize};
+    const clouds::CoverageMapTexels coverageMap{in.coverageMap, in.coverageMapWidth, in.coverageMapHeight};
+    const clouds::Model model = clouds::modelFrom(frame, base, detail, coverageMap);
 
     // The air in front of the clouds (atmosphere on): reference (a)'s integration to their mean distance.
     std::shared_ptr<const atmosphere::PsiTable> psi;

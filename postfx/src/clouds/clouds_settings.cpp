@@ -63,7 +63,32 @@ Status validateBox(const CloudBox& b) {
     return range("box.pitch_deg", b.pitchDeg, -360.0, 360.0);
 }
 
+// A layout a host texture can be sampled in.
+Status sampledLayout(const std::string& name, VkImageLayout layout) {
+    if (layout == VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL || layout == VK_IMAGE_LAYOUT_GENERAL ||
+        layout == VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL)
+        return Status::success();
+    return bad(name, std::to_string(int64_t(layout)) +
+                         " is not SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL (a layout it can be "
+                         "sampled in)");
+}
+
+Status validateCoverageMap(const CloudCoverageMap& m) {
+    if (Status r = range("coverage_map.size", m.size, 1.0, kMaxTiling); !r) return r;
+    if (Status r =
+            range("coverage_map.origin_x", m.originX, -core::kMaxWorldCoordinate, core::kMaxWorldCoordinate);
+        !r)
+        return r;
+    if (Status r =
+            range("coverage_map.origin_z", m.originZ, -core::kMaxWorldCoordinate, core::kMaxWorldCoordinate);
+        !r)
+        return r;
+    return m.texture ? sampledLayout("coverage_map.layout", m.layout) : Status::success();
+}
+
 Status validateNoise(const CloudNoiseSettings& n) {
+    if ((n.hostBaseTexture || n.hostDetailTexture) && n.enabled)
+        if (Status r = sampledLayout("noise.host_texture_layout", n.hostTextureLayout); !r) return r;
     if (Status r = powerOfTwo("noise.base_size", n.baseSize, kMinBaseSize, kMaxBaseSize); !r) return r;
     if (Status r = powerOfTwo("noise.detail_size", n.detailSize, kMinDetailSize, kMaxDetailSize); !r)
         return r;
@@ -96,6 +121,7 @@ Status validateSettings(const CloudSettings& s) {
                                      numberText(s.bottomHeight) + ")");
     if (Status r = validateBox(s.box); !r) return r;
     if (Status r = range("coverage", s.coverage, 0.0, 1.0); !r) return r;
+    if (Status r = validateCoverageMap(s.coverageMap); !r) return r;
     if (Status r = range("cloud_type", s.cloudType, 0.0, 1.0); !r) return r;
     if (Status r = range("density", s.density, 0.0, kMaxDensity); !r) return r;
     if (Status r = range("albedo", s.albedo, 0.0, 1.0); !r) return r;
