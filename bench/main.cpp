@@ -6,6 +6,7 @@
 // results.md and plot.svg. With --froxel: the froxel fog's sweep beside the ray-marched fog instead
 // (bench/froxel_run.h).
 #include "atmosphere_run.h"
+#include "clouds_run.h"
 #include "conclusions.h"
 #include "froxel_run.h"
 #include "motion.h"
@@ -140,6 +141,24 @@ const char* kUsage =
     "                         [16,32,64], ms_directions [16,64,256], ms_steps [10,20,40], sky_view_size\n"
     "                         [96x54,192x108,384x216], sky_view_steps [10,30,60], ap_size [16,32,64] (N^3),\n"
     "                         ap_steps_per_slice [1,2,4]; quick: one value of five knobs\n"
+    "clouds (--clouds; docs/accuracy-cost/README.md, \"Clouds (--clouds)\"): views of the cloud layer with "
+    "the\n"
+    "atmosphere on (from the ground at noon and at sunset, from above), the clouds.* passes' GPU time with\n"
+    "camera and sun still, and the error against postfx::reference::renderClouds after convergence (still)\n"
+    "and with the camera panning (motion), for the Medium preset's settings with one knob changed and each\n"
+    "preset. --size, --warmup*, --frames, --reference-steps [512; quick: 64], --error-stride, --out\n"
+    "[docs/accuracy-cost/clouds], --quick and --validation apply.\n"
+    "  --clouds               this mode\n"
+    "  --clouds-views LIST    ground_noon, ground_sunset, above [all]\n"
+    "  --clouds-sweep-views LIST  the views the sweep runs on [all measured; quick: ground_noon]\n"
+    "  --clouds-sweep KNOB=a,b,...  a knob's values (repeatable; 'none' sweeps nothing): steps\n"
+    "                         [16,32,64,96,128], light_steps [2,4,6,8,16], resolution_scale [1,0.5,0.25],\n"
+    "                         base_size [32,64,128,256], detail_size [16,32,64], temporal [off], preset\n"
+    "                         [low,medium,high,ultra]; quick: steps 16, scale 1, base_size 32, preset low\n"
+    "  --clouds-reference-light-steps N  the reference's light steps [128; quick: 16]\n"
+    "  --clouds-converged-frames N  still frames before the still error of a temporal row [32; quick: 4]\n"
+    "  --clouds-motion-frames N  panning frames before the motion error [32; quick: 4]\n"
+    "                         quick also shrinks the shadow map to 64x64\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
 
 struct Args {
@@ -172,6 +191,12 @@ struct Args {
     std::vector<std::string> atmosphereViews, atmosphereSweepViews;
     std::vector<std::pair<std::string, std::vector<std::string>>> atmosphereSweep;  // --atmosphere-sweep
     bool atmosphereSweepNone = false;
+    // --clouds
+    bool clouds = false;
+    std::vector<std::string> cloudsViews, cloudsSweepViews;
+    std::vector<std::pair<std::string, std::vector<std::string>>> cloudsSweep;  // --clouds-sweep
+    bool cloudsSweepNone = false;
+    uint32_t cloudsLightSteps = 0, cloudsConvergedFrames = 0, cloudsMotionFrames = 0;  // 0: the default
     bool quick = false;
     // In motion
     bool motion = true;
@@ -314,6 +339,33 @@ Args parseArgs(int argc, char** argv) {
             } else {
                 args.atmosphereSweep.emplace_back(text.substr(0, eq), cli::splitList(text.substr(eq + 1)));
             }
+        } else if (a == "--clouds") {
+            args.clouds = true;
+        } else if (a == "--clouds-views") {
+            args.cloudsViews = cli::splitList(value());
+            if (args.cloudsViews.empty()) throw cli::UsageError{"--clouds-views is empty"};
+        } else if (a == "--clouds-sweep-views") {
+            args.cloudsSweepViews = cli::splitList(value());
+            if (args.cloudsSweepViews.empty()) throw cli::UsageError{"--clouds-sweep-views is empty"};
+        } else if (a == "--clouds-sweep") {
+            const std::string text = value();
+            const size_t eq = text.find('=');
+            if (text == "none") {
+                args.cloudsSweepNone = true;
+            } else if (eq == std::string::npos || cli::splitList(text.substr(eq + 1)).empty() ||
+                       !std::count(bench::cloudsKnobs().begin(), bench::cloudsKnobs().end(),
+                                   text.substr(0, eq))) {
+                throw cli::UsageError{"--clouds-sweep '" + text +
+                                      "': expected KNOB=a,b,... or none (see --help)"};
+            } else {
+                args.cloudsSweep.emplace_back(text.substr(0, eq), cli::splitList(text.substr(eq + 1)));
+            }
+        } else if (a == "--clouds-reference-light-steps") {
+            cli::uintOption(a, value(), 1, 4096, args.cloudsLightSteps);
+        } else if (a == "--clouds-converged-frames") {
+            cli::uintOption(a, value(), 1, 100000, args.cloudsConvergedFrames);
+        } else if (a == "--clouds-motion-frames") {
+            cli::uintOption(a, value(), 1, 100000, args.cloudsMotionFrames);
         } else if (a == "--froxel-grids") {
             const std::string text = value();
             args.froxelSweep.grids.clear();
@@ -401,8 +453,17 @@ Args parseArgs(int argc, char** argv) {
             throw cli::UsageError{"--froxel-target-scene '" + args.froxelTargetScene +
                                   "' is not in --scenes"};
     }
-    if (args.froxel && args.atmosphere)
-        throw cli::UsageError{"--froxel and --atmosphere: one mode at a time"};
+    if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) > 1)
+        throw cli::UsageError{"--froxel, --atmosphere and --clouds: one mode at a time"};
+    if (args.clouds) {
+        if (!outGiven) args.out = "docs/accuracy-cost/clouds";
+        if (!refGiven) args.referenceSteps = quick ? 64 : 512;
+        refGiven = true;
+        if (args.cloudsLightSteps == 0) args.cloudsLightSteps = quick ? 16 : 128;
+        if (args.cloudsConvergedFrames == 0) args.cloudsConvergedFrames = quick ? 4 : 32;
+        if (args.cloudsMotionFrames == 0) args.cloudsMotionFrames = quick ? 4 : 32;
+        if (quick && args.cloudsSweepViews.empty()) args.cloudsSweepViews = {"ground_noon"};
+    }
     if (args.atmosphere) {
         if (!outGiven) args.out = "docs/accuracy-cost/atmosphere";
         if (!refGiven) args.referenceSteps = quick ? 128 : 512;
@@ -550,8 +611,32 @@ int runAtmosphere(const Args& args, const std::string& command) {
     return bench::runAtmosphere(a, command, utcNow());
 }
 
+int runClouds(const Args& args, const std::string& command) {
+    bench::CloudsRunArgs a;
+    a.runner = args.runner;
+    a.referenceSteps = args.referenceSteps;
+    a.referenceLightSteps = args.cloudsLightSteps;
+    a.errorStride = args.errorStride;
+    a.convergedFrames = args.cloudsConvergedFrames;
+    a.motionFrames = args.cloudsMotionFrames;
+    if (args.quick) a.shadowMapSize = 64;  // lavapipe: the default 512² map would take most of the time
+    a.out = args.out;
+    a.views = args.cloudsViews;
+    a.sweepViews = args.cloudsSweepViews;
+    a.sweep = bench::defaultCloudsSweep(args.quick);
+    if (args.cloudsSweepNone) a.sweep.values.clear();
+    for (const auto& [knob, values] : args.cloudsSweep) {
+        auto it = std::find_if(a.sweep.values.begin(), a.sweep.values.end(),
+                               [&](const auto& kv) { return kv.first == knob; });
+        if (it == a.sweep.values.end()) it = a.sweep.values.insert(a.sweep.values.end(), {knob, {}});
+        it->second = values;
+    }
+    return bench::runClouds(a, command, utcNow());
+}
+
 int run(const Args& args, const std::string& command) {
     if (args.froxel) return runFroxel(args, command);
+    if (args.clouds) return runClouds(args, command);
     if (args.atmosphere) return runAtmosphere(args, command);
     std::string error;
     // Plan everything first: a bad scene name fails before the GPU work.

@@ -10,6 +10,8 @@
 // sequences' references following the camera, the switched-off light gone) and its report sections.
 // BenchAtmosphereSmoke: `postfx-bench --atmosphere --quick` (its CSV's rows, the frame plan each situation
 // records, finite errors against reference (a), the report's sections).
+// BenchCloudsSmoke: `postfx-bench --clouds --quick` (its CSV's rows, the passes a still frame records,
+// finite errors against the clouds' reference, the report's sections).
 // ctest runs the suites as separate tests.
 // usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
 #include <gtest/gtest.h>
@@ -721,6 +723,111 @@ TEST_F(BenchAtmosphereSmoke, MarkdownHasTheTargetsPlanAndSweep) {
         EXPECT_NE(md.find(section), std::string::npos) << section;
 }
 
+const std::vector<std::string> kCloudsColumns = {"view",
+                                                 "knob",
+                                                 "value",
+                                                 "steps",
+                                                 "light_steps",
+                                                 "resolution_scale",
+                                                 "base_size",
+                                                 "detail_size",
+                                                 "temporal",
+                                                 "width",
+                                                 "height",
+                                                 "warmup",
+                                                 "frames",
+                                                 "gpu_ms_median",
+                                                 "gpu_ms_p10",
+                                                 "gpu_ms_p90",
+                                                 "gpu_ms_min",
+                                                 "gpu_ms_max",
+                                                 "base_noise_ms",
+                                                 "detail_noise_ms",
+                                                 "shadow_ms",
+                                                 "march_ms",
+                                                 "temporal_ms",
+                                                 "upsample_ms",
+                                                 "pass_frames",
+                                                 "still_frames",
+                                                 "still_rel_rmse",
+                                                 "still_mean_rel_luminance",
+                                                 "still_max_abs",
+                                                 "motion_frames",
+                                                 "motion_rel_rmse",
+                                                 "motion_mean_rel_luminance",
+                                                 "motion_max_abs",
+                                                 "non_finite"};
+const std::vector<std::string> kCloudsViews = {"ground_noon", "ground_sunset", "above"};
+const size_t kCloudsSweepRows = 4;  // --quick: steps=16, resolution_scale=1, base_size=32, preset=low
+
+class BenchCloudsSmoke : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        out_ = gOut + "/clouds";
+        std::filesystem::remove_all(out_);
+        const std::string command = "'" + gBench + "' --clouds --quick --validation --out '" + out_ + "'";
+        std::printf("running: %s\n", command.c_str());
+        std::fflush(stdout);
+        status_ = std::system(command.c_str());
+    }
+    static int status_;
+    static std::string out_;
+};
+int BenchCloudsSmoke::status_ = -1;
+std::string BenchCloudsSmoke::out_;
+
+TEST_F(BenchCloudsSmoke, CsvHasEveryRowWithStillPassesAndFiniteErrors) {
+    ASSERT_EQ(status_, 0) << "postfx-bench --clouds failed (its output is above)";
+    std::vector<std::string> header;
+    std::vector<Row> rows;
+    bool sawDevice = false;
+    ASSERT_TRUE(readCsv(out_ + "/results.csv", header, rows, sawDevice)) << out_ << "/results.csv";
+    EXPECT_TRUE(sawDevice);
+    ASSERT_EQ(header, kCloudsColumns);
+    ASSERT_EQ(rows.size(), kCloudsViews.size() + kCloudsSweepRows);
+    std::map<std::string, double> still;  // ground_noon's still error by setting
+    for (const Row& row : rows) {
+        const std::string what = row.at("view") + " " + row.at("knob") + "=" + row.at("value");
+        EXPECT_EQ(row.at("width"), "64");
+        EXPECT_EQ(row.at("height"), "36");
+        EXPECT_EQ(row.at("non_finite"), "0") << what;
+        EXPECT_GT(number(row.at("gpu_ms_median")), 0.0) << what;  // lavapipe has timestamps
+        for (const char* column :
+             {"still_rel_rmse", "still_mean_rel_luminance", "motion_rel_rmse", "motion_mean_rel_luminance"})
+            EXPECT_TRUE(std::isfinite(number(row.at(column)))) << what << " " << column;
+        const bool temporal = row.at("temporal") == "on";
+        EXPECT_EQ(row.at("still_frames"), temporal ? "4" : "1") << what;
+        EXPECT_EQ(row.at("motion_frames"), "4") << what;
+        if (row.at("knob") != "default") {
+            EXPECT_EQ(row.at("view"), "ground_noon") << what;
+        }
+        if (row.at("view") == "ground_noon") still[row.at("knob")] = number(row.at("still_rel_rmse"));
+        // Still frames after the warm-up: the noise is not generated again; the march, the shadow map and
+        // (temporal) the accumulation run every frame; the upsample below full resolution.
+        const std::vector<std::string> passes = recordedPasses(row);
+        auto has = [&](const char* pass) {
+            return std::count(passes.begin(), passes.end(), std::string("clouds.") + pass) > 0;
+        };
+        EXPECT_FALSE(has("base_noise")) << what;
+        EXPECT_FALSE(has("detail_noise")) << what;
+        EXPECT_TRUE(has("march")) << what;
+        for (const std::string& pass : passes)
+            EXPECT_EQ(pass.rfind("clouds.", 0), 0u) << what << ": " << pass;  // only the clouds' passes
+    }
+    // Marching every pixel is closer to the full-resolution reference than the half-resolution default.
+    ASSERT_TRUE(still.count("default") && still.count("resolution_scale"));
+    EXPECT_LT(still["resolution_scale"], still["default"]);
+}
+
+TEST_F(BenchCloudsSmoke, MarkdownHasTheTargetsAndSweep) {
+    ASSERT_EQ(status_, 0);
+    const std::string md = readFile(out_ + "/results.md");
+    for (const char* section :
+         {"| device | ", "| command | ", "## Targets", "Not 1920×1080", "Medium, temporal on, still ≤ 0.5 ms",
+          "Medium, converged still error ≤ 1.5", "## Sweep", "### ground_noon", "### above", "| steps=16 |",
+          "| preset=low |", "RTX 4080"})
+        EXPECT_NE(md.find(section), std::string::npos) << section;
+}
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -1,0 +1,275 @@
+#include "clouds_run.h"
+
+#include "frame_gpu.h"
+#include "image_compare.h"
+#include "progress.h"
+#include "report.h"
+
+#include <postfx/reference.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
+
+namespace bench {
+namespace {
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "\npostfx-bench: %s\n", message.c_str());
+    return 1;
+}
+
+const postfx::Vec3 kAmbient(0.03f, 0.04f, 0.06f);
+
+// Frame of `view` with the camera turned by `yaw` [rad]; clouds off: the atmosphere alone.
+postfx::FrameInfo frameOf(const CloudsView& view, const postfx::CloudSettings* clouds, double yaw, bool cut,
+                          uint32_t width, uint32_t height) {
+    postfx::FrameInfo frame;
+    frame.atmosphere.enabled = true;
+    if (clouds) frame.clouds = *clouds;
+    frame.clouds.enabled = clouds != nullptr;
+    frame.camera = cloudsCamera(view, width, height, yaw);
+    frame.sun.toSun = cloudsToSun(view);
+    frame.sun.illuminance = postfx::Vec3(1.0f);
+    frame.ambient = kAmbient;
+    frame.cameraCut = cut;
+    frame.timeSeconds = 0.0;
+    return frame;
+}
+
+double panYaw(uint32_t frame) {
+    return glm::radians(kCloudsPanDegPerFrame * double(frame));
+}
+
+// The reference of the frame's view at every stride-th pixel in x and y, over the GPU's atmosphere-only
+// image `sky` (full size), with the noise texels `base` and `detail`.
+bool reference(const postfx::FrameInfo& frame, const CloudsRunArgs& args, const std::vector<float>& sky,
+               const std::vector<float>& base, const std::vector<float>& detail, std::vector<float>& out,
+               std::string& error) {
+    const uint32_t W = args.runner.width, H = args.runner.height, s = args.errorStride;
+    const uint32_t w = (W + s - 1) / s, h = (H + s - 1) / s;
+    std::vector<float> subColor(size_t(w) * h * 4), subDepth(size_t(w) * h, 0.0f);
+    for (uint32_t j = 0; j < h; ++j)
+        for (uint32_t i = 0; i < w; ++i) {
+            const size_t src = size_t(j) * s * W + size_t(i) * s, dst = size_t(j) * w + i;
+            std::memcpy(&subColor[dst * 4], &sky[src * 4], 4 * sizeof(float));
+        }
+    postfx::reference::CloudInputs in;
+    in.width = w;
+    in.height = h;
+    in.color = subColor;
+    in.depth = subDepth;
+    in.depthConvention.reversedZ = true;
+    in.camera = frame.camera;
+    if (s > 1) {
+        // As bench/atmosphere_run.cpp: pixel i of the w-wide image is the frame's pixel i·s.
+        const double sx = double(s) * w / W, sy = double(s) * h / H;
+        const double ox = sx - 1.0 + (1.0 - s) / double(W), oy = sy - 1.0 + (1.0 - s) / double(H);
+        glm::dmat4 inverseA(1.0);
+        inverseA[0][0] = 1.0 / sx;
+        inverseA[1][1] = 1.0 / sy;
+        inverseA[3][0] = -ox / sx;
+        inverseA[3][1] = -oy / sy;
+        in.camera.projection = glm::mat4(inverseA * glm::dmat4(frame.camera.projection));
+    }
+    in.sun = frame.sun;
+    in.ambient = frame.ambient;
+    in.timeSeconds = frame.timeSeconds;
+    in.settings = frame.clouds;
+    in.atmosphere = frame.atmosphere;
+    in.baseNoise = base;
+    in.detailNoise = detail;
+    in.stepsPerPixel = args.referenceSteps;
+    in.lightSteps = args.referenceLightSteps;
+    if (const postfx::Status st = postfx::reference::renderClouds(in, out); !st.ok()) {
+        error = "renderClouds: " + st.message;
+        return false;
+    }
+    return true;
+}
+
+double luminance(const float* p) {
+    return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
+
+// The error of the full-size `image` against the strided reference.
+CloudsError compare(const std::vector<float>& image, const std::vector<float>& ref, uint32_t width,
+                    uint32_t height, uint32_t stride) {
+    const uint32_t w = (width + stride - 1) / stride, h = (height + stride - 1) / stride;
+    std::vector<float> a;
+    a.reserve(size_t(w) * h * 4);
+    double relY = 0.0;
+    for (uint32_t j = 0; j < h; ++j)
+        for (uint32_t i = 0; i < w; ++i) {
+            const size_t src = (size_t(j) * stride * width + size_t(i) * stride) * 4;
+            a.insert(a.end(), &image[src], &image[src] + 4);
+            const double yr = luminance(&ref[(size_t(j) * w + i) * 4]);
+            relY += std::abs(luminance(&image[src]) - yr) / std::max(yr, 1e-6);
+        }
+    const test::ImageStats s = test::compareImages(a, ref, w, h, 0.01, 1e-6);
+    CloudsError e;
+    e.stats = ErrorStats{s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
+    e.meanRelativeLuminance = relY / (double(w) * h);
+    return e;
+}
+
+bool readNoise(FrameGpu& gpu, const char* name, std::vector<float>& out, std::string& error) {
+    std::vector<uint8_t> bytes;
+    VkExtent3D extent{};
+    if (!gpu.readHeld(name, bytes, extent, error)) return false;
+    out.resize(bytes.size());
+    for (size_t i = 0; i < bytes.size(); ++i)
+        out[i] = float(bytes[i]) / 255.0f;
+    return true;
+}
+
+}  // namespace
+
+int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const std::string& date) {
+    std::string error;
+    std::vector<CloudsView> views;
+    for (const CloudsView& v : cloudsViews())
+        if (args.views.empty() || std::count(args.views.begin(), args.views.end(), v.name))
+            views.push_back(v);
+    for (const std::string& name : args.views)
+        if (std::none_of(views.begin(), views.end(), [&](const CloudsView& v) { return v.name == name; }))
+            return fail("--clouds-views: unknown view '" + name + "'");
+    std::vector<CloudsPoint> points;
+    if (!cloudsSweep(args.sweep, points, error)) return fail("--clouds-sweep: " + error);
+    if (args.shadowMapSize)
+        for (CloudsPoint& p : points)
+            p.settings.shadowMap.size = args.shadowMapSize;
+    auto sweeps = [&](const std::string& view) {
+        return args.sweepViews.empty() ||
+               std::count(args.sweepViews.begin(), args.sweepViews.end(), view) > 0;
+    };
+
+    FrameGpu gpu;
+    if (!gpu.create(args.runner, error)) return fail(error);
+    CloudsInfo info;
+    fillRunHeader(info.run, *gpu.host, args.runner, args.errorStride, args.referenceSteps, date, commandLine);
+    info.referenceLightSteps = args.referenceLightSteps;
+    info.convergedFrames = args.convergedFrames;
+    info.motionFrames = args.motionFrames;
+
+    size_t total = 0;
+    for (const CloudsView& v : views)
+        total += sweeps(v.name) ? points.size() : 1;
+    std::fprintf(stderr, "postfx-bench --clouds on %s, %ux%u, %zu measurements\n", info.run.device.c_str(),
+                 info.run.width, info.run.height, total);
+
+    const uint32_t W = args.runner.width, H = args.runner.height;
+    const uint32_t M = std::max(1u, args.motionFrames);
+    std::vector<CloudsRow> rows;
+    {
+        // No geometry: the atmosphere draws the sky (and the planet's ground below the horizon).
+        std::vector<float> color(size_t(W) * H * 4, 0.0f), depth(size_t(W) * H, 0.0f);
+        for (size_t i = 3; i < color.size(); i += 4)
+            color[i] = 1.0f;
+        if (!gpu.upload(color, depth, error)) return fail(error);
+        Progress progress(total);
+        for (const CloudsView& view : views) {
+            // The GPU's atmosphere alone, still and at the pan's last frame: the references' background.
+            std::vector<float> skyStill, skyMoved;
+            if (!gpu.render(frameOf(view, nullptr, 0.0, true, W, H), skyStill, error) ||
+                !gpu.render(frameOf(view, nullptr, panYaw(M - 1), true, W, H), skyMoved, error))
+                return fail(view.name + " atmosphere: " + error);
+            struct References {
+                std::vector<float> still, motion;
+            };
+            std::map<std::pair<uint32_t, uint32_t>, References> references;  // by noise sizes
+            for (const CloudsPoint& point : points) {
+                if (point.knob != "default" && !sweeps(view.name)) continue;
+                const std::string label =
+                    view.name + " " +
+                    (point.knob == "default" ? std::string("default") : point.knob + "=" + point.value);
+                CloudsRow row;
+                row.view = view.name;
+                row.point = point;
+                const postfx::CloudSettings& s = point.settings;
+                // Still: converged (temporal) or one frame.
+                progress.show(label + " still");
+                row.stillFrames = s.temporal.enabled ? std::max(1u, args.convergedFrames) : 1;
+                std::vector<float> image;
+                for (uint32_t n = 0; n < row.stillFrames; ++n)
+                    if (!gpu.render(frameOf(view, &s, 0.0, n == 0, W, H), image, error))
+                        return fail(label + ": " + error);
+                const std::pair<uint32_t, uint32_t> key{s.noise.baseSize, s.noise.detailSize};
+                if (!references.count(key)) {
+                    std::vector<float> base, detail;
+                    if (!readNoise(gpu, "clouds.base_noise", base, error) ||
+                        !readNoise(gpu, "clouds.detail_noise", detail, error))
+                        return fail(label + ": " + error);
+                    References& r = references[key];
+                    const std::string noise = std::to_string(key.first) + "/" + std::to_string(key.second);
+                    progress.show(view.name + " reference, noise " + noise + " (" +
+                                  std::to_string(args.referenceSteps) + " steps)");
+                    const auto start = std::chrono::steady_clock::now();
+                    if (!reference(frameOf(view, &s, 0.0, false, W, H), args, skyStill, base, detail, r.still,
+                                   error) ||
+                        !reference(frameOf(view, &s, panYaw(M - 1), false, W, H), args, skyMoved, base,
+                                   detail, r.motion, error))
+                        return fail(label + ": " + error);
+                    info.referenceSeconds.emplace_back(view.name + " noise " + noise, secondsSince(start));
+                    gpu.idle = true;
+                }
+                const References& ref = references[key];
+                row.still = compare(image, ref.still, W, H, args.errorStride);
+                // In motion: the camera panning, the last frame against its own view's reference.
+                progress.show(label + " motion");
+                row.motionFrames = M;
+                for (uint32_t n = 0; n < M; ++n)
+                    if (!gpu.render(frameOf(view, &s, panYaw(n), n == 0, W, H), image, error))
+                        return fail(label + ": " + error);
+                row.motion = compare(image, ref.motion, W, H, args.errorStride);
+                // Timing: camera and sun still.
+                progress.show(label + " timing");
+                if (!gpu.measure([&](uint32_t n) { return frameOf(view, &s, 0.0, n == 0, W, H); }, row.timing,
+                                 row.passFrames, error, isCloudsPass))
+                    return fail(label + ": " + error);
+                rows.push_back(std::move(row));
+                progress.advance();
+            }
+        }
+        progress.show("writing the report");
+    }
+
+    const std::vector<std::string> messages = gpu.host->validationMessages();
+    std::error_code ec;
+    std::filesystem::create_directories(args.out, ec);
+    if (ec) return fail("cannot create '" + args.out + "': " + ec.message());
+    const std::string csv = args.out + "/results.csv", md = args.out + "/results.md";
+    if (!writeCloudsCsv(csv, info, rows, error) || !writeCloudsMarkdown(md, info, rows, error))
+        return fail(error);
+
+    std::printf("postfx-bench --clouds: %s, %ux%u, error stride %u, reference %u x %u steps\n",
+                info.run.device.c_str(), W, H, args.errorStride, args.referenceSteps,
+                args.referenceLightSteps);
+    std::printf("%-14s %-24s %9s %9s %9s %9s %9s %10s %10s\n", "view", "setting", "GPU ms", "shadow", "march",
+                "temporal", "upsample", "still RMSE", "moving");
+    for (const CloudsRow& r : rows) {
+        const std::string setting =
+            r.point.knob == "default" ? "default" : r.point.knob + "=" + r.point.value;
+        std::printf("%-14s %-24s %9s", r.view.c_str(), setting.c_str(),
+                    orDash(formatNumber(r.timing.median, 4)).c_str());
+        for (const char* pass : {"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"})
+            std::printf(" %9s", orDash(formatNumber(cloudsPassMs(r, pass), 3)).c_str());
+        std::printf(" %10s %10s\n", percent(r.still.stats.relativeRmse).c_str(),
+                    percent(r.motion.stats.relativeRmse).c_str());
+    }
+    std::printf("%s", cloudsSummary(info, rows).c_str());
+    std::printf("wrote %s, %s\n", csv.c_str(), md.c_str());
+    if (!messages.empty()) {
+        for (const std::string& m : messages)
+            std::fprintf(stderr, "validation: %s\n", m.c_str());
+        return fail(std::to_string(messages.size()) + " validation message(s)");
+    }
+    return 0;
+}
+
+}  // namespace bench
