@@ -5,6 +5,7 @@
 #include "host/vulkan_host.h"
 #include "scene/motion.h"
 #include "window/atmosphere_controls.h"
+#include "window/clouds_controls.h"
 #include "window/fly_camera.h"
 #include "window/fog_controls.h"
 #include "window/froxel_fog_controls.h"
@@ -46,7 +47,8 @@ public:
           scene_(scene),
           fileCamera_(scene.camera),
           fogControls_(scene),
-          atmosphereControls_(scene) {}
+          atmosphereControls_(scene),
+          cloudsControls_(scene) {}
     ~App() { destroy(); }
 
     bool init(std::string& error);
@@ -91,6 +93,7 @@ private:
     FroxelFogControls froxelFogControls_;    // edits scene_.froxelFog and scene_.froxelVolumes
     LightControls lightControls_;            // edits scene_.lights
     AtmosphereControls atmosphereControls_;  // edits scene_.atmosphere, scene_.sun.direction, the camera's y
+    CloudsControls cloudsControls_;          // edits scene_.clouds
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers_{};
     std::array<VkFence, kFramesInFlight> fences_{};              // signalled when the slot's frame completed
     std::array<VkSemaphore, kFramesInFlight> imageAvailable_{};  // acquire -> the slot's submission
@@ -317,11 +320,12 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         stats_.renderExtent = renderExtent_;
         stats_.fogQuality = fogQualityText();
         // The controls edit scene_ before this frame records it (Renderer::recordFrame takes both fogs, the
-        // fog volumes, lights, sun and camera from scene_ every frame); their values are always valid for
-        // postfx, and at most one of the two fogs is on.
+        // fog volumes, the atmosphere, the clouds, lights, sun and camera from scene_ every frame); their
+        // values are always valid for postfx, and at most one of the two fogs is on.
         ui_->build(stats_, [this] {
             // In the effects' composite order: the atmosphere (the farthest) first.
             atmosphereControls_.build(scene_);
+            cloudsControls_.build(scene_);
             fogControls_.build(scene_);
             froxelFogControls_.build(scene_);
             lightControls_.build(scene_);

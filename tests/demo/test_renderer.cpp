@@ -1,13 +1,15 @@
-// The demo host renderer: its shading convention checked against the closed form, depth conventions
-// agreeing, the default scene and the plain scene (no effects) against committed golden images, and its
-// shadow map drawn only when read.
+// The demo host renderer: its shading convention checked against the closed form (also under a
+// homogeneous cloud layer's shadow), depth conventions agreeing, the default scene and the plain scene (no
+// effects) against committed golden images, and its shadow map drawn only when read.
 #include "golden.h"
 #include "gpu_test.h"
 #include "host/renderer.h"
 #include "image_compare.h"
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <glm/gtc/constants.hpp>
@@ -60,6 +62,58 @@ TEST_F(DemoRendererTest, LitPlaneMatchesShadingConvention) {
         for (uint32_t x = 0; x < image.width; ++x)
             for (int c = 0; c < 3; ++c)
                 ASSERT_NEAR(image.at(x, y)[c], expected[c], 0.01f * expected[c]) << "pixel " << x << "," << y;
+}
+
+// lit_plane.json under a homogeneous cloud layer (noise off, coverage 1, σ = 0.001 /m between 1500 and
+// 2000 m, atmosphere off: the planes y = 1500 and 2000) that casts shadows: every pixel of the plane (the
+// camera 5 m up looks down at it, so no view ray reaches the layer) has its sunlit term dimmed by the
+// layer's transmittance along the sun, the closed form
+//   L = albedo/π · E · (n·l) · exp(-σ·(top - bottom)/μ) + albedo · ambient,  μ = l_y (l normalised).
+// The lighting reads the clouds' shadow map of the previous frame (Renderer::recordFrame): frame 0 is
+// unshadowed, frame 1 shadowed. Two suns: 70° and 27° above the horizon (T = 0.59 and 0.33).
+TEST_F(DemoRendererTest, LitPlaneUnderHomogeneousCloudLayerMatchesClosedForm) {
+    demo::Scene scene = load("demo/scenes/lit_plane.json");
+    ASSERT_EQ(scene.objects.size(), 1u);
+    ASSERT_FALSE(scene.atmosphere.enabled);
+    postfx::CloudSettings& clouds = scene.clouds;
+    clouds.enabled = true;
+    clouds.noise.enabled = false;
+    clouds.coverage = 1.0f;
+    clouds.density = 0.001f;
+    clouds.bottomHeight = 1500.0f;
+    clouds.topHeight = 2000.0f;
+    clouds.castShadows = true;
+    const demo::Object& plane = scene.objects[0];
+    for (const glm::vec3 sun : {glm::vec3(0.3f, 1.0f, 0.2f), glm::vec3(1.0f, 0.5f, 0.0f)}) {
+        scene.sun.direction = sun;
+        const glm::vec3 l = glm::normalize(sun);
+        const double mu = l.y;
+        const double transmittance =
+            std::exp(-double(clouds.density) * (clouds.topHeight - clouds.bottomHeight) / mu);
+        const glm::vec3 sunlit = plane.albedo / glm::pi<float>() * scene.sun.illuminance *
+                                 std::max(0.0f, glm::dot(plane.normal, l));
+        const glm::vec3 ambient = plane.albedo * scene.ambient;
+        for (const uint32_t frames : {1u, 2u}) {
+            demo::RenderOptions options = smallOptions(48, 32);
+            options.frames = frames;
+            const demo::ImageF image = render(scene, options);
+            ASSERT_EQ(image.rgba.size(), 48u * 32u * 4u);
+            const double t = frames == 1 ? 1.0 : transmittance;  // frame 0: no shadow map held yet
+            double worst = 0.0;
+            for (uint32_t y = 0; y < image.height; ++y)
+                for (uint32_t x = 0; x < image.width; ++x)
+                    for (int c = 0; c < 3; ++c) {
+                        const double expected = double(sunlit[c]) * t + double(ambient[c]);
+                        worst = std::max(worst, std::abs(image.at(x, y)[c] - expected) / expected);
+                    }
+            std::printf(
+                "[ demo ] lit plane under a cloud layer, sun (%.2f, %.2f, %.2f), frame %u: T = %.4f, "
+                "L = %.1f cd/m2, largest relative difference %.3g\n",
+                sun.x, sun.y, sun.z, frames - 1, t, double(sunlit[0]) * t + double(ambient[0]), worst);
+            EXPECT_LT(worst, 0.01) << "sun " << sun.x << "," << sun.y << "," << sun.z << ", frames "
+                                   << frames;
+        }
+    }
 }
 
 TEST_F(DemoRendererTest, EmptySceneShowsSkyRadiance) {
