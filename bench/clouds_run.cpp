@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <map>
@@ -118,6 +119,23 @@ CloudsError compare(const std::vector<float>& image, const std::vector<float>& r
     return e;
 }
 
+// With POSTFX_BENCH_DUMP=DIR: `image` at every stride-th pixel (the error's pixels) as DIR/name.pfm (RGB
+// float, bottom row first), to look at where an error comes from.
+void dump(const std::string& name, const std::vector<float>& image, uint32_t width, uint32_t height,
+          uint32_t stride) {
+    const char* dir = std::getenv("POSTFX_BENCH_DUMP");
+    if (!dir || !*dir) return;
+    std::filesystem::create_directories(dir);
+    const uint32_t w = (width + stride - 1) / stride, h = (height + stride - 1) / stride;
+    FILE* f = std::fopen((std::string(dir) + "/" + name + ".pfm").c_str(), "wb");
+    if (!f) return;
+    std::fprintf(f, "PF\n%u %u\n-1.0\n", w, h);
+    for (uint32_t j = h; j-- > 0;)
+        for (uint32_t i = 0; i < w; ++i)
+            std::fwrite(&image[(size_t(j) * stride * width + size_t(i) * stride) * 4], sizeof(float), 3, f);
+    std::fclose(f);
+}
+
 bool readNoise(FrameGpu& gpu, const char* name, std::vector<float>& out, std::string& error) {
     std::vector<uint8_t> bytes;
     VkExtent3D extent{};
@@ -220,6 +238,11 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
                 }
                 const References& ref = references[key];
                 row.still = compare(image, ref.still, W, H, args.errorStride);
+                const std::string dumpName =
+                    view.name + "_" + (point.knob == "default" ? "default" : point.knob + "_" + point.value);
+                dump(dumpName + "_still_gpu", image, W, H, args.errorStride);
+                dump(dumpName + "_still_reference", ref.still, (W + args.errorStride - 1) / args.errorStride,
+                     (H + args.errorStride - 1) / args.errorStride, 1);
                 // In motion: the camera panning, the last frame against its own view's reference.
                 progress.show(label + " motion");
                 row.motionFrames = M;
@@ -227,6 +250,10 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
                     if (!gpu.render(frameOf(view, &s, panYaw(n), n == 0, W, H), image, error))
                         return fail(label + ": " + error);
                 row.motion = compare(image, ref.motion, W, H, args.errorStride);
+                dump(dumpName + "_motion_gpu", image, W, H, args.errorStride);
+                dump(dumpName + "_motion_reference", ref.motion,
+                     (W + args.errorStride - 1) / args.errorStride,
+                     (H + args.errorStride - 1) / args.errorStride, 1);
                 // Timing: camera and sun still.
                 progress.show(label + " timing");
                 if (!gpu.measure([&](uint32_t n) { return frameOf(view, &s, 0.0, n == 0, W, H); }, row.timing,

@@ -84,9 +84,12 @@ CloudsSweepOptions defaultCloudsSweep(bool quick) {
             {"steps", {"16"}}, {"resolution_scale", {"1"}}, {"base_size", {"32"}}, {"preset", {"low"}}};
         return o;
     }
-    o.values = {{"steps", {"16", "32", "64", "96", "128"}},    {"light_steps", {"2", "4", "6", "8", "16"}},
-                {"resolution_scale", {"1", "0.5", "0.25"}},    {"base_size", {"32", "64", "128", "256"}},
-                {"detail_size", {"16", "32", "64"}},           {"temporal", {"off"}},
+    o.values = {{"steps", {"16", "32", "64", "96", "128", "192"}},
+                {"light_steps", {"2", "4", "6", "12", "16", "32"}},
+                {"resolution_scale", {"1", "0.5", "0.25"}},
+                {"base_size", {"32", "64", "128", "256"}},
+                {"detail_size", {"16", "32", "64"}},
+                {"temporal", {"off"}},
                 {"preset", {"low", "medium", "high", "ultra"}}};
     return o;
 }

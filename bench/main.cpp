@@ -152,14 +152,16 @@ const char* kUsage =
     "  --clouds-views LIST    ground_noon, ground_sunset, above [all]\n"
     "  --clouds-sweep-views LIST  the views the sweep runs on [all measured; quick: ground_noon]\n"
     "  --clouds-sweep KNOB=a,b,...  a knob's values (repeatable; 'none' sweeps nothing): steps\n"
-    "                         [16,32,64,96,128], light_steps [2,4,6,8,16], resolution_scale [1,0.5,0.25],\n"
+    "                         [16,32,64,96,128,192], light_steps [2,4,6,12,16,32], resolution_scale "
+    "[1,0.5,0.25],\n"
     "                         base_size [32,64,128,256], detail_size [16,32,64], temporal [off], preset\n"
     "                         [low,medium,high,ultra]; quick: steps 16, scale 1, base_size 32, preset low\n"
     "  --clouds-reference-light-steps N  the reference's light steps [128; quick: 16]\n"
     "  --clouds-converged-frames N  still frames before the still error of a temporal row [32; quick: 4]\n"
     "  --clouds-motion-frames N  panning frames before the motion error [32; quick: 4]\n"
     "                         quick also shrinks the shadow map to 64x64\n"
-    "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device\n";
+    "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device; --clouds:\n"
+    "  POSTFX_BENCH_DUMP=DIR writes each row's GPU and reference images (the error's pixels) to DIR as PFM\n";
 
 struct Args {
     std::vector<std::string> scenes = {"fog_default", "fog_height", "fog_shadowed", "fog_valley",

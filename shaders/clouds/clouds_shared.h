@@ -22,6 +22,10 @@ PFX_CONST(uint, kCloudBindingAtmosphere, 6);        // uniform buffer: Atmospher
 PFX_CONST(uint, kCloudBindingTransmittanceLut, 7);  // sampler2D: the sun's transmittance (r, μ)
 PFX_CONST(uint, kCloudBindingApScattering, 8);      // sampler3D: aerial perspective's in-scattering
 PFX_CONST(uint, kCloudBindingApTransmittance, 9);   // sampler2DArray: aerial perspective's T
+PFX_CONST(uint, kCloudBindingMultiScattering, 18);  // sampler2D: the atmosphere's Ψ (μs, r)
+// Steps of the aerial perspective's march beyond the aerial-perspective LUT's depth (clouds farther than
+// atmosphere.aerial_perspective_distance; docs/effects/clouds.md, "Composite").
+PFX_CONST(uint, kCloudFarAerialPerspectiveSteps, 8u);
 // Reduced resolution and temporal accumulation (docs/effects/clouds.md, "Resolution and temporal").
 PFX_CONST(uint, kCloudBindingScatter, 10);  // storage image: the march's (L, T) at its extent
 PFX_CONST(uint, kCloudBindingDistance,
@@ -40,6 +44,8 @@ PFX_CONST(uint, kCloudFlagBox, 4u);     // CloudShape::Box
 PFX_CONST(uint, kCloudFlagDepthReversedZ, 8u);
 PFX_CONST(uint, kCloudFlagJitter, 16u);
 PFX_CONST(uint, kCloudFlagCoverageMap, 32u);  // read the host's coverage map
+// The upsample reads the temporal history, whose alpha is the optical depth τ (temporal.comp), not T.
+PFX_CONST(uint, kCloudFlagOpticalDepthHistory, 64u);
 
 // The model's constants (docs/effects/clouds.md, "Density" and "Light").
 PFX_CONST(float, kCloudDetailTilingRatio, 8.0f);  // the detail texture repeats tiling / this [m]
@@ -62,6 +68,8 @@ PFX_CONST(uint, kCloudShadowSteps, 32u);             // samples of each shadow-m
 PFX_CONST(float, kCloudUpsampleDistanceTolerance, 0.1f);
 PFX_CONST(float, kCloudTemporalDistanceTolerance, 0.15f);
 PFX_CONST(float, kCloudTemporalClipGamma, 1.0f);  // the history box: mean ± γ·σ of the 3×3 neighbourhood
+// The temporal history holds τ = -ln T; T below this counts as this (τ ≤ 69).
+PFX_CONST(float, kCloudMinHistoryTransmittance, 1e-30f);
 
 struct CloudUniforms {
     mat4 clipToView;   // Vulkan clip -> camera-relative world (this frame's camera)

@@ -14,15 +14,23 @@ float cloudLightLength(vec3 x) {
     return seg.y > seg.x ? max(seg.y, 0.0) : 0.0;
 }
 
-// Optical depth of the cloud from x toward the sun: lightSteps midpoint samples over cloudLightLength.
+// Optical depth of the cloud from x toward the sun: lightSteps midpoint samples over cloudLightLength,
+// step k spanning [(k/n)², ((k+1)/n)²] of it: short steps near x, where a dense cloud takes the sun's
+// light within tens of metres (the self-shadowing that shapes a cloud's lit side), long ones far away,
+// where only whether the path is blocked matters. Uniform steps over a 2 km path missed that first
+// stretch: on the H100 the benchmark's noon view fell from 3.4% to 2.0% error at 6 light steps
+// (docs/effects/clouds.md, "Light").
 float cloudSunOpticalDepth(vec3 x) {
     float length = cloudLightLength(x);
     if (length <= 0.0) return 0.0;
-    float ds = length / float(cl.counts.y);
+    float n = float(cl.counts.y);
+    float scale = length / (n * n);
     float tau = 0.0;
-    for (uint k = 0u; k < cl.counts.y; ++k)
-        tau += cloudExtinction(x + cl.toSun.xyz * ((float(k) + 0.5) * ds));
-    return tau * ds;
+    for (uint k = 0u; k < cl.counts.y; ++k) {
+        float a = float(k * k), b = float((k + 1u) * (k + 1u));
+        tau += cloudExtinction(x + cl.toSun.xyz * (0.5 * (a + b) * scale)) * ((b - a) * scale);
+    }
+    return tau;
 }
 
 // (1 - w)·HG(g_f) + w·HG(g_b) for view direction d (from the eye), the asymmetries scaled by `scale`.

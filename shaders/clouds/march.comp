@@ -42,8 +42,13 @@ layout(binding = kCloudBindingAtmosphere, std140) uniform Atmosphere {
 layout(binding = kCloudBindingTransmittanceLut) uniform sampler2D transmittanceLut;
 layout(binding = kCloudBindingApScattering) uniform sampler3D apScattering;
 layout(binding = kCloudBindingApTransmittance) uniform sampler2DArray apTransmittance;
+layout(binding = kCloudBindingMultiScattering) uniform sampler2D multiScatteringLut;
+#define ATMOSPHERE_MS
+#include "common/integrate.glsl"
 #include "atmosphere/model.glsl"
 #include "atmosphere/aerial_perspective_lookup.glsl"
+#include "atmosphere/march.glsl"
+#include "atmosphere/aerial_perspective_far.glsl"
 #endif
 
 #include "clouds/ray.glsl"
@@ -95,7 +100,7 @@ void main() {
 #ifdef ATMOSPHERE
     if (met) {
         vec3 apL, apT;
-        aerialPerspective(d * meanDistance, apL, apT);
+        aerialPerspectiveAnyDistance(d * meanDistance, kCloudFarAerialPerspectiveSteps, apL, apT);
         L = apT * L + oneMinusExp(tau) * apL * atmo.sun.rgb;
     }
 #endif

@@ -16,6 +16,10 @@
 //   4. The history is clamped to the min/max box of this frame's 3×3 neighbourhood (Karis 2014).
 //   5. result = history + w·(current - history), w = cameraDelta.w (a running mean after a reset, then
 //      the blend weight); without history, the current value.
+// The alpha channel accumulates the optical depth τ = -ln T, not T: each frame's jittered march gives an
+// unbiased τ, and e^{-mean τ} converges to the true T, where the mean of e^{-τ} would be too bright by
+// Jensen's inequality (the sun's disk through a thin cloud at sunset: +11% with 64 steps on the H100).
+// The upsample takes e^{-τ} of each texel (kCloudFlagOpticalDepthHistory).
 // The history is RGBA32F whatever the color format (in half, small updates would be lost).
 // Variant COLOR_RGBA32F: the march's image is RGBA32F.
 #extension GL_GOOGLE_include_directive : require
@@ -39,6 +43,11 @@ layout(binding = kCloudBindingTemporal, std140) uniform Temporal {
 
 bool finite(vec4 v) {
     return !any(isnan(v)) && !any(isinf(v));
+}
+
+// (L, T) of the march as (L, τ): T below kCloudMinHistoryTransmittance counts as that.
+vec4 withOpticalDepth(vec4 v) {
+    return vec4(v.rgb, -log(max(v.a, kCloudMinHistoryTransmittance)));
 }
 
 // The unit direction of march texel `texel`'s view ray, through its centre (camera-relative).
@@ -101,7 +110,7 @@ void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(texel, cl.marchExtent.xy))) return;
     ivec2 size = ivec2(cl.marchExtent.xy);
-    vec4 current = imageLoad(scatterImage, ivec2(texel));
+    vec4 current = withOpticalDepth(imageLoad(scatterImage, ivec2(texel)));
     vec2 distances = unpackCloudDistances(imageLoad(distanceCurrent, ivec2(texel)).r);
 
     // The 3×3 neighbourhood's min/max box clamps the history.
@@ -110,7 +119,8 @@ void main() {
     float count = 0.0;
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
-            vec4 n = imageLoad(scatterImage, clamp(ivec2(texel) + ivec2(x, y), ivec2(0), size - 1));
+            vec4 n = withOpticalDepth(
+                imageLoad(scatterImage, clamp(ivec2(texel) + ivec2(x, y), ivec2(0), size - 1)));
             if (finite(n)) {
                 lo = min(lo, n);
                 hi = max(hi, n);

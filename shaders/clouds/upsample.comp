@@ -5,6 +5,7 @@
 // kCloudUpsampleDistanceTolerance of the pixel's own surface (the sky matches only the sky) are blended
 // with bilinear weights; when none does (an edge thinner than a texel), the texel nearest in distance is
 // taken. At resolution scale 1 each pixel reads its own texel.
+// With temporal accumulation the history's alpha is the optical depth τ: T = e^{-τ} per texel, then blended.
 // Variants: COLOR_RGBA32F (the color format); SCATTER_RGBA32F: the march's image is RGBA32F (the
 // temporal history) with RGBA16F color.
 #extension GL_GOOGLE_include_directive : require
@@ -43,6 +44,7 @@ void main() {
     float nearestDifference = kInfinity;
     for (int k = 0; k < 4; ++k) {
         vec4 s = imageLoad(scatterImage, ivec2(texels[k]));
+        if ((cl.flags.x & kCloudFlagOpticalDepthHistory) != 0u) s.a = exp(-s.a);
         float difference = relativeDifference(cloudRay(cloudSourcePixel(texels[k])).surface, surface);
         if (difference <= kCloudUpsampleDistanceTolerance) {
             sum += bilinear[k] * s;

@@ -124,8 +124,9 @@ TEST_F(CloudsPlanTest, WithTheAtmosphereTheMarchReadsItsLuts) {
     EXPECT_LT(apply, march);  // the sky first, then the clouds over it
     for (const postfx::PlannedPass& p : last.passes) {
         if (p.name != "clouds.march") continue;
-        for (const char* lut : {"atmosphere.uniforms", "atmosphere.transmittance",
-                                "atmosphere.aerial_perspective", "atmosphere.aerial_transmittance"})
+        for (const char* lut :
+             {"atmosphere.uniforms", "atmosphere.transmittance", "atmosphere.aerial_perspective",
+              "atmosphere.aerial_transmittance", "atmosphere.multiple_scattering"})
             EXPECT_NE(std::find(p.reads.begin(), p.reads.end(), lut), p.reads.end()) << lut;
     }
     EXPECT_EQ(planAndRun(), (Passes{"atmosphere.apply", "clouds.march"})) << "still";

@@ -130,9 +130,9 @@ struct CloudSettings {
     float lobeMix = 0.2f;            // weight of the back lobe [1]; in [0, 1]
     CloudMultipleScattering multipleScattering;
     // Samples along each view ray inside the layer, however long its path through it [1]; in [1, 1024].
-    uint32_t steps = 64;
+    uint32_t steps = 80;
     // Samples of the march toward the sun from each view sample [1]; in [1, 64].
-    uint32_t lightSteps = 6;
+    uint32_t lightSteps = 8;
     // The march toward the sun stops this far from the sample (or where it leaves the layer) [m]; in
     // (0, 1e6]: cloud farther toward the sun casts no shadow on the sample.
     float lightDistance = 6000.0f;

@@ -35,30 +35,31 @@ constexpr core::Binding kMarchAtmosphereBindings[] = {
     {gpu::kCloudBindingBaseNoise, kSampled},        {gpu::kCloudBindingDetailNoise, kSampled},
     {gpu::kCloudBindingCoverageMap, kSampled},      {gpu::kCloudBindingAtmosphere, kUniform},
     {gpu::kCloudBindingTransmittanceLut, kSampled}, {gpu::kCloudBindingApScattering, kSampled},
-    {gpu::kCloudBindingApTransmittance, kSampled}};
+    {gpu::kCloudBindingApTransmittance, kSampled},  {gpu::kCloudBindingMultiScattering, kSampled}};
 // The march into its own image (SCATTER): no color images; with TEMPORAL the distance image too.
 constexpr core::Binding kScatterBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},    {gpu::kCloudBindingScatter, kStorage},
     {gpu::kCloudBindingDepth, kSampled},       {gpu::kCloudBindingBaseNoise, kSampled},
     {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingCoverageMap, kSampled}};
 constexpr core::Binding kScatterAtmosphereBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},     {gpu::kCloudBindingScatter, kStorage},
-    {gpu::kCloudBindingDepth, kSampled},        {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled},  {gpu::kCloudBindingCoverageMap, kSampled},
-    {gpu::kCloudBindingAtmosphere, kUniform},   {gpu::kCloudBindingTransmittanceLut, kSampled},
-    {gpu::kCloudBindingApScattering, kSampled}, {gpu::kCloudBindingApTransmittance, kSampled}};
+    {gpu::kCloudBindingUniforms, kUniform},       {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDepth, kSampled},          {gpu::kCloudBindingBaseNoise, kSampled},
+    {gpu::kCloudBindingDetailNoise, kSampled},    {gpu::kCloudBindingCoverageMap, kSampled},
+    {gpu::kCloudBindingAtmosphere, kUniform},     {gpu::kCloudBindingTransmittanceLut, kSampled},
+    {gpu::kCloudBindingApScattering, kSampled},   {gpu::kCloudBindingApTransmittance, kSampled},
+    {gpu::kCloudBindingMultiScattering, kSampled}};
 constexpr core::Binding kScatterTemporalBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},    {gpu::kCloudBindingScatter, kStorage},
     {gpu::kCloudBindingDepth, kSampled},       {gpu::kCloudBindingBaseNoise, kSampled},
     {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingCoverageMap, kSampled},
     {gpu::kCloudBindingDistance, kStorage}};
 constexpr core::Binding kScatterTemporalAtmosphereBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},     {gpu::kCloudBindingScatter, kStorage},
-    {gpu::kCloudBindingDepth, kSampled},        {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled},  {gpu::kCloudBindingCoverageMap, kSampled},
-    {gpu::kCloudBindingAtmosphere, kUniform},   {gpu::kCloudBindingTransmittanceLut, kSampled},
-    {gpu::kCloudBindingApScattering, kSampled}, {gpu::kCloudBindingApTransmittance, kSampled},
-    {gpu::kCloudBindingDistance, kStorage}};
+    {gpu::kCloudBindingUniforms, kUniform},        {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDepth, kSampled},           {gpu::kCloudBindingBaseNoise, kSampled},
+    {gpu::kCloudBindingDetailNoise, kSampled},     {gpu::kCloudBindingCoverageMap, kSampled},
+    {gpu::kCloudBindingAtmosphere, kUniform},      {gpu::kCloudBindingTransmittanceLut, kSampled},
+    {gpu::kCloudBindingApScattering, kSampled},    {gpu::kCloudBindingApTransmittance, kSampled},
+    {gpu::kCloudBindingMultiScattering, kSampled}, {gpu::kCloudBindingDistance, kStorage}};
 constexpr core::Binding kTemporalBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},   {gpu::kCloudBindingScatter, kStorage},
     {gpu::kCloudBindingDistance, kStorage},   {gpu::kCloudBindingHistoryIn, kStorage},
@@ -214,7 +215,8 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
                 (s.shape == CloudShape::Box ? gpu::kCloudFlagBox : 0u) |
                 (depth.reversedZ ? gpu::kCloudFlagDepthReversedZ : 0u) |
                 (s.jitter ? gpu::kCloudFlagJitter : 0u) |
-                (map.texture != VK_NULL_HANDLE ? gpu::kCloudFlagCoverageMap : 0u);
+                (map.texture != VK_NULL_HANDLE ? gpu::kCloudFlagCoverageMap : 0u) |
+                (s.temporal.enabled ? gpu::kCloudFlagOpticalDepthHistory : 0u);
     return u;
 }
 
@@ -340,13 +342,20 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kCloudBindingDetailNoise, detail, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kCloudBindingCoverageMap, coverageMap, mapUse, SamplerKind::LinearRepeat);
     if (withAtmosphere) {
+        // The multiple-scattering LUT for the aerial perspective beyond the LUT's depth; without multiple
+        // scattering the atmosphere declares none: the transmittance LUT stands in, never read.
+        const core::ImageRef transmittanceLut = b.find(atmosphere::kTransmittanceLut);
+        const core::ImageRef multiScattering = b.find(atmosphere::kMultipleScatteringLut);
         b.bind(gpu::kCloudBindingAtmosphere, atmosphereUniforms)
-            .bind(gpu::kCloudBindingTransmittanceLut, b.find(atmosphere::kTransmittanceLut), Use::Sampled,
+            .bind(gpu::kCloudBindingTransmittanceLut, transmittanceLut, Use::Sampled,
                   SamplerKind::LinearClamp)
             .bind(gpu::kCloudBindingApScattering, b.find(atmosphere::kApScatteringLut), Use::Sampled,
                   SamplerKind::LinearClamp)
             .bind(gpu::kCloudBindingApTransmittance, b.find(atmosphere::kApTransmittanceLut), Use::Sampled,
-                  SamplerKind::LinearClamp);
+                  SamplerKind::LinearClamp)
+            .bind(gpu::kCloudBindingMultiScattering,
+                  multiScattering.valid() ? multiScattering : transmittanceLut,
+                  multiScattering.valid() ? Use::Sampled : Use::BoundOnly, SamplerKind::LinearClamp);
     }
     if (!scatter) {  // full size without temporal: the march composites
         b.bind(gpu::kCloudBindingColorIn, b.compositeSource(), Use::StorageRead)

@@ -191,11 +191,14 @@ double sunOpticalDepth(const Model& m, const dvec3& x, uint32_t steps) {
     const dvec2 seg = segment(m, x, m.toSun, m.s.lightDistance);
     const double length = seg.y > seg.x ? std::max(seg.y, 0.0) : 0.0;
     if (length <= 0.0) return 0.0;
-    const double ds = length / steps;
+    // Step k spans [(k/n)², ((k+1)/n)²]·length, sampled at its middle (lighting.glsl).
+    const double n2 = double(steps) * steps;
     double tau = 0.0;
-    for (uint32_t k = 0; k < steps; ++k)
-        tau += extinction(m, x + m.toSun * ((k + 0.5) * ds));
-    return tau * ds;
+    for (uint32_t k = 0; k < steps; ++k) {
+        const double a = double(k) * k / n2, b = double(k + 1) * (k + 1) / n2;
+        tau += extinction(m, x + m.toSun * (0.5 * (a + b) * length)) * ((b - a) * length);
+    }
+    return tau;
 }
 
 double phase(const Model& m, const dvec3& d, double scale) {

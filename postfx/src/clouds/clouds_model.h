@@ -72,7 +72,7 @@ double heightProfile(const Model& m, double h);
 double field(const Model& m, const glm::dvec3& x, double h);  // in [0, 1]
 double extinction(const Model& m, const glm::dvec3& x);       // σt [1/m]
 // Optical depth toward the sun from x over the light path (the shape's exit, at most light_distance),
-// with `steps` midpoint samples.
+// with `steps` midpoint samples, step k spanning [(k/n)², ((k+1)/n)²] of the path (lighting.glsl).
 double sunOpticalDepth(const Model& m, const glm::dvec3& x, uint32_t steps);
 // The dual-lobe phase for view direction d, asymmetries times `scale` [1/sr].
 double phase(const Model& m, const glm::dvec3& d, double scale);

@@ -28,8 +28,8 @@ struct QualityPreset {
 };
 inline constexpr QualityPreset kQualityPresets[] = {
     {CloudQuality::Low, 32, 4, 0.25f, true},
-    {CloudQuality::Medium, 64, 6, 0.5f, true},
-    {CloudQuality::High, 96, 8, 0.5f, true},
+    {CloudQuality::Medium, 80, 8, 0.5f, true},
+    {CloudQuality::High, 128, 12, 0.5f, true},
     {CloudQuality::Ultra, 128, 12, 1.0f, true},
 };
 
