@@ -337,7 +337,6 @@ TEST_F(CloudsStability, HorizontalRayGrazingTheCurvedLayerMatchesReference) {
     }
     frame.sun = litHomogeneousFrame().sun;
     frame.sun.illuminance = postfx::Vec3(1e5f);
-    frame.atmosphere.aerialPerspectiveDistance = 2e5f;  // the clouds' mean distance is inside the LUT
     frame.ambient = litHomogeneousFrame().ambient;
     expectMatchesReference(frame, im, "grazing, lit, camera at 2500 m", 1e-2, 1e-2);
     frame.clouds = finelyMarchedNoisyClouds();
