@@ -4,6 +4,7 @@
 // atmosphere. Small images on lavapipe.
 #include "clouds/clouds_effect.h"
 #include "clouds_frames.h"
+#include "clouds_reference_inputs.h"
 #include "fog/noise_cpu.h"
 #include "fog_harness.h"
 #include "image_compare.h"
@@ -43,33 +44,13 @@ protected:
     }
 
     // A noise texture read back as floats in [0, 1].
-    std::vector<float> readNoise(const char* name) {
-        VkExtent3D extent{};
-        const std::vector<uint8_t> bytes = readHeldImage(*host, gpu, *context, name, extent);
-        std::vector<float> v(bytes.size());
-        for (size_t i = 0; i < v.size(); ++i)
-            v[i] = float(bytes[i]) / 255.0f;
-        return v;
-    }
+    std::vector<float> readNoise(const char* name) { return heldUnormTexels(*host, gpu, *context, name); }
 
     std::vector<float> reference(const postfx::FrameInfo& frame, const FogHarnessImages& im,
                                  std::span<const float> base = {}, std::span<const float> detail = {}) {
-        postfx::reference::CloudInputs in;
-        in.width = im.width;
-        in.height = im.height;
-        in.color = im.color;
-        in.depth = im.depth;
-        in.depthConvention.reversedZ = true;
-        in.camera = frame.camera;
-        in.sun = frame.sun;
-        in.ambient = frame.ambient;
-        in.timeSeconds = frame.timeSeconds;
-        in.settings = frame.clouds;
-        in.atmosphere = frame.atmosphere;
+        postfx::reference::CloudInputs in = referenceInputs(frame, im);
         in.baseNoise = base;
         in.detailNoise = detail;
-        in.stepsPerPixel = 512;
-        in.lightSteps = 64;
         std::vector<float> out;
         const postfx::Status s = postfx::reference::renderClouds(in, out);
         EXPECT_TRUE(s.ok()) << s.message;

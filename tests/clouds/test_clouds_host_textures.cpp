@@ -2,6 +2,7 @@
 // placed by its size and origin and moved by the wind, against the reference reading the same texels; and
 // host noise textures holding the generated texels giving the generated image, with no noise generated.
 #include "clouds_frames.h"
+#include "clouds_reference_inputs.h"
 #include "fog_harness.h"
 #include "image_compare.h"
 
@@ -34,13 +35,7 @@ protected:
     }
 
     std::vector<float> noiseTexels(const char* name, uint32_t& size) {
-        VkExtent3D extent{};
-        const std::vector<uint8_t> bytes = readHeldImage(*host, gpu, *context, name, extent);
-        size = extent.width;
-        std::vector<float> v(bytes.size());
-        for (size_t i = 0; i < v.size(); ++i)
-            v[i] = float(bytes[i]) / 255.0f;
-        return v;
+        return heldUnormTexels(*host, gpu, *context, name, &size);
     }
 
     static postfx::FrameInfo litFrame(const postfx::CloudSettings& clouds) {
@@ -90,23 +85,11 @@ TEST_F(CloudsHostTexturesTest, CoverageMapMatchesTheReference) {
             base = noiseTexels("clouds.base_noise", baseSize);
             detail = noiseTexels("clouds.detail_noise", detailSize);
         }
-        postfx::reference::CloudInputs in;
-        in.width = im.width;
-        in.height = im.height;
-        in.color = im.color;
-        in.depth = im.depth;
-        in.depthConvention.reversedZ = true;
-        in.camera = frame.camera;
-        in.sun = frame.sun;
-        in.ambient = frame.ambient;
-        in.timeSeconds = frame.timeSeconds;
-        in.settings = frame.clouds;
+        postfx::reference::CloudInputs in = referenceInputs(frame, im);
         in.baseNoise = base;
         in.detailNoise = detail;
         in.coverageMap = values;
         in.coverageMapWidth = in.coverageMapHeight = 4;
-        in.stepsPerPixel = 512;
-        in.lightSteps = 64;
         std::vector<float> ref;
         const postfx::Status st = postfx::reference::renderClouds(in, ref);
         ASSERT_TRUE(st.ok()) << st.message;

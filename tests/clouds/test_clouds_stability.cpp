@@ -7,6 +7,7 @@
 // texels and the GPU's step counts, so that both sample the same points) within each case's stated
 // tolerance. Small images on lavapipe; each case prints what it measured.
 #include "clouds_frames.h"
+#include "clouds_reference_inputs.h"
 #include "fog_harness.h"
 #include "image_compare.h"
 
@@ -62,15 +63,11 @@ protected:
 
     // A texture postfx holds, as floats (R8_UNORM texels in [0, 1]; R32F as stored).
     std::vector<float> readHeld(const char* name, bool unorm8) {
+        if (unorm8) return heldUnormTexels(*host, gpu, *context, name);
         VkExtent3D extent{};
         const std::vector<uint8_t> bytes = readHeldImage(*host, gpu, *context, name, extent);
-        std::vector<float> v(unorm8 ? bytes.size() : bytes.size() / 4);
-        if (!unorm8) {
-            std::memcpy(v.data(), bytes.data(), v.size() * 4);
-            return v;
-        }
-        for (size_t i = 0; i < v.size(); ++i)
-            v[i] = float(bytes[i]) / 255.0f;
+        std::vector<float> v(bytes.size() / 4);
+        std::memcpy(v.data(), bytes.data(), v.size() * 4);
         return v;
     }
 
@@ -82,22 +79,10 @@ protected:
             base = readHeld("clouds.base_noise", true);
             detail = readHeld("clouds.detail_noise", true);
         }
-        postfx::reference::CloudInputs in;
-        in.width = im.width;
-        in.height = im.height;
-        in.color = im.color;
-        in.depth = im.depth;
-        in.depthConvention.reversedZ = true;
-        in.camera = frame.camera;
-        in.sun = frame.sun;
-        in.ambient = frame.ambient;
-        in.timeSeconds = frame.timeSeconds;
-        in.settings = frame.clouds;
-        in.atmosphere = frame.atmosphere;
+        postfx::reference::CloudInputs in =
+            referenceInputs(frame, im, frame.clouds.steps, frame.clouds.lightSteps);
         in.baseNoise = base;
         in.detailNoise = detail;
-        in.stepsPerPixel = frame.clouds.steps;
-        in.lightSteps = frame.clouds.lightSteps;
         std::vector<float> out;
         const postfx::Status s = postfx::reference::renderClouds(in, out);
         EXPECT_TRUE(s.ok()) << s.message;

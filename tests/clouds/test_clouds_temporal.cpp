@@ -4,6 +4,7 @@
 // that does not ghost (its last frame against the reference of its own view); and geometry in front of
 // the clouds that keeps its silhouette. Small images on lavapipe.
 #include "clouds_frames.h"
+#include "clouds_reference_inputs.h"
 #include "fog_harness.h"
 #include "image_compare.h"
 
@@ -41,30 +42,11 @@ protected:
 
     // The reference with the GPU's noise texels (held after a frame with noise).
     std::vector<float> reference(const postfx::FrameInfo& frame, const FogHarnessImages& im) {
-        VkExtent3D extent{};
-        auto floats = [&](const char* name) {
-            const std::vector<uint8_t> bytes = readHeldImage(*host, gpu, *context, name, extent);
-            std::vector<float> v(bytes.size());
-            for (size_t i = 0; i < v.size(); ++i)
-                v[i] = float(bytes[i]) / 255.0f;
-            return v;
-        };
-        const std::vector<float> base = floats("clouds.base_noise"), detail = floats("clouds.detail_noise");
-        postfx::reference::CloudInputs in;
-        in.width = im.width;
-        in.height = im.height;
-        in.color = im.color;
-        in.depth = im.depth;
-        in.depthConvention.reversedZ = true;
-        in.camera = frame.camera;
-        in.sun = frame.sun;
-        in.ambient = frame.ambient;
-        in.timeSeconds = frame.timeSeconds;
-        in.settings = frame.clouds;
+        const std::vector<float> base = heldUnormTexels(*host, gpu, *context, "clouds.base_noise"),
+                                 detail = heldUnormTexels(*host, gpu, *context, "clouds.detail_noise");
+        postfx::reference::CloudInputs in = referenceInputs(frame, im);
         in.baseNoise = base;
         in.detailNoise = detail;
-        in.stepsPerPixel = 512;
-        in.lightSteps = 64;
         std::vector<float> out;
         const postfx::Status s = postfx::reference::renderClouds(in, out);
         EXPECT_TRUE(s.ok()) << s.message;
