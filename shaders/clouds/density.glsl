@@ -31,10 +31,12 @@ vec2 cloudSegment(vec3 x0, vec3 d, float far) {
         // Inside the bottom sphere at the start: begin where the ray leaves it.
         vec2 inner = raySphere(o, d, ground + cl.layer.x);
         if (inner.y > inner.x && inner.x <= seg.x && inner.y > seg.x) seg.x = inner.y;
-        // From inside or above the layer into the bottom sphere: the planet's side of it; a ray that meets
-        // the ground there ends at it.
+        // A ray that meets the ground ends where it enters the bottom sphere before it: below the layer the
+        // field is 0 (from 6 km up, the march's steps no longer spend 40% of themselves between the
+        // layer and the ground). A ray that passes under the layer without meeting the ground keeps the
+        // gap between its two crossings.
         vec2 planet = raySphere(o, d, ground);
-        if (planet.y > planet.x && planet.x > 0.0) seg.y = min(seg.y, planet.x);
+        if (planet.y > planet.x && planet.x > 0.0) seg.y = min(seg.y, min(inner.x, planet.x));
     } else {
         float y = cl.origin.y + x0.y;
         float bottom = cl.layer.x, top = cl.layer.y;

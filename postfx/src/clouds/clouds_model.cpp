@@ -134,7 +134,9 @@ dvec2 segment(const Model& m, const dvec3& x0, const dvec3& d, double far) {
         const dvec2 inner = raySphere(o, d, m.groundRadius + m.bottom);
         if (inner.y > inner.x && inner.x <= seg.x && inner.y > seg.x) seg.x = inner.y;
         const dvec2 planet = raySphere(o, d, m.groundRadius);
-        if (planet.y > planet.x && planet.x > 0.0) seg.y = std::min(seg.y, planet.x);
+        // A ray that meets the ground ends where it enters the bottom sphere (below the layer the field
+        // is 0); the shader's cloudSegment says why.
+        if (planet.y > planet.x && planet.x > 0.0) seg.y = std::min(seg.y, std::min(inner.x, planet.x));
     } else {
         const double y = m.camera.y + x0.y;
         if (d.y == 0.0) {
