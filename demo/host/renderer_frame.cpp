@@ -123,6 +123,7 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
                    gbuffer.depth.usage};
     frame.output = fogOutput;
     frame.timeSeconds = in.timeSeconds;
+    frame.budgetMs = scene.budgetMs;
     frame.camera = in.camera;
     frame.sun = in.sun;
     frame.ambient = in.ambient;

@@ -29,6 +29,7 @@ constexpr const char* kCloudKeys[] = {"enabled",
                                       "wind",
                                       "jitter",
                                       "quality",
+                                      "auto_budget_ms",
                                       "resolution_scale",
                                       "temporal",
                                       "cast_shadows",
@@ -57,17 +58,16 @@ struct QualityName {
     postfx::CloudQuality quality;
     const char* name;
 };
-constexpr QualityName kQualityNames[] = {{postfx::CloudQuality::Custom, "custom"},
-                                         {postfx::CloudQuality::Low, "low"},
-                                         {postfx::CloudQuality::Medium, "medium"},
-                                         {postfx::CloudQuality::High, "high"},
-                                         {postfx::CloudQuality::Ultra, "ultra"}};
+constexpr QualityName kQualityNames[] = {
+    {postfx::CloudQuality::Custom, "custom"}, {postfx::CloudQuality::Low, "low"},
+    {postfx::CloudQuality::Medium, "medium"}, {postfx::CloudQuality::High, "high"},
+    {postfx::CloudQuality::Ultra, "ultra"},   {postfx::CloudQuality::Auto, "auto"}};
 
 postfx::CloudQuality readQuality(const json& j, const std::string& path) {
     if (j.is_string())
         for (const QualityName& q : kQualityNames)
             if (j.get<std::string>() == q.name) return q.quality;
-    fail(path, "expected \"custom\", \"low\", \"medium\", \"high\" or \"ultra\"" + got(j));
+    fail(path, "expected \"custom\", \"low\", \"medium\", \"high\", \"ultra\" or \"auto\"" + got(j));
 }
 
 const char* qualityName(postfx::CloudQuality quality) {
@@ -122,6 +122,7 @@ postfx::CloudSettings readClouds(const json& j, const std::string& path) {
     readOptional(j, path, "wind", s.wind);
     readOptional(j, path, "jitter", s.jitter);
     if (const json* v = find(j, "quality")) s.quality = readQuality(*v, child(path, "quality"));
+    readOptional(j, path, "auto_budget_ms", s.autoBudgetMs);
     readOptional(j, path, "resolution_scale", s.resolutionScale);
     if (const json* v = find(j, "temporal"))
         medium_json::readTemporal(*v, child(path, "temporal"), s.temporal);
@@ -176,6 +177,7 @@ json cloudsToJson(const postfx::CloudSettings& s) {
                 {"wind", vec3(glm::vec3(s.wind))},
                 {"jitter", s.jitter},
                 {"quality", qualityName(s.quality)},
+                {"auto_budget_ms", number(s.autoBudgetMs)},
                 {"resolution_scale", number(s.resolutionScale)},
                 {"temporal", medium_json::temporalToJson(s.temporal)},
                 {"cast_shadows", s.castShadows},

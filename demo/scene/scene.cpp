@@ -138,8 +138,9 @@ private:
 
 // ---- scene -----------------------------------------------------------------------------------------
 
-constexpr const char* kTopKeys[] = {"camera",  "sun",        "ambient",         "sky", "objects", "lights",
-                                    "effects", "frame_time", "camera_cut_frame"};
+constexpr const char* kTopKeys[] = {"camera",           "sun",      "ambient", "sky",
+                                    "objects",          "lights",   "effects", "frame_time",
+                                    "camera_cut_frame", "budget_ms"};
 constexpr const char* kCameraKeys[] = {"position", "look_at", "up",       "fov_y_deg", "near",
                                        "far",      "ev100",   "velocity", "yaw_rate"};
 constexpr const char* kSunKeys[] = {"direction", "illuminance", "shadows"};
@@ -162,6 +163,7 @@ constexpr Interval kLight{0.0, limits::kMaxLight, "[0, 1e7]"};
 constexpr Interval kVelocity{-limits::kMaxSpeed, limits::kMaxSpeed, "[-1e4, 1e4]"};
 constexpr Interval kYawRate{-limits::kMaxYawRateDeg, limits::kMaxYawRateDeg, "[-36000, 36000]"};
 constexpr Interval kFrameTime{0.0, limits::kMaxFrameTime, "(0, 1]", true};
+constexpr Interval kBudgetMs{0.0, 1000.0, "[0, 1000]"};
 
 Camera readCamera(const json& j, const std::string& path) {
     expectObject(j, path);
@@ -270,6 +272,7 @@ Scene readScene(const json& root) {
     if (const json* lights = find(root, "lights")) scene.lights = readLights(*lights, "lights");
     if (const json* effects = find(root, "effects")) readEffects(*effects, "effects", scene);
     if (const json* t = find(root, "frame_time")) scene.frameTime = readDouble(*t, "frame_time", kFrameTime);
+    if (const json* b = find(root, "budget_ms")) scene.budgetMs = readNumber(*b, "budget_ms", kBudgetMs);
     if (const json* c = find(root, "camera_cut_frame"))
         scene.cameraCutFrame = readUint32(*c, "camera_cut_frame");
     return scene;
@@ -375,6 +378,7 @@ nlohmann::json sceneToJson(const Scene& scene) {
     j["effects"] = effectsToJson(scene);
     j["frame_time"] = doubleNumber(scene.frameTime);
     if (scene.cameraCutFrame) j["camera_cut_frame"] = *scene.cameraCutFrame;
+    j["budget_ms"] = number(scene.budgetMs);
     return j;
 }
 

@@ -111,6 +111,9 @@ struct Scene {
     // `frame_time`: frame n is at time n · frameTime [s], for the motion of the camera and lights and for
     // postfx (FrameInfo::timeSeconds); (0, 1]. Kept in double, so that the default is exactly 1/60 s.
     double frameTime = kDefaultFrameTime;
+    // `budget_ms`: one GPU time budget for all of postfx's work [ms] (FrameInfo::budgetMs: the effects
+    // whose quality is "auto" share it); [0, 1000], 0 (the default): off.
+    float budgetMs = 0.0f;
     // `camera_cut_frame`: the renderer sets FrameInfo::cameraCut on this frame (postfx drops its temporal
     // history); none when absent.
     std::optional<uint32_t> cameraCutFrame;

@@ -49,7 +49,7 @@ constexpr float kBoxSliderMax = 1e5f;                                // box cent
 constexpr float kTilingSliderMin = 100.0f, kTilingSliderMax = 1e5f;  // [m]
 
 // The scene files' names of the quality presets, in enum order.
-constexpr std::array<const char*, 5> kQualityNames{"custom", "low", "medium", "high", "ultra"};
+constexpr std::array<const char*, 6> kQualityNames{"custom", "low", "medium", "high", "ultra", "auto"};
 constexpr int kQualityCount = int(kQualityNames.size());
 
 // The noise textures' sizes postfx accepts (powers of two).
@@ -96,7 +96,13 @@ bool buildQuality(postfx::CloudSettings& s) {
         s.quality = postfx::CloudQuality(std::clamp(quality, 0, kQualityCount - 1));
         changed = true;
     }
-    tooltip("a preset sets steps, light steps, resolution scale and temporal; custom: as set below");
+    tooltip(
+        "a preset sets steps, light steps, resolution scale and temporal; custom: as set below; auto "
+        "measures the presets on this GPU and uses the most accurate within the budget (or the frame's)");
+    if (s.quality == postfx::CloudQuality::Auto) {
+        changed |= ImGui::SliderFloat("auto budget [ms]", &s.autoBudgetMs, 0.05f, 50.0f, "%.3g", kLog);
+        tooltip("GPU time the clouds' passes may take per frame (without the frame budget)");
+    }
     const bool custom = s.quality == postfx::CloudQuality::Custom;
     postfx::CloudSettings preset = postfx::applyCloudQuality(s, s.quality);
     postfx::CloudSettings& k = custom ? s : preset;  // what the knobs show and edit
@@ -243,7 +249,9 @@ bool buildNoise(postfx::CloudNoiseSettings& n) {
 CloudsControls::CloudsControls(const Scene& sceneFile) : fileClouds_(sceneFile.clouds) {}
 
 void CloudsControls::sanitize(postfx::CloudSettings& s) {
-    if (uint32_t(s.quality) > uint32_t(postfx::CloudQuality::Ultra)) s.quality = postfx::CloudQuality::Custom;
+    if (uint32_t(s.quality) > uint32_t(postfx::CloudQuality::Auto)) s.quality = postfx::CloudQuality::Custom;
+    if (!(s.autoBudgetMs > 0.0f)) s.autoBudgetMs = 0.05f;  // also NaN
+    s.autoBudgetMs = std::min(s.autoBudgetMs, 1e6f);
     if (s.shape != postfx::CloudShape::Box) s.shape = postfx::CloudShape::Layer;
     s.bottomHeight = clampOrLow(s.bottomHeight, 0.0f, kMaxHeight - 1.0f);
     s.topHeight = clampOrLow(s.topHeight, 0.0f, kMaxHeight);

@@ -229,8 +229,8 @@ void UiOverlay::build(const OverlayStats& s, const std::function<void()>& sectio
             ImGui::Text("  %-24s %7.3f ms", "total", total);
             lines += s.passTimings.size() + 1;
         }
-        if (!s.fogQuality.empty()) {
-            ImGui::Text("fog quality: %s", s.fogQuality.c_str());
+        for (const std::string& line : s.quality) {
+            ImGui::TextUnformatted(line.c_str());
             ++lines;
         }
         // Keep the block as tall as it has been, so that the widgets below do not move under the mouse

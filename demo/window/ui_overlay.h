@@ -29,9 +29,9 @@ struct OverlayStats {
     uint64_t timingsFrame = 0;  // the frame `passTimings` belongs to
     bool timingsValid = false;  // false until a frame's timings were read
     std::vector<postfx::PassTiming> passTimings;
-    // The fog's quality as recorded: "custom", "medium", "auto: high", "auto: measuring the presets";
-    // empty when the fog is off.
-    std::string fogQuality;
+    // The effects' quality as recorded, a line each ("fog quality: auto: high", "clouds quality: medium"),
+    // then the frame budget's choice (budgetChoiceLines); empty when no effect with presets is on.
+    std::vector<std::string> quality;
 };
 
 class UiOverlay {

@@ -5,6 +5,7 @@
 #include "host/vulkan_host.h"
 #include "scene/motion.h"
 #include "window/atmosphere_controls.h"
+#include "window/budget_controls.h"
 #include "window/clouds_controls.h"
 #include "window/fly_camera.h"
 #include "window/fog_controls.h"
@@ -70,7 +71,8 @@ private:
     const Scene& frameScene();
     // R: the view back to the scene file's camera, told to postfx as a camera cut.
     void resetView();
-    std::string fogQualityText() const;  // OverlayStats::fogQuality
+    std::string fogQualityText() const;     // OverlayStats::quality's fog line
+    std::string cloudsQualityText() const;  // its clouds line
     void hold();
 
     static void onFramebufferSize(GLFWwindow* window, int, int) {
@@ -94,6 +96,7 @@ private:
     LightControls lightControls_;            // edits scene_.lights
     AtmosphereControls atmosphereControls_;  // edits scene_.atmosphere, scene_.sun.direction, the camera's y
     CloudsControls cloudsControls_;          // edits scene_.clouds
+    BudgetControls budgetControls_;          // edits scene_.budgetMs and the effects' quality
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers_{};
     std::array<VkFence, kFramesInFlight> fences_{};              // signalled when the slot's frame completed
     std::array<VkSemaphore, kFramesInFlight> imageAvailable_{};  // acquire -> the slot's submission
@@ -251,6 +254,18 @@ std::string App::fogQualityText() const {
     return name + ": " + fogQualityName(chosen);
 }
 
+std::string App::cloudsQualityText() const {
+    if (!scene_.clouds.enabled) return "";
+    constexpr const char* kNames[] = {"custom", "low", "medium", "high", "ultra", "auto"};
+    const uint32_t q = std::min<uint32_t>(uint32_t(scene_.clouds.quality), 5u);
+    const std::string name = kNames[q];
+    if (scene_.clouds.quality != postfx::CloudQuality::Auto) return name;
+    uint32_t chosen = 0;
+    if (!renderer_->postfxContext().autoQuality("clouds", chosen).ok())
+        return name + ": measuring the presets";
+    return name + ": " + kNames[std::min(chosen + 1u, 4u)];
+}
+
 void App::recordCommands(VkCommandBuffer cmd, uint32_t imageIndex) {
     // Renderer::recordFrame has already been recorded: HDR radiance after postfx, GENERAL.
     tonemap_.record(cmd, scene_.camera.ev100, swapchain_.srgb && swapchain_.bgr);
@@ -318,12 +333,19 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         stats_.yawDeg = camera_.yawDeg();
         stats_.pitchDeg = camera_.pitchDeg();
         stats_.renderExtent = renderExtent_;
-        stats_.fogQuality = fogQualityText();
+        stats_.quality.clear();
+        if (const std::string fog = fogQualityText(); !fog.empty())
+            stats_.quality.push_back("fog quality: " + fog);
+        if (const std::string clouds = cloudsQualityText(); !clouds.empty())
+            stats_.quality.push_back("clouds quality: " + clouds);
+        for (const std::string& line : budgetChoiceLines(scene_, renderer_->postfxContext()))
+            stats_.quality.push_back(line);
         // The controls edit scene_ before this frame records it (Renderer::recordFrame takes both fogs, the
         // fog volumes, the atmosphere, the clouds, lights, sun and camera from scene_ every frame); their
         // values are always valid for postfx, and at most one of the two fogs is on.
         ui_->build(stats_, [this] {
             // In the effects' composite order: the atmosphere (the farthest) first.
+            budgetControls_.build(scene_, renderer_->postfxContext());
             atmosphereControls_.build(scene_);
             cloudsControls_.build(scene_);
             fogControls_.build(scene_);

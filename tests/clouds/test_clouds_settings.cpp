@@ -31,6 +31,9 @@ TEST(CloudsSettings, BadValuesNameTheirKey) {
     const float inf = std::numeric_limits<float>::infinity();
     const std::vector<BadCase> cases = {
         {"clouds.shape", [](CloudSettings& s) { s.shape = postfx::CloudShape(7); }},
+        {"clouds.quality", [](CloudSettings& s) { s.quality = postfx::CloudQuality(6); }},
+        {"clouds.auto_budget_ms", [](CloudSettings& s) { s.autoBudgetMs = 0.0f; }},
+        {"clouds.auto_budget_ms", [&](CloudSettings& s) { s.autoBudgetMs = inf; }},
         {"clouds.bottom_height", [](CloudSettings& s) { s.bottomHeight = -1.0f; }},
         {"clouds.bottom_height", [&](CloudSettings& s) { s.bottomHeight = nan; }},
         {"clouds.top_height", [](CloudSettings& s) { s.topHeight = 1000.0f; }},

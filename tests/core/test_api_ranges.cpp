@@ -159,6 +159,9 @@ void frameRows(std::vector<Row>& bad, std::vector<Row>& good) {
     addRange<double>(
         bad, good, "FrameInfo.timeSeconds", [](FrameInfo& f) -> double& { return f.timeSeconds; },
         -postfx::core::kMaxTimeSeconds, postfx::core::kMaxTimeSeconds);
+    addRange<float>(
+        bad, good, "FrameInfo.budgetMs", [](FrameInfo& f) -> float& { return f.budgetMs; }, 0.0f,
+        postfx::core::kMaxBudgetMs);
     for (int c = 0; c < 3; ++c)
         addRange<double>(
             bad, good, "FrameInfo.camera.position",

@@ -407,7 +407,8 @@ std::vector<Rejection> rejections() {
     addText("RootNumber", "42", "(root): expected a JSON object, got 42");
     addText("RootNull", "null", "(root): expected a JSON object, got null");
     add("UnknownTopLevelKey", with("/fog", json::object()), "fog: unknown key",
-        "(expected camera, sun, ambient, sky, objects, lights, effects, frame_time or camera_cut_frame)");
+        "(expected camera, sun, ambient, sky, objects, lights, effects, frame_time, camera_cut_frame or "
+        "budget_ms)");
     add("UnknownTopLevelKeyNotIdentifier", with("/my key\n", 1), R"(["my key\n"]: unknown key)");
 
     // missing keys

@@ -35,6 +35,11 @@ enum class CloudQuality : uint32_t {
     Medium,
     High,
     Ultra,
+    // The context measures Low..Ultra on the running device (the first twelve frames of every new color
+    // extent: the presets in turn, three frames each, median), then uses the highest preset whose clouds
+    // passes take at most autoBudgetMs, or Low if none fits (Context::autoQuality("clouds", preset)).
+    // With FrameInfo::budgetMs set, the frame's one budget chooses instead. Without GPU timings: Medium.
+    Auto,
 };
 
 // The box of CloudShape::Box.
@@ -107,6 +112,9 @@ struct CloudSettings {
     bool enabled = false;
     // Custom uses steps, light_steps, resolution_scale and temporal.enabled below; a preset replaces them.
     CloudQuality quality = CloudQuality::Custom;
+    // Auto only: GPU time budget for the clouds' passes (excluding noise generation) [ms]; > 0 and finite
+    // (checked whatever the quality). Not used when FrameInfo::budgetMs is set.
+    float autoBudgetMs = 0.5f;
     CloudShape shape = CloudShape::Layer;
     // The layer's bottom and top above the ground (y = 0) [m]: bottom in [0, 1e6], top in (bottom, 1e6].
     float bottomHeight = 1500.0f;
@@ -157,6 +165,12 @@ struct CloudSettings {
     CloudShadowMapSettings shadowMap;
     CloudNoiseSettings noise;
 };
+
+// Quality Auto's feature bits for the clouds (AutoQualityTimings::features): what changes their presets'
+// cost.
+inline constexpr uint32_t kCloudAutoFeatureAtmosphere = 1;  // FrameInfo::atmosphere.enabled
+inline constexpr uint32_t kCloudAutoFeatureShadows = 2;     // clouds.castShadows
+inline constexpr uint32_t kCloudAutoFeatureNoise = 4;       // clouds.noise.enabled
 
 // `settings` with `quality`'s steps, light_steps, resolution_scale and temporal.enabled (Custom: unchanged).
 POSTFX_API CloudSettings applyCloudQuality(const CloudSettings& settings, CloudQuality quality);

@@ -91,6 +91,14 @@ struct FrameInfo {
     const LocalLight* lights = nullptr;  // lightCount local lights (may be null when 0); read during record()
     uint32_t lightCount = 0;             // [0, kMaxLocalLights]
 
+    // One GPU time budget for all of postfx's work in this frame [ms]; in [0, 1000], 0: off (each effect
+    // whose quality is Auto keeps its own autoBudgetMs). When > 0, the effects whose quality is Auto share
+    // it: from the budget less the measured time of the rest of postfx's work (the other effects, its own
+    // passes; the last finished frame's), the context picks one preset per such effect, the combination
+    // with the lowest summed error on the effects' committed accuracy–cost fronts, re-chosen every frame
+    // from the measured times (docs/architecture.md, "One budget for the frame"; Context::budgetChoice).
+    float budgetMs = 0.0f;
+
     // Effect settings. Each effect is off by default; the order they composite in is fixed
     // (docs/architecture.md, "Composite order").
     // Sky and atmosphere (docs/effects/atmosphere.md): with it on, sun.illuminance is the illuminance
@@ -116,6 +124,27 @@ struct AutoQualityTimings {
     uint32_t features = 0;           // bits the effect defines (fog: kFogAutoFeature*)
     std::vector<float> presetMs;     // one per preset, lowest preset first [ms]; each finite, >= 0
     TimingsOrigin origin;            // postfx version, device and driver they were measured with
+};
+
+// What one budget for the frame (FrameInfo::budgetMs) chose for the last recorded frame
+// (Context::budgetChoice; docs/architecture.md, "One budget for the frame").
+struct BudgetChoice {
+    struct EffectChoice {
+        std::string effect;   // "fog", "clouds": an active effect whose quality is Auto
+        uint32_t preset = 0;  // 0 = the lowest (Low)
+        float ms = 0.0f;      // the preset's measured GPU time on this device (median) [ms]
+        double error = 0.0;   // its error on the effect's committed accuracy–cost front (relative RMSE)
+    };
+    float budgetMs = 0.0f;  // FrameInfo::budgetMs [ms]
+    // The rest of postfx's work (effects not on Auto, the context's own passes), measured in the newest
+    // finished frame before it [ms].
+    float otherMs = 0.0f;
+    float chosenMs = 0.0f;  // Σ effects[i].ms [ms]
+    double error = 0.0;     // Σ effects[i].error
+    // otherMs + chosenMs <= budgetMs. False: not even the lowest presets fit, and each effect runs its
+    // fastest.
+    bool fits = false;
+    std::vector<EffectChoice> effects;  // in composite order
 };
 
 class POSTFX_API Context {
@@ -156,6 +185,10 @@ public:
     // key's presets are being measured or no Auto frame was recorded; InvalidArgument for an unknown
     // effect or one without presets.
     Status autoQuality(std::string_view effect, uint32_t& preset) const;
+    // What FrameInfo::budgetMs chose for the last recorded frame. NotReady when that frame had no budget
+    // or its effects' presets are still being measured (the first frames of a new color extent or
+    // feature set; then the measured effects run their fallback preset, Medium).
+    Status budgetChoice(BudgetChoice& out) const;
     // Every key measured so far (all presets) or given, for a host that keeps them between runs; each
     // carries its origin (postfx version, device, driver), since the presets' cost depends on all three.
     std::vector<AutoQualityTimings> autoQualityTimings() const;

@@ -241,10 +241,24 @@ bool CloudsEffect::active(const FrameInfo& frame) const {
     return s.enabled && s.coverage > 0.0f && s.density > 0.0f;
 }
 
+std::vector<double> CloudsEffect::presetErrors() const {
+    std::vector<double> out;
+    for (const QualityPreset& p : kQualityPresets)
+        out.push_back(p.error);
+    return out;
+}
+
+uint32_t CloudsEffect::autoFeatures(const FrameInfo& frame) const {
+    return (frame.atmosphere.enabled ? kCloudAutoFeatureAtmosphere : 0u) |
+           (frame.clouds.castShadows ? kCloudAutoFeatureShadows : 0u) |
+           (frame.clouds.noise.enabled ? kCloudAutoFeatureNoise : 0u);
+}
+
 core::QualityRequest CloudsEffect::quality(const FrameInfo& frame) const {
     const CloudQuality q = frame.clouds.quality;
     // Custom, or a value cast from another int (left for validateSettings to reject naming clouds.quality).
-    if (q == CloudQuality::Custom || uint32_t(q) > uint32_t(CloudQuality::Ultra)) return {};
+    if (q == CloudQuality::Custom || uint32_t(q) > uint32_t(CloudQuality::Auto)) return {};
+    if (q == CloudQuality::Auto) return {core::QualityRequest::Kind::Auto, 0, frame.clouds.autoBudgetMs};
     return {core::QualityRequest::Kind::Preset, uint32_t(q) - uint32_t(CloudQuality::Low), 0.0f};
 }
 

@@ -60,6 +60,8 @@ public:
     core::QualityRequest quality(const FrameInfo& frame) const override;
     void applyPreset(FrameInfo& frame, uint32_t preset) const override;
     uint32_t fallbackPreset() const override { return 1; }  // Medium
+    std::vector<double> presetErrors() const override;
+    uint32_t autoFeatures(const FrameInfo& frame) const override;
 
     Status declare(core::FrameBuilder& builder) const override;
     void recorded(const FrameInfo& frame, bool active) override;

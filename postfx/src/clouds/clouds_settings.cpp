@@ -110,7 +110,10 @@ Status validateMultipleScattering(const CloudMultipleScattering& m) {
 }  // namespace
 
 Status validateSettings(const CloudSettings& s) {
-    if (uint32_t(s.quality) > uint32_t(CloudQuality::Ultra))
+    if (!std::isfinite(s.autoBudgetMs)) return bad("auto_budget_ms", "is not finite");
+    if (s.autoBudgetMs <= 0.0f)
+        return bad("auto_budget_ms", core::numberText(s.autoBudgetMs) + " must be > 0");
+    if (uint32_t(s.quality) > uint32_t(CloudQuality::Auto))
         return bad("quality", std::to_string(uint32_t(s.quality)) + " is not a CloudQuality");
     if (uint32_t(s.shape) > uint32_t(CloudShape::Box))
         return bad("shape", std::to_string(uint32_t(s.shape)) + " is not a CloudShape");

@@ -1,5 +1,7 @@
 #include "core/auto_quality.h"
 
+#include "core/budget.h"
+
 #include <algorithm>
 #include <cstdint>
 
@@ -67,21 +69,7 @@ Status AutoQuality::select(const AutoQualityKey& key, float budgetMs, const Pass
     const Entry& e = entry(key);
     if (!e.measured()) {
         last.reset();
-        // The preset with the fewest times, counting frames still waiting for theirs (ties: the lower
-        // preset), so the presets take turns; once every missing time is waited for, the one with the
-        // fewest times again.
-        size_t next = 0, fewest = SIZE_MAX;
-        for (size_t i = 0; i < e.presets; ++i) {
-            const size_t waiting =
-                size_t(std::count_if(pending_.begin(), pending_.end(),
-                                     [&](const Pending& p) { return p.key == key && p.preset == i; }));
-            const size_t count = e.count[i] + waiting;
-            if (e.count[i] < kSamples && count < kSamples && count < fewest) next = i, fewest = count;
-        }
-        if (fewest == SIZE_MAX)
-            for (size_t i = 0; i < e.presets; ++i)
-                if (e.count[i] < kSamples && e.count[i] < fewest) next = i, fewest = e.count[i];
-        preset = uint32_t(next);
+        preset = nextToMeasure(e);
         return Status::success();
     }
     uint32_t choice = 0;
@@ -89,6 +77,107 @@ Status AutoQuality::select(const AutoQualityKey& key, float budgetMs, const Pass
         if (e.medianMs(i) <= double(budgetMs)) choice = uint32_t(i);
     last = choice;
     preset = choice;
+    return Status::success();
+}
+
+uint32_t AutoQuality::nextToMeasure(const Entry& e) const {
+    // The preset with the fewest times, counting frames still waiting for theirs (ties: the lower
+    // preset), so the presets take turns; once every missing time is waited for, the one with the
+    // fewest times again.
+    size_t next = 0, fewest = SIZE_MAX;
+    for (size_t i = 0; i < e.presets; ++i) {
+        const size_t waiting = size_t(std::count_if(pending_.begin(), pending_.end(), [&](const Pending& p) {
+            return p.key == e.key && p.preset == i;
+        }));
+        const size_t count = e.count[i] + waiting;
+        if (e.count[i] < kSamples && count < kSamples && count < fewest) next = i, fewest = count;
+    }
+    if (fewest == SIZE_MAX)
+        for (size_t i = 0; i < e.presets; ++i)
+            if (e.count[i] < kSamples && e.count[i] < fewest) next = i, fewest = e.count[i];
+    return uint32_t(next);
+}
+
+Status AutoQuality::selectJoint(const std::vector<JointRequest>& requests, const std::vector<int>& others,
+                                double budgetMs, uint64_t frameIndex, uint32_t framesInFlight,
+                                const PassTimer& timer, std::vector<uint32_t>& presets) {
+    presets.assign(requests.size(), 0);
+    joint_.reset();
+    if (!timer.enabled()) {
+        for (size_t r = 0; r < requests.size(); ++r) {
+            const int effect = requests[r].key.effect;
+            last_[size_t(effect)] = fallback_[size_t(effect)];
+            presets[r] = fallback_[size_t(effect)];
+        }
+        return Status::success();
+    }
+    if (Status s = collect(timer); !s) return s;
+
+    // The rest of postfx's work, from the newest finished frame before this one.
+    std::vector<PassTimer::TaggedTiming> timings;
+    for (uint64_t back = 1; back <= framesInFlight && back <= frameIndex; ++back) {
+        const Status s = timer.readTagged(frameIndex - back, timings);
+        if (s.code == Result::VulkanError || s.code == Result::OutOfMemory) return s;
+        if (!s.ok()) continue;
+        double other = 0.0;
+        for (const PassTimer::TaggedTiming& t : timings) {
+            const bool counted =
+                t.effect < 0 || std::find(others.begin(), others.end(), t.effect) != others.end();
+            if (t.autoTimed && counted) other += t.milliseconds;
+        }
+        otherMs_ = other;
+        break;
+    }
+
+    bool measured = true;
+    for (size_t r = 0; r < requests.size(); ++r) {
+        const Entry& e = entry(requests[r].key);
+        const int effect = requests[r].key.effect;
+        last_[size_t(effect)].reset();
+        if (e.measured()) {
+            presets[r] = fallback_[size_t(effect)];
+        } else {
+            measured = false;
+            presets[r] = nextToMeasure(e);
+        }
+    }
+    if (!measured) return Status::success();
+
+    std::vector<PresetFront> fronts(requests.size());
+    for (size_t r = 0; r < requests.size(); ++r) {
+        const Entry& e = entry(requests[r].key);
+        for (size_t i = 0; i < e.presets && i < requests[r].errors.size(); ++i) {
+            fronts[r].ms.push_back(e.medianMs(i));
+            fronts[r].error.push_back(requests[r].errors[i]);
+        }
+    }
+    const BudgetSolution solution = chooseWithinBudget(fronts, budgetMs - otherMs_);
+    JointChoice choice;
+    choice.budgetMs = budgetMs;
+    choice.otherMs = otherMs_;
+    choice.chosenMs = solution.ms;
+    choice.error = solution.error;
+    choice.fits = solution.fits;
+    for (size_t r = 0; r < requests.size(); ++r) {
+        const uint32_t p = solution.presets[r];
+        const int effect = requests[r].key.effect;
+        presets[r] = p;
+        last_[size_t(effect)] = p;
+        choice.effects.push_back(effect);
+        choice.presets.push_back(p);
+        choice.ms.push_back(fronts[r].ms.empty() ? 0.0 : fronts[r].ms[p]);
+        choice.errors.push_back(fronts[r].error.empty() ? 0.0 : fronts[r].error[p]);
+    }
+    joint_ = std::move(choice);
+    return Status::success();
+}
+
+Status AutoQuality::jointChoice(JointChoice& out) const {
+    if (!joint_)
+        return {Result::NotReady,
+                "budget: no choice for the last recorded frame (FrameInfo::budgetMs 0, no effect on quality "
+                "Auto, or their presets are being measured)"};
+    out = *joint_;
     return Status::success();
 }
 

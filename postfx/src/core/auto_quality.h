@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace postfx::core {
@@ -41,6 +42,32 @@ public:
     // choose now. Fails only when reading the timings failed (VK_ERROR_DEVICE_LOST, out of memory);
     // the frames read are then read again next time.
     Status select(const AutoQualityKey& key, float budgetMs, const PassTimer& timer, uint32_t& preset);
+    // One budget for several effects (FrameInfo::budgetMs): each request is an effect on Auto with its
+    // presets' errors. While a request's presets are not all measured, each unmeasured one measures (as
+    // select) and the others use their fallback; then the presets of chooseWithinBudget (core/budget.h)
+    // over the measured times and the errors, within `budgetMs` less the other work's time: the
+    // autoTimed passes of the effects in `others` (this frame's other active effects) and the context's
+    // own, in the newest finished of the frames before `frameIndex` (the last value read when none is
+    // readable). `presets` gets one per request. Fails only as select does.
+    struct JointRequest {
+        AutoQualityKey key;
+        std::vector<double> errors;  // per preset, lowest first
+    };
+    struct JointChoice {
+        std::vector<int> effects;  // the requests' effects
+        std::vector<uint32_t> presets;
+        std::vector<double> ms, errors;  // each chosen preset's median time and error
+        double budgetMs = 0.0, otherMs = 0.0, chosenMs = 0.0, error = 0.0;
+        bool fits = false;
+    };
+    Status selectJoint(const std::vector<JointRequest>& requests, const std::vector<int>& others,
+                       double budgetMs, uint64_t frameIndex, uint32_t framesInFlight, const PassTimer& timer,
+                       std::vector<uint32_t>& presets);
+    // The last selectJoint's choice; NotReady while it measured, or when the last frame had no budget.
+    Status jointChoice(JointChoice& out) const;
+    // A frame chose each Auto effect on its own (no budget): jointChoice has nothing.
+    void clearJoint() { joint_.reset(); }
+
     // After `frameIndex` was recorded with `preset` (as select returned): measure it if still needed.
     void recorded(uint64_t frameIndex, const AutoQualityKey& key, uint32_t preset);
     // The choice for effect `effect`'s key of its last select(); NotReady while its presets are measured.
@@ -66,12 +93,16 @@ private:
         uint32_t preset;
     };
     Entry& entry(const AutoQualityKey& key);
+    // The preset of an unmeasured entry to measure next (the presets take turns).
+    uint32_t nextToMeasure(const Entry& e) const;
     Status collect(const PassTimer& timer);
 
     std::vector<uint32_t> presetCount_, fallback_;
     std::vector<Entry> cache_;
     std::vector<Pending> pending_;
     std::vector<std::optional<uint32_t>> last_;  // per effect: choice for its last select()'s key
+    std::optional<JointChoice> joint_;           // the last selectJoint's choice
+    double otherMs_ = 0.0;                       // the other work's time, last read
 };
 
 }  // namespace postfx::core

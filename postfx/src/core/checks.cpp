@@ -264,6 +264,9 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
                            " differs from FrameInfo.color.extent " + extentText(frame.color.extent));
     }
     if (Status s = checkTime(frame.timeSeconds, "FrameInfo.timeSeconds"); !s) return s;
+    if (!(frame.budgetMs >= 0.0f && frame.budgetMs <= kMaxBudgetMs))
+        return invalid("FrameInfo.budgetMs: " + numberText(frame.budgetMs) + " is outside [0, " +
+                       numberText(kMaxBudgetMs) + "]");
     if (Status s = checkCamera(frame.camera, "FrameInfo.camera"); !s) return s;
     if (Status s = checkLighting(frame.sun, frame.ambient, "FrameInfo."); !s) return s;
     const ShadowMapInput& shadow = frame.shadowMap;

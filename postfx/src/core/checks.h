@@ -45,6 +45,8 @@ bool finiteAsFloat(const glm::mat<C, R, double, Q>& m) {
 inline constexpr double kMaxWorldCoordinate = 1e9;
 // Bound of FrameInfo::timeSeconds [s]: wind · time stays finite and the noise coordinate keeps its precision.
 inline constexpr double kMaxTimeSeconds = 1e12;
+// FrameInfo::budgetMs [ms].
+inline constexpr float kMaxBudgetMs = 1000.0f;
 
 // "1920x1080"
 std::string extentText(VkExtent2D extent);

@@ -165,20 +165,48 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
     // preset (reading finished frames' timings, so before the timer starts this frame).
     resolved = frame;
     if (measuring) measuring->assign(effects.size(), AutoUse{});
+    // With one budget for the frame, the effects on Auto are chosen together (core/budget.h).
+    const bool budget = frame.budgetMs > 0.0f;
+    std::vector<core::AutoQuality::JointRequest> joint;
+    std::vector<size_t> jointEffects;
+    std::vector<int> others;  // the active effects not on Auto: the rest of the budget's work
     for (size_t e = 0; e < effects.size(); ++e) {
         const core::Effect& effect = *effects[e];
-        if (effect.presetCount() == 0 || !effect.active(frame)) continue;
+        if (!effect.active(frame)) continue;
+        const bool onAuto =
+            effect.presetCount() > 0 && effect.quality(frame).kind == core::QualityRequest::Kind::Auto;
+        if (!budget || !onAuto) others.push_back(int(e));
+        if (effect.presetCount() == 0) continue;
         const core::QualityRequest q = effect.quality(frame);
         if (q.kind == core::QualityRequest::Kind::Custom) continue;
         uint32_t preset = q.preset;
         if (q.kind == core::QualityRequest::Kind::Auto) {
             const core::AutoQualityKey key{int(e), frame.color.extent.width, frame.color.extent.height,
                                            effect.autoFeatures(frame)};
+            if (budget) {
+                joint.push_back({key, effect.presetErrors()});
+                jointEffects.push_back(e);
+                continue;
+            }
             if (Status s = autoQuality.select(key, q.budgetMs, timer, preset); !s)
                 return {s.code, std::string(effect.name()) + " quality Auto: " + s.message};
             if (measuring) (*measuring)[e] = {key, preset};
         }
         effect.applyPreset(resolved, preset);
+    }
+    if (budget) {
+        std::vector<uint32_t> presets;
+        if (Status s = autoQuality.selectJoint(joint, others, double(frame.budgetMs), frame.frameIndex,
+                                               info.framesInFlight, timer, presets);
+            !s)
+            return {s.code, "FrameInfo.budgetMs: " + s.message};
+        for (size_t r = 0; r < joint.size(); ++r) {
+            const size_t e = jointEffects[r];
+            if (measuring) (*measuring)[e] = {joint[r].key, presets[r]};
+            effects[e]->applyPreset(resolved, presets[r]);
+        }
+    } else {
+        autoQuality.clearJoint();
     }
     for (const auto& effect : effects)
         if (Status s = effect->validate(resolved); !s) return s;
@@ -232,6 +260,21 @@ Status Context::record(const FrameInfo& frame) {
         if (m.preset != ~0u) impl.autoQuality.recorded(frame.frameIndex, m.key, m.preset);
     for (const auto& effect : impl.effects)
         effect->recorded(impl.resolved, effect->active(impl.resolved));
+    return Status::success();
+}
+
+Status Context::budgetChoice(BudgetChoice& out) const {
+    out = {};
+    core::AutoQuality::JointChoice c;
+    if (Status s = impl_->autoQuality.jointChoice(c); !s) return s;
+    out.budgetMs = float(c.budgetMs);
+    out.otherMs = float(c.otherMs);
+    out.chosenMs = float(c.chosenMs);
+    out.error = c.error;
+    out.fits = c.fits && c.otherMs + c.chosenMs <= c.budgetMs;
+    for (size_t i = 0; i < c.effects.size(); ++i)
+        out.effects.push_back(
+            {impl_->effects[size_t(c.effects[i])]->name(), c.presets[i], float(c.ms[i]), c.errors[i]});
     return Status::success();
 }
 

@@ -8,6 +8,7 @@
 #include <postfx/context.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace postfx::core {
 
@@ -41,6 +42,9 @@ public:
     virtual QualityRequest quality(const FrameInfo& /*frame*/) const { return {}; }
     // Sets the knobs preset `preset` sets in `frame`'s copy of the effect's settings.
     virtual void applyPreset(FrameInfo& /*frame*/, uint32_t /*preset*/) const {}
+    // Each preset's error on the effect's committed accuracy–cost front (relative RMSE against its double
+    // reference, a fraction), lowest first: what one budget for the frame (FrameInfo::budgetMs) weighs.
+    virtual std::vector<double> presetErrors() const { return {}; }
     // The preset Auto uses when the context has no GPU timings.
     virtual uint32_t fallbackPreset() const { return 0; }
     // Bits of `frame` besides the color extent that change the presets' cost; Auto measures each

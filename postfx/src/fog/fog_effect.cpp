@@ -121,6 +121,10 @@ void FogEffect::applyPreset(FrameInfo& frame, uint32_t preset) const {
     frame.fog.quality = q;
 }
 
+std::vector<double> FogEffect::presetErrors() const {
+    return qualityPresetErrors();
+}
+
 uint32_t FogEffect::autoFeatures(const FrameInfo& frame) const {
     return (frame.fog.noise.enabled ? kFogAutoFeatureNoise : 0u) |
            (frame.shadowMap.image.present() ? kFogAutoFeatureShadowMap : 0u);

@@ -7,6 +7,7 @@
 #include "fog/fog_shared.h"
 
 #include <string>
+#include <vector>
 
 namespace postfx::fog {
 
@@ -46,5 +47,8 @@ uint64_t mediumKey(const FogMedium& medium);
 
 // g clamped to [-kMaxAnisotropy, kMaxAnisotropy].
 float clampedAnisotropy(float g);
+
+// Each preset's error on the committed accuracy–cost front, Low first (QualityPreset::error).
+std::vector<double> qualityPresetErrors();
 
 }  // namespace postfx::fog
