@@ -8,6 +8,7 @@
 #include "atmosphere_run.h"
 #include "clouds_run.h"
 #include "conclusions.h"
+#include "frame_run.h"
 #include "froxel_run.h"
 #include "motion.h"
 #include "motion_report.h"
@@ -160,6 +161,16 @@ const char* kUsage =
     "  --clouds-converged-frames N  still frames before the still error of a temporal row [32; quick: 4]\n"
     "  --clouds-motion-frames N  panning frames before the motion error [32; quick: 4]\n"
     "                         quick also shrinks the shadow map to 64x64\n"
+    "\n"
+    "whole frame (--frame; docs/accuracy-cost/README.md, \"Whole frame (--frame)\"): the showcase scene\n"
+    "(atmosphere, clouds, froxel fog with shadows and lights) and the same with the ray-marched fog, per\n"
+    "preset and frame size: every postfx pass's GPU time, each effect's share, the error against the\n"
+    "demo's combined CPU reference. --warmup*, --frames, --reference-steps [512; quick: 64],\n"
+    "--error-stride [8 at 1920 wide, scaled with the width], --out [docs/accuracy-cost/frame], --quick\n"
+    "and --validation apply.\n"
+    "  --frame                this mode\n"
+    "  --frame-sizes LIST     frame sizes WxH [1920x1080,3840x2160; quick: 64x36]\n"
+    "  --frame-presets LIST   low, medium, high, ultra [all; quick: medium]\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device; --clouds:\n"
     "  POSTFX_BENCH_DUMP=DIR writes each row's GPU and reference images (the error's pixels) to DIR as PFM\n";
 
@@ -199,6 +210,10 @@ struct Args {
     std::vector<std::pair<std::string, std::vector<std::string>>> cloudsSweep;  // --clouds-sweep
     bool cloudsSweepNone = false;
     uint32_t cloudsLightSteps = 0, cloudsConvergedFrames = 0, cloudsMotionFrames = 0;  // 0: the default
+    // --frame
+    bool frame = false;
+    std::vector<std::pair<uint32_t, uint32_t>> frameSizes;  // empty: the default
+    std::vector<std::string> framePresets;                  // empty: the default
     bool quick = false;
     // In motion
     bool motion = true;
@@ -341,6 +356,24 @@ Args parseArgs(int argc, char** argv) {
             } else {
                 args.atmosphereSweep.emplace_back(text.substr(0, eq), cli::splitList(text.substr(eq + 1)));
             }
+        } else if (a == "--frame") {
+            args.frame = true;
+        } else if (a == "--frame-sizes") {
+            for (const std::string& item : cli::splitList(value())) {
+                unsigned w = 0, h = 0;
+                char x = 0;
+                if (std::sscanf(item.c_str(), "%u%c%u", &w, &x, &h) != 3 || x != 'x' || w == 0 || h == 0 ||
+                    w > 16384 || h > 16384)
+                    throw cli::UsageError{"--frame-sizes '" + item + "': expected WxH, each 1..16384"};
+                args.frameSizes.emplace_back(w, h);
+            }
+            if (args.frameSizes.empty()) throw cli::UsageError{"--frame-sizes is empty"};
+        } else if (a == "--frame-presets") {
+            args.framePresets = cli::splitList(value());
+            for (const std::string& p : args.framePresets)
+                if (p != "low" && p != "medium" && p != "high" && p != "ultra")
+                    throw cli::UsageError{"--frame-presets: '" + p + "' is not low, medium, high or ultra"};
+            if (args.framePresets.empty()) throw cli::UsageError{"--frame-presets is empty"};
         } else if (a == "--clouds") {
             args.clouds = true;
         } else if (a == "--clouds-views") {
@@ -455,8 +488,20 @@ Args parseArgs(int argc, char** argv) {
             throw cli::UsageError{"--froxel-target-scene '" + args.froxelTargetScene +
                                   "' is not in --scenes"};
     }
-    if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) > 1)
-        throw cli::UsageError{"--froxel, --atmosphere and --clouds: one mode at a time"};
+    if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) + int(args.frame) > 1)
+        throw cli::UsageError{"--froxel, --atmosphere, --clouds and --frame: one mode at a time"};
+    if (args.frame) {
+        if (!outGiven) args.out = "docs/accuracy-cost/frame";
+        if (!refGiven) args.referenceSteps = quick ? 64 : 512;
+        refGiven = true;
+        if (args.errorStride == 0) args.errorStride = quick ? 1 : 8;  // at 1920 wide, scaled with the width
+        if (args.frameSizes.empty())
+            args.frameSizes = quick ? std::vector<std::pair<uint32_t, uint32_t>>{{64, 36}}
+                                    : std::vector<std::pair<uint32_t, uint32_t>>{{1920, 1080}, {3840, 2160}};
+        if (args.framePresets.empty())
+            args.framePresets = quick ? std::vector<std::string>{"medium"}
+                                      : std::vector<std::string>{"low", "medium", "high", "ultra"};
+    }
     if (args.clouds) {
         if (!outGiven) args.out = "docs/accuracy-cost/clouds";
         if (!refGiven) args.referenceSteps = quick ? 64 : 512;
@@ -636,7 +681,21 @@ int runClouds(const Args& args, const std::string& command) {
     return bench::runClouds(a, command, utcNow());
 }
 
+int runFrame(const Args& args, const std::string& command) {
+    bench::FrameRunArgs a;
+    a.runner = args.runner;
+    a.sizes = args.frameSizes;
+    a.presets = args.framePresets;
+    a.sceneDir = args.sceneDir;
+    a.referenceSteps = args.referenceSteps;
+    a.errorStride = args.errorStride;
+    if (args.quick) a.shadowMapSize = 64;  // lavapipe: the default 512² map would take most of the time
+    a.out = args.out;
+    return bench::runFrame(a, command, utcNow());
+}
+
 int run(const Args& args, const std::string& command) {
+    if (args.frame) return runFrame(args, command);
     if (args.froxel) return runFroxel(args, command);
     if (args.clouds) return runClouds(args, command);
     if (args.atmosphere) return runAtmosphere(args, command);

@@ -233,6 +233,10 @@ void UiOverlay::build(const OverlayStats& s, const std::function<void()>& sectio
             ImGui::TextUnformatted(line.c_str());
             ++lines;
         }
+        for (const std::string& line : s.plan) {
+            ImGui::TextWrapped("%s", line.c_str());
+            ++lines;
+        }
         // Keep the block as tall as it has been, so that the widgets below do not move under the mouse
         // when passes come and go (e.g. the fog switched off from the panel).
         timingLines_ = std::max(timingLines_, lines);

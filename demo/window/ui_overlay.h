@@ -32,6 +32,9 @@ struct OverlayStats {
     // The effects' quality as recorded, a line each ("fog quality: auto: high", "clouds quality: medium"),
     // then the frame budget's choice (budgetChoiceLines); empty when no effect with presets is on.
     std::vector<std::string> quality;
+    // postfx's frame plan for the frame being recorded: passes, resources, which are cached (held and not
+    // rebuilt) and which are temporal histories.
+    std::vector<std::string> plan;
 };
 
 class UiOverlay {

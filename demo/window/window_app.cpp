@@ -73,6 +73,8 @@ private:
     void resetView();
     std::string fogQualityText() const;     // OverlayStats::quality's fog line
     std::string cloudsQualityText() const;  // its clouds line
+    // OverlayStats::plan: postfx's plan for the frame about to be recorded (docs/frame-plan.md).
+    std::vector<std::string> planLines();
     void hold();
 
     static void onFramebufferSize(GLFWwindow* window, int, int) {
@@ -266,6 +268,27 @@ std::string App::cloudsQualityText() const {
     return name + ": " + kNames[std::min(chosen + 1u, 4u)];
 }
 
+std::vector<std::string> App::planLines() {
+    postfx::FramePlan plan;
+    std::string error;
+    if (!renderer_->plan(frameScene(), frameIndex_, plan, error)) return {"plan: " + error};
+    char line[160];
+    std::snprintf(line, sizeof line, "plan: %zu passes, %zu resources held, %.1f MiB", plan.passes.size(),
+                  plan.resources.size(), double(plan.totalBytes()) / (1024.0 * 1024.0));
+    std::vector<std::string> lines{line};
+    // Held from earlier frames and not written by this one: LUTs and noise whose inputs did not change.
+    std::string cached, history;
+    for (const postfx::PlannedResource& r : plan.resources) {
+        if (r.history)
+            history += (history.empty() ? "" : ", ") + r.name;
+        else if (r.cached)
+            cached += (cached.empty() ? "" : ", ") + r.name;
+    }
+    lines.push_back("  cached: " + (cached.empty() ? std::string("none") : cached));
+    if (!history.empty()) lines.push_back("  history: " + history);
+    return lines;
+}
+
 void App::recordCommands(VkCommandBuffer cmd, uint32_t imageIndex) {
     // Renderer::recordFrame has already been recorded: HDR radiance after postfx, GENERAL.
     tonemap_.record(cmd, scene_.camera.ev100, swapchain_.srgb && swapchain_.bgr);
@@ -340,6 +363,7 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
             stats_.quality.push_back("clouds quality: " + clouds);
         for (const std::string& line : budgetChoiceLines(scene_, renderer_->postfxContext()))
             stats_.quality.push_back(line);
+        stats_.plan = planLines();
         // The controls edit scene_ before this frame records it (Renderer::recordFrame takes both fogs, the
         // fog volumes, the atmosphere, the clouds, lights, sun and camera from scene_ every frame); their
         // values are always valid for postfx, and at most one of the two fogs is on.

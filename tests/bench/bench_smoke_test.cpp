@@ -841,3 +841,58 @@ int main(int argc, char** argv) {
     gOut = argv[3];
     return RUN_ALL_TESTS();
 }
+
+// BenchFrameSmoke: `postfx-bench --frame --quick` (the showcase at 64×36, Medium, with the froxel fog and
+// with the ray-marched fog): a row each, every effect's passes timed, a finite error against the
+// combined reference, the report's target section.
+class BenchFrameSmoke : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        out_ = gOut + "/frame";
+        std::filesystem::remove_all(out_);
+        const std::string command = "'" + gBench + "' --frame --quick --validation --scene-dir '" +
+                                    gSceneDir + "' --out '" + out_ + "'";
+        std::printf("running: %s\n", command.c_str());
+        std::fflush(stdout);
+        status_ = std::system(command.c_str());
+    }
+    static int status_;
+    static std::string out_;
+};
+int BenchFrameSmoke::status_ = -1;
+std::string BenchFrameSmoke::out_;
+
+TEST_F(BenchFrameSmoke, CsvHasARowPerFogWithEveryEffectTimedAndAFiniteError) {
+    ASSERT_EQ(status_, 0) << "postfx-bench --frame failed (its output is above)";
+    std::vector<std::string> header;
+    std::vector<Row> rows;
+    bool sawDevice = false;
+    ASSERT_TRUE(readCsv(out_ + "/results.csv", header, rows, sawDevice)) << out_ << "/results.csv";
+    EXPECT_TRUE(sawDevice);
+    ASSERT_EQ(rows.size(), 2u);
+    EXPECT_EQ(rows[0].at("fog"), "froxel");
+    EXPECT_EQ(rows[1].at("fog"), "raymarched");
+    for (const Row& row : rows) {
+        const std::string what = row.at("fog");
+        EXPECT_EQ(row.at("width"), "64");
+        EXPECT_EQ(row.at("preset"), "medium");
+        EXPECT_EQ(row.at("non_finite"), "0") << what;
+        const double total = number(row.at("gpu_ms_median"));
+        EXPECT_GT(number(row.at("atmosphere_ms")), 0.0) << what;
+        EXPECT_GT(number(row.at("clouds_ms")), 0.0) << what;
+        EXPECT_GT(number(row.at(what == "froxel" ? "froxel_fog_ms" : "fog_ms")), 0.0) << what;
+        EXPECT_EQ(number(row.at(what == "froxel" ? "fog_ms" : "froxel_fog_ms")), 0.0) << what;
+        // The effects' shares are the frame's passes (the median of sums is not the sum of medians, but
+        // close on a still frame).
+        const double shares = number(row.at("atmosphere_ms")) + number(row.at("clouds_ms")) +
+                              number(row.at("fog_ms")) + number(row.at("froxel_fog_ms")) +
+                              number(row.at("postfx_ms"));
+        EXPECT_NEAR(shares, total, 0.25 * total) << what;
+        const double error = number(row.at("rel_rmse_16"));
+        EXPECT_TRUE(std::isfinite(error)) << what;
+        EXPECT_LT(error, 0.2) << what;
+    }
+    const std::string md = readFile(out_ + "/results.md");
+    for (const char* section : {"| device | ", "## Target", "| 64×36 | froxel | medium |"})
+        EXPECT_NE(md.find(section), std::string::npos) << section;
+}

@@ -40,6 +40,13 @@ protected:
         return passNames(last);
     }
 
+    // The plan's `cached` flag of `name` (false when not held).
+    bool cachedOf(const std::string& name) const {
+        for (const postfx::PlannedResource& r : last.resources)
+            if (r.name == name) return r.cached;
+        return false;
+    }
+
     uint64_t bytesOf(const std::string& name) const {
         for (const postfx::PlannedResource& r : last.resources)
             if (r.name == name) return r.bytes;
@@ -96,8 +103,12 @@ TEST_F(CloudsPlanTest, NoiseOnceThenOnlyTheMarchAndNothingWithoutCoverage) {
     EXPECT_EQ(planAndRun(), (Passes{"clouds.base_noise", "clouds.detail_noise", "clouds.march"}));
     EXPECT_EQ(bytesOf("clouds.base_noise"), 32u * 32 * 32);
     EXPECT_EQ(bytesOf("clouds.detail_noise"), 16u * 16 * 16);
+    EXPECT_FALSE(cachedOf("clouds.base_noise"));  // built in this frame
     EXPECT_EQ(planAndRun(), (Passes{"clouds.march"}));
-    frame.timeSeconds = 10.0;  // the wind moves the field, not the textures
+    EXPECT_TRUE(cachedOf("clouds.base_noise"));  // held, not rebuilt: the plan says cached
+    EXPECT_TRUE(cachedOf("clouds.detail_noise"));
+    EXPECT_FALSE(cachedOf("clouds.uniforms"));  // buffers are written every frame
+    frame.timeSeconds = 10.0;                   // the wind moves the field, not the textures
     EXPECT_EQ(planAndRun(), (Passes{"clouds.march"}));
     frame.clouds.noise.seed = 2;  // a new base and detail texture
     EXPECT_EQ(planAndRun(), (Passes{"clouds.base_noise", "clouds.detail_noise", "clouds.march"}));

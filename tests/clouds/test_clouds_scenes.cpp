@@ -12,6 +12,7 @@
 #include "gpu_test.h"
 #include "host/renderer.h"
 #include "scene/scene.h"
+#include "scene_reference.h"
 
 #include <array>
 #include <chrono>
@@ -77,43 +78,15 @@ protected:
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         ASSERT_EQ(gpu.rgba.size(), reference.rgba.size());
-        // Per channel over the image: Σ|gpu - ref| / Σ ref (per pixel: the jitter's one-frame noise and the
-        // half-resolution march's edges included), the same over 8×6-pixel blocks' means (what the eye
-        // sees: noise averaged out), and the signed Σ(gpu - ref) / Σ ref (a bias).
-        constexpr uint32_t kBlockW = 8, kBlockH = 6;
-        std::array<double, 3> absolute{}, blocks{}, signedSum{}, total{};
-        for (uint32_t by = 0; by < kHeight; by += kBlockH)
-            for (uint32_t bx = 0; bx < kWidth; bx += kBlockW) {
-                std::array<double, 3> blockGpu{}, blockRef{};
-                for (uint32_t y = by; y < by + kBlockH; ++y)
-                    for (uint32_t x = bx; x < bx + kBlockW; ++x)
-                        for (size_t c = 0; c < 3; ++c) {
-                            const double g = gpu.at(x, y)[c], f = reference.at(x, y)[c];
-                            ASSERT_TRUE(std::isfinite(g)) << name << " pixel " << x << "," << y;
-                            absolute[c] += std::abs(g - f);
-                            blockGpu[c] += g;
-                            blockRef[c] += f;
-                        }
-                for (size_t c = 0; c < 3; ++c) {
-                    blocks[c] += std::abs(blockGpu[c] - blockRef[c]);
-                    signedSum[c] += blockGpu[c] - blockRef[c];
-                    total[c] += blockRef[c];
-                }
-            }
-        const auto percent = [&](const std::array<double, 3>& v, size_t c) {
-            return 100.0 * v[c] / total[c];
-        };
-        std::printf(
-            "[ clouds ] %s: GPU vs reference, mean relative difference R G B: per pixel %.1f%% %.1f%% "
-            "%.1f%%, "
-            "8x6 blocks %.1f%% %.1f%% %.1f%%, signed %+.2f%% %+.2f%% %+.2f%%; reference %.1f s\n",
-            name.c_str(), percent(absolute, 0), percent(absolute, 1), percent(absolute, 2),
-            percent(blocks, 0), percent(blocks, 1), percent(blocks, 2), percent(signedSum, 0),
-            percent(signedSum, 1), percent(signedSum, 2), seconds);
+        // Blocks of 8×6 pixels: what the eye sees, the jitter's one-frame noise averaged out.
+        const ReferenceDifference d = referenceDifference(gpu, reference);
+        std::printf("[ clouds ] %s: GPU vs reference, mean relative difference %s; reference %.1f s\n",
+                    name.c_str(), describe(d).c_str(), seconds);
+        ASSERT_TRUE(d.finite) << name;
         for (size_t c = 0; c < 3; ++c) {
-            ASSERT_GT(total[c], 0.0);
-            EXPECT_LT(blocks[c] / total[c], maxBlockDifference) << name << " channel " << c;
-            EXPECT_LT(std::abs(signedSum[c]) / total[c], kMaxBias) << name << " channel " << c;
+            ASSERT_GT(d.referenceSum[c], 0.0);
+            EXPECT_LT(d.blocks[c], maxBlockDifference) << name << " channel " << c;
+            EXPECT_LT(std::abs(d.bias[c]), kMaxBias) << name << " channel " << c;
         }
     }
 };

@@ -32,6 +32,9 @@ struct PlannedResource {
     // Its contents are carried from one frame to the next (a temporal history, docs/temporal.md): a
     // host's render graph must keep it, unaliased, between postfx's frames.
     bool history = false;
+    // A persistent image (a LUT, a noise texture) built in an earlier frame whose inputs did not change:
+    // no pass of this frame writes it, the frame only reads it (docs/frame-plan.md).
+    bool cached = false;
 };
 
 struct POSTFX_API FramePlan {

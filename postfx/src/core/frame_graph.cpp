@@ -366,7 +366,8 @@ void FrameGraph::plan(const Frame& f, FramePlan& out) const {
                                    ? slotBytes(r.uniformBytes) * framesInFlight_
                                    : uint64_t(r.desc.extent.width) * r.desc.extent.height *
                                          r.desc.extent.depth * r.desc.layers * texelBytes(r.desc.format);
-        out.resources.push_back({r.name, effectName(r.effect), bytes, r.kind == ResourceDecl::Kind::History});
+        out.resources.push_back({r.name, effectName(r.effect), bytes, r.kind == ResourceDecl::Kind::History,
+                                 r.kind == ResourceDecl::Kind::Persistent && !out.writes(r.name)});
     }
 }
 

@@ -1,0 +1,219 @@
+#include "frame_run.h"
+
+#include "progress.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace bench {
+namespace {
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "\npostfx-bench: %s\n", message.c_str());
+    return 1;
+}
+
+const std::vector<std::string> kEffects{"atmosphere", "clouds", "fog", "froxel_fog", "postfx"};
+
+struct Row {
+    uint32_t width = 0, height = 0;
+    std::string fog, preset;
+    Timing timing;
+    std::map<std::string, double> effectMs;  // Σ of each effect's pass medians
+    std::array<ErrorStats, 3> error;
+    uint32_t stride = 1;
+};
+
+std::string fixed(double v, int digits) {
+    if (!std::isfinite(v)) return "–";
+    char b[64];
+    std::snprintf(b, sizeof b, "%.*f", digits, v);
+    return b;
+}
+
+std::string percent(double v) {
+    if (!std::isfinite(v)) return "–";
+    char b[64];
+    std::snprintf(b, sizeof b, "%.3g%%", 100.0 * v);
+    return b;
+}
+
+postfx::FogQuality fogQuality(const std::string& preset) {
+    if (preset == "low") return postfx::FogQuality::Low;
+    if (preset == "high") return postfx::FogQuality::High;
+    if (preset == "ultra") return postfx::FogQuality::Ultra;
+    return postfx::FogQuality::Medium;
+}
+
+postfx::CloudQuality cloudQuality(const std::string& preset) {
+    if (preset == "low") return postfx::CloudQuality::Low;
+    if (preset == "high") return postfx::CloudQuality::High;
+    if (preset == "ultra") return postfx::CloudQuality::Ultra;
+    return postfx::CloudQuality::Medium;
+}
+
+bool writeResults(const FrameRunArgs& args, const std::vector<Row>& rows, const RunInfo& info,
+                  std::string& error) {
+    std::filesystem::create_directories(args.out);
+    std::ofstream csv(args.out + "/results.csv");
+    csv << "# postfx-bench --frame results; columns: docs/accuracy-cost/README.md (Whole frame)\n";
+    csv << "# device: " << info.device << "\n# vulkan: " << info.vulkanApi << "\n# date: " << info.date
+        << "\n# command: " << info.commandLine << "\n";
+    csv << "width,height,fog,preset,gpu_ms_median,gpu_ms_p10,gpu_ms_p90";
+    for (const std::string& e : kEffects)
+        csv << "," << e << "_ms";
+    csv << ",error_stride,rel_rmse_1,rel_rmse_16,non_finite\n";
+    for (const Row& r : rows) {
+        csv << r.width << "," << r.height << "," << r.fog << "," << r.preset << "," << r.timing.median << ","
+            << r.timing.p10 << "," << r.timing.p90;
+        for (const std::string& e : kEffects)
+            csv << "," << (r.effectMs.count(e) ? r.effectMs.at(e) : 0.0);
+        csv << "," << r.stride << "," << r.error[0].relativeRmse << "," << r.error[2].relativeRmse << ","
+            << r.error[0].nonFinite + r.error[2].nonFinite << "\n";
+    }
+    std::ofstream md(args.out + "/results.md");
+    md << "# The whole frame: accuracy–cost results\n\n"
+       << "Written by `postfx-bench --frame`; what each number means: `docs/accuracy-cost/README.md` (Whole "
+          "frame). Every number is in [results.csv](results.csv).\n\n"
+       << "| | |\n|---|---|\n"
+       << "| device | " << info.device << " |\n| Vulkan | " << info.vulkanApi << " |\n| date | " << info.date
+       << " |\n| command | `" << info.commandLine << "` |\n"
+       << "| scene | `demo/scenes/showcase.json` (froxel) and the same with its fog medium as the "
+          "ray-marched "
+          "fog (raymarched); camera and sun still |\n"
+       << "| presets | the clouds' and the ray-marched fog's quality; the atmosphere and the froxel fog at "
+          "their settings in the scene |\n"
+       << "| GPU time | every postfx pass of a frame (Context::readPassTimings), median of " << info.frames
+       << " frames (p10–p90) after a warm-up of at least " << info.warmup << " frames and "
+       << fixed(info.warmupMs, 0) << " ms; per effect: the sum of its passes' medians |\n"
+       << "| error | relative RMSE over RGB against the demo's combined CPU reference (Renderer::"
+          "renderReference: the atmosphere's reference (a), renderClouds, then renderFog or "
+          "renderFroxelFog, "
+       << args.referenceSteps
+       << " steps) at every stride-th pixel; one frame, and the mean of 16 consecutive frames |\n\n";
+    md << "| size | fog | preset | GPU ms (median, p10–p90) | atmosphere | clouds | fog | postfx | rel. "
+          "RMSE 1 frame | 16 frames |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const Row& r : rows) {
+        auto ms = [&](const std::string& e) {
+            return fixed(r.effectMs.count(e) ? r.effectMs.at(e) : 0.0, 3);
+        };
+        const std::string fogMs = r.fog == "froxel" ? ms("froxel_fog") : ms("fog");
+        md << "| " << r.width << "×" << r.height << " | " << r.fog << " | " << r.preset << " | "
+           << fixed(r.timing.median, 3) << " (" << fixed(r.timing.p10, 3) << "–" << fixed(r.timing.p90, 3)
+           << ") | " << ms("atmosphere") << " | " << ms("clouds") << " | " << fogMs << " | " << ms("postfx")
+           << " | " << percent(r.error[0].relativeRmse) << " | " << percent(r.error[2].relativeRmse)
+           << " |\n";
+    }
+    md << "\n## Target\n\nEvery effect on at Medium, 1920×1080: ≤ 1.0 ms (issue 21).\n\n"
+       << "| fog | measured | status |\n|---|---|---|\n";
+    for (const Row& r : rows) {
+        if (r.width != 1920 || r.height != 1080 || r.preset != "medium") continue;
+        md << "| " << r.fog << " | " << fixed(r.timing.median, 3) << " ms | "
+           << (r.timing.median <= 1.0 ? "**PASS**" : "**MISS**") << " |\n";
+    }
+    if (!csv || !md) {
+        error = "cannot write " + args.out + "/results.csv or results.md";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+demo::Scene frameVariant(const demo::Scene& showcase, const std::string& fog) {
+    demo::Scene s = showcase;
+    if (fog == "raymarched") {
+        postfx::FogSettings f;
+        static_cast<postfx::FogMedium&>(f) = static_cast<const postfx::FogMedium&>(showcase.froxelFog);
+        f.enabled = true;
+        f.temporal.enabled = true;
+        s.fog = f;
+        s.froxelFog.enabled = false;
+    }
+    return s;
+}
+
+demo::Scene withPreset(const demo::Scene& scene, const std::string& preset) {
+    demo::Scene s = scene;
+    s.clouds.quality = cloudQuality(preset);
+    if (s.fog.enabled) s.fog.quality = fogQuality(preset);
+    return s;
+}
+
+std::string passEffect(const std::string& pass) {
+    return pass.substr(0, pass.find('.'));
+}
+
+int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std::string& date) {
+    demo::Scene showcase;
+    std::string error;
+    const std::string path = args.sceneDir + "/showcase.json";
+    if (!demo::loadSceneFile(path, showcase, error)) return fail(error);
+    if (!showcase.atmosphere.enabled || !showcase.clouds.enabled || !showcase.froxelFog.enabled)
+        return fail(path + ": the showcase needs the atmosphere, the clouds and the froxel fog");
+    if (args.shadowMapSize > 0) showcase.clouds.shadowMap.size = args.shadowMapSize;
+    std::vector<Row> rows;
+    RunInfo info;
+    for (const auto& [width, height] : args.sizes) {
+        RunnerOptions options = args.runner;
+        options.width = width;
+        options.height = height;
+        std::unique_ptr<Runner> runner = Runner::create(options, error);
+        if (!runner) return fail(error);
+        fillRunHeader(info, runner->host(), options, args.errorStride, args.referenceSteps, date,
+                      commandLine);
+        const uint32_t stride =
+            std::max(1u, uint32_t(std::lround(double(args.errorStride) * width / 1920.0)));
+        for (const std::string fog : {"froxel", "raymarched"}) {
+            const demo::Scene variant = frameVariant(showcase, fog);
+            if (!runner->setScene(variant, error)) return fail(error);
+            // The reference does not depend on the presets (a reduced-resolution fog cannot be subsampled:
+            // the reference is of the scene's medium, at scale 1).
+            demo::Scene referenceScene = variant;
+            referenceScene.fog.resolutionScale = 1.0f;
+            demo::ImageF reference;
+            std::printf("%ux%u %s: reference...\n", width, height, fog.c_str());
+            std::fflush(stdout);
+            if (!runner->reference(referenceScene, args.referenceSteps, stride, reference, error))
+                return fail(error);
+            for (const std::string& preset : args.presets) {
+                Row row;
+                row.width = width;
+                row.height = height;
+                row.fog = fog;
+                row.preset = preset;
+                row.stride = stride;
+                const demo::Scene scene = withPreset(variant, preset);
+                // A reduced-resolution ray-marched fog's pixels are not the reference's at a stride: time
+                // only.
+                const bool subsampled =
+                    stride == 1 || !scene.fog.enabled ||
+                    postfx::applyFogQuality(scene.fog, scene.fog.quality).resolutionScale >= 1.0f;
+                const demo::ImageF none;
+                if (!runner->measure(scene, fog == "froxel" ? Method::Froxel : Method::Ours, 0.0f,
+                                     subsampled ? reference : none, stride, row.timing, row.error, error))
+                    return fail(error);
+                for (const auto& [pass, ms] : row.timing.passMedians)
+                    row.effectMs[passEffect(pass)] += ms;
+                std::printf(
+                    "%ux%u %-10s %-6s %8.4f ms  atmosphere %.4f clouds %.4f fog %.4f  rel. RMSE %s / %s\n",
+                    width, height, fog.c_str(), preset.c_str(), row.timing.median, row.effectMs["atmosphere"],
+                    row.effectMs["clouds"], row.effectMs[fog == "froxel" ? "froxel_fog" : "fog"],
+                    percent(row.error[0].relativeRmse).c_str(), percent(row.error[2].relativeRmse).c_str());
+                std::fflush(stdout);
+                rows.push_back(row);
+            }
+        }
+        for (const std::string& m : runner->validationMessages())
+            return fail("validation: " + m);
+    }
+    if (!writeResults(args, rows, info, error)) return fail(error);
+    std::printf("wrote %s/results.csv, %s/results.md\n", args.out.c_str(), args.out.c_str());
+    return 0;
+}
+
+}  // namespace bench
