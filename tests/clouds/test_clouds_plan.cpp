@@ -59,30 +59,47 @@ protected:
     uint64_t frameIndex = 0;
 };
 
-// The defaults: shadows, half resolution, temporal.
+// The defaults: shadows, half resolution, temporal. The shadow map is built once and kept while the camera,
+// the sun and the clouds stand still (no wind): a still frame records only what depends on the frame.
 TEST_F(CloudsPlanTest, DefaultsMakeTheShadowMapMarchAtHalfSizeAccumulateAndUpsample) {
-    const Passes every{"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"};
-    Passes first{"clouds.base_noise", "clouds.detail_noise"};
-    first.insert(first.end(), every.begin(), every.end());
+    const Passes every{"clouds.march", "clouds.temporal", "clouds.upsample"};
+    const Passes first{"clouds.base_noise", "clouds.detail_noise", "clouds.shadow",
+                       "clouds.march",      "clouds.temporal",     "clouds.upsample"};
     EXPECT_EQ(planAndRun(), first);
+    EXPECT_FALSE(cachedOf("clouds.shadow_map"));
     EXPECT_EQ(bytesOf("clouds.shadow_map"), 512u * 512 * 4);  // R32F
     EXPECT_EQ(bytesOf("clouds.scatter"), 8u * 4 * 8);         // half of 16×8, the color's RGBA16F
     EXPECT_EQ(bytesOf("clouds.history_a"), 8u * 4 * 16);      // RGBA32F
     EXPECT_EQ(bytesOf("clouds.history_distance_b"), 8u * 4 * 4);
     EXPECT_EQ(planAndRun(), every);
+    EXPECT_TRUE(cachedOf("clouds.shadow_map"));
+    EXPECT_EQ(bytesOf("clouds.shadow_map"), 512u * 512 * 4);  // still held
+    // What moves it rebuilds it: the sun, the wind over time, the camera (its position enters the
+    // samples' camera-relative coordinates).
+    frame.sun.toSun = {0.6f, 0.7f, 0.1f};
+    EXPECT_EQ(planAndRun(), (Passes{"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"}));
+    frame.clouds.wind = {10.0f, 0.0f, 0.0f};
+    frame.timeSeconds = 1.0;
+    EXPECT_EQ(planAndRun(), (Passes{"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"}));
+    frame.clouds.wind = {0.0f, 0.0f, 0.0f};
+    EXPECT_EQ(planAndRun(), (Passes{"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"}));
+    EXPECT_EQ(planAndRun(), every);  // no wind: still again
+    frame.camera.position.x += 100.0;
+    EXPECT_EQ(planAndRun(), (Passes{"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"}));
     frame.clouds.temporal.enabled = false;  // half size without temporal: march and upsample
-    EXPECT_EQ(planAndRun(), (Passes{"clouds.shadow", "clouds.march", "clouds.upsample"}));
+    EXPECT_EQ(planAndRun(), (Passes{"clouds.march", "clouds.upsample"}));
     EXPECT_EQ(bytesOf("clouds.history_a"), 0u);
     frame.clouds.castShadows = false;  // no shadow map held
     EXPECT_EQ(planAndRun(), (Passes{"clouds.march", "clouds.upsample"}));
     EXPECT_EQ(bytesOf("clouds.shadow_map"), 0u);
 }
 
-// Both fogs read the shadow map the clouds made earlier in the frame.
+// Both fogs read the shadow map the clouds made earlier in the frame (a new sun each time: it is built).
 TEST_F(CloudsPlanTest, TheFogsReadTheShadowMapAfterItIsMade) {
     for (bool froxel : {false, true}) {
         frame.fog.enabled = !froxel;
         frame.froxelFog.enabled = froxel;
+        frame.sun.toSun = froxel ? glm::vec3(0.5f, 0.8f, 0.2f) : glm::vec3(0.6f, 0.8f, 0.1f);
         const Passes passes = planAndRun();
         const char* consumer = froxel ? "froxel_fog.scatter" : "fog.raymarch";
         const auto shadow = std::find(passes.begin(), passes.end(), "clouds.shadow");

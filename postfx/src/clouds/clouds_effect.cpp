@@ -112,6 +112,37 @@ uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kCloudGroupSize - 1) / gpu::kCloudGroupSize;
 }
 
+// Everything the shadow map's texels depend on: the field where it is sampled (the shape, the density's
+// settings and textures, the noise's and coverage map's offsets: camera and wind·time, as the uniforms
+// hold them camera-relative), the sun's direction and the map's placement. A still camera and sun without
+// wind keep it: clouds.shadow does not run again (the plan lists clouds.shadow_map as cached); a moving
+// camera rebuilds it every frame, as before.
+uint64_t shadowBuildKey(const gpu::CloudUniforms& u, const CloudSettings& s) {
+    using core::hashValue;
+    uint64_t h = core::kHashSeed;
+    h = hashValue(h, u.boxFromView);
+    h = hashValue(h, u.origin);
+    h = hashValue(h, u.layer);
+    h = hashValue(h, u.boxHalf);
+    h = hashValue(h, u.noiseBase);
+    h = hashValue(h, u.noiseDetail);
+    h = hashValue(h, u.coverageMap);
+    h = hashValue(h, u.shape);
+    h = hashValue(h, u.toSun);
+    h = hashValue(h, u.shadow);
+    h = hashValue(h, u.counts.w);
+    h = hashValue(h, u.flags.x & (gpu::kCloudFlagNoise | gpu::kCloudFlagCurved | gpu::kCloudFlagBox |
+                                  gpu::kCloudFlagCoverageMap));
+    // The textures' contents: generated from seed and size, or the host's views.
+    h = hashValue(h, s.noise.seed);
+    h = hashValue(h, s.noise.baseSize);
+    h = hashValue(h, s.noise.detailSize);
+    h = hashValue(h, s.noise.hostBaseTexture);
+    h = hashValue(h, s.noise.hostDetailTexture);
+    h = hashValue(h, s.coverageMap.texture);
+    return h;
+}
+
 // Everything the accumulated (L, T) depends on besides the camera, the light and the wind's motion
 // (core/temporal.h): the clouds' settings, the atmosphere's when on, the extent and format.
 uint64_t temporalKey(const FrameInfo& frame) {
@@ -338,7 +369,8 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         shadowDesc.extent = {s.shadowMap.size, s.shadowMap.size, 1};
         shadowDesc.usage =
             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-        const core::ImageRef shadowMap = b.historyImage(kShadowMap, shadowDesc);
+        // Persistent: rebuilt only when what its texels depend on changes (shadowBuildKey).
+        const core::ImageRef shadowMap = b.persistentImage(kShadowMap, shadowDesc, shadowBuildKey(u, s));
         b.exportImage(shadowMap);
         b.pass(kShadow, groupsFor(s.shadowMap.size), groupsFor(s.shadowMap.size), 1)
             .bind(gpu::kCloudBindingUniforms, uniforms)

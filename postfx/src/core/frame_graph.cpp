@@ -300,12 +300,14 @@ void FrameGraph::compile(Frame& f) const {
             const Access& x = f.accesses[a];
             if (!writes(x.use) || x.resource == kNoResource) continue;
             const ResourceDecl& r = f.resources[x.resource];
-            if (r.kind == ResourceDecl::Kind::Host || r.exported)
+            // An exported persistent image (read by the host after the frame) is built like any
+            // persistent image: only when its key changed.
+            if (r.kind == ResourceDecl::Kind::Host)
                 p.live = true;
             else if (r.kind == ResourceDecl::Kind::Persistent)
-                p.live |= readLater[x.resource] && r.needsBuild;
+                p.live |= (readLater[x.resource] || r.exported) && r.needsBuild;
             else
-                p.live |= readLater[x.resource];
+                p.live |= readLater[x.resource] || r.exported;
         }
         if (!p.live) continue;
         for (uint32_t a = p.firstAccess; a < p.firstAccess + p.accessCount; ++a) {
@@ -334,8 +336,10 @@ void FrameGraph::compile(Frame& f) const {
             f.passes.back().live = true;
         }
     }
+    // Held: what a live pass touches, and an exported image (the host reads it after the frame, even when
+    // no pass of this frame touched it: a persistent image not rebuilt).
     for (ResourceDecl& r : f.resources)
-        r.held = false;
+        r.held = r.exported;
     for (const PassDecl& p : f.passes)
         for (uint32_t a = p.firstAccess; p.live && a < p.firstAccess + p.accessCount; ++a)
             if (f.accesses[a].resource != kNoResource) f.resources[f.accesses[a].resource].held = true;

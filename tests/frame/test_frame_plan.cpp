@@ -1,0 +1,111 @@
+// The whole frame's plan (issue 21): the atmosphere, the clouds (casting shadows) and the froxel fog with a
+// light, camera and sun still and no wind. The first frame builds every persistent image; every later
+// frame records exactly the passes that depend on the frame (the jittered, temporally accumulated march,
+// scatter and their composites) and lists every LUT, noise texture and the clouds' shadow map as cached.
+// Shared inputs are made once: one pass makes the clouds' shadow map that the fog reads, the atmosphere's
+// transmittance LUT is the one every effect reads, and no two passes of the frame do the same work.
+#include "fog_harness.h"
+
+#include <gtest/gtest.h>
+
+#include <postfx/postfx.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace test;
+
+namespace {
+
+using Passes = std::vector<std::string>;
+
+class FramePlanTest : public ReversedZContextTest {
+protected:
+    void SetUp() override {
+        ReversedZContextTest::SetUp();
+        frame.camera = lookCamera({0.0, 2.0, 0.0}, {0.0, 0.3, -1.0}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
+        frame.sun.toSun = {0.3f, 0.5f, -0.8f};
+        frame.sun.illuminance = postfx::Vec3(1.2e5f);
+        frame.atmosphere.enabled = true;
+        frame.clouds.enabled = true;
+        frame.clouds.noise.baseSize = 32;
+        frame.clouds.noise.detailSize = 16;
+        frame.clouds.shadowMap.size = 64;
+        frame.froxelFog.enabled = true;
+        frame.froxelFog.grid = {16, 8, 16};
+        frame.froxelFog.noise.enabled = true;
+        frame.froxelFog.noise.textureSize = 32;
+        light.type = postfx::LightType::Point;
+        light.position = {0.0, 2.0, -5.0};
+        light.intensity = postfx::Vec3(1000.0f);
+        frame.lights = &light;
+        frame.lightCount = 1;
+        im.width = 16;
+        im.height = 8;
+        im.color.assign(16 * 8 * 4, 1.0f);
+        im.depth.assign(16 * 8, 0.0f);
+    }
+
+    Passes planAndRun() {
+        frame.frameIndex = frameIndex++;
+        last = planAndRecord(*host, gpu, *context, im, frame);
+        return passNames(last);
+    }
+    std::set<std::string> cached() const {
+        std::set<std::string> out;
+        for (const postfx::PlannedResource& r : last.resources)
+            if (r.cached) out.insert(r.name);
+        return out;
+    }
+
+    postfx::FrameInfo frame;
+    postfx::LocalLight light;
+    FogHarnessImages im;
+    postfx::FramePlan last;
+    uint64_t frameIndex = 0;
+};
+
+}  // namespace
+
+TEST_F(FramePlanTest, StillFramesRecordOnlyWhatDependsOnTheFrame) {
+    const Passes first = planAndRun();
+    // Every persistent image is built in the first frame.
+    for (const char* build :
+         {"atmosphere.transmittance", "atmosphere.multiple_scattering", "clouds.base_noise",
+          "clouds.detail_noise", "clouds.shadow", "froxel_fog.noise"})
+        EXPECT_NE(std::find(first.begin(), first.end(), build), first.end()) << build;
+    EXPECT_TRUE(cached().empty());
+
+    const Passes still = planAndRun();
+    EXPECT_EQ(still, (Passes{"atmosphere.apply", "clouds.march", "clouds.temporal", "clouds.upsample",
+                             "froxel_fog.scatter", "froxel_fog.integrate", "froxel_fog.apply"}));
+    EXPECT_EQ(cached(),
+              (std::set<std::string>{"atmosphere.transmittance", "atmosphere.multiple_scattering",
+                                     "atmosphere.sky_view", "atmosphere.aerial_perspective",
+                                     "atmosphere.aerial_transmittance", "clouds.base_noise",
+                                     "clouds.detail_noise", "clouds.shadow_map", "froxel_fog.noise"}));
+    EXPECT_EQ(planAndRun(), still);  // and so on
+
+    // Shared inputs, made once: the fog reads the clouds' shadow map and the atmosphere's transmittance LUT,
+    // and no pass name repeats.
+    const postfx::PlannedPass* scatter = last.pass("froxel_fog.scatter");
+    ASSERT_TRUE(scatter);
+    for (const char* shared : {"clouds.shadow_map", "atmosphere.transmittance"})
+        EXPECT_NE(std::find(scatter->reads.begin(), scatter->reads.end(), shared), scatter->reads.end())
+            << shared;
+    const postfx::PlannedPass* march = last.pass("clouds.march");
+    ASSERT_TRUE(march);
+    EXPECT_NE(std::find(march->reads.begin(), march->reads.end(), "atmosphere.transmittance"),
+              march->reads.end());
+    EXPECT_EQ(std::set<std::string>(still.begin(), still.end()).size(), still.size());
+
+    // The sun moves: the atmosphere's view LUTs and the clouds' shadow map are rebuilt, the noise is not.
+    frame.sun.toSun = {0.3f, 0.45f, -0.8f};
+    const Passes moved = planAndRun();
+    for (const char* rebuilt : {"clouds.shadow"})
+        EXPECT_NE(std::find(moved.begin(), moved.end(), rebuilt), moved.end()) << rebuilt;
+    for (const char* kept : {"clouds.base_noise", "froxel_fog.noise"})
+        EXPECT_EQ(std::find(moved.begin(), moved.end(), kept), moved.end()) << kept;
+}
