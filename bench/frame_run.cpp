@@ -22,6 +22,7 @@ const std::vector<std::string> kEffects{"atmosphere", "clouds", "fog", "froxel_f
 struct Row {
     uint32_t width = 0, height = 0;
     std::string fog, preset;
+    std::string chosen;  // budget rows: what the budget chose ("clouds medium + fog low")
     Timing timing;
     std::map<std::string, double> effectMs;  // Σ of each effect's pass medians
     std::array<ErrorStats, 3> error;
@@ -43,6 +44,7 @@ std::string percent(double v) {
 }
 
 postfx::FogQuality fogQuality(const std::string& preset) {
+    if (preset == "budget") return postfx::FogQuality::Auto;
     if (preset == "low") return postfx::FogQuality::Low;
     if (preset == "high") return postfx::FogQuality::High;
     if (preset == "ultra") return postfx::FogQuality::Ultra;
@@ -50,6 +52,7 @@ postfx::FogQuality fogQuality(const std::string& preset) {
 }
 
 postfx::CloudQuality cloudQuality(const std::string& preset) {
+    if (preset == "budget") return postfx::CloudQuality::Auto;
     if (preset == "low") return postfx::CloudQuality::Low;
     if (preset == "high") return postfx::CloudQuality::High;
     if (preset == "ultra") return postfx::CloudQuality::Ultra;
@@ -66,14 +69,14 @@ bool writeResults(const FrameRunArgs& args, const std::vector<Row>& rows, const 
     csv << "width,height,fog,preset,gpu_ms_median,gpu_ms_p10,gpu_ms_p90";
     for (const std::string& e : kEffects)
         csv << "," << e << "_ms";
-    csv << ",error_stride,rel_rmse_1,rel_rmse_16,non_finite\n";
+    csv << ",error_stride,rel_rmse_1,rel_rmse_16,non_finite,budget_choice\n";
     for (const Row& r : rows) {
         csv << r.width << "," << r.height << "," << r.fog << "," << r.preset << "," << r.timing.median << ","
             << r.timing.p10 << "," << r.timing.p90;
         for (const std::string& e : kEffects)
             csv << "," << (r.effectMs.count(e) ? r.effectMs.at(e) : 0.0);
         csv << "," << r.stride << "," << r.error[0].relativeRmse << "," << r.error[2].relativeRmse << ","
-            << r.error[0].nonFinite + r.error[2].nonFinite << "\n";
+            << r.error[0].nonFinite + r.error[2].nonFinite << "," << r.chosen << "\n";
     }
     std::ofstream md(args.out + "/results.md");
     md << "# The whole frame: accuracy–cost results\n\n"
@@ -102,7 +105,8 @@ bool writeResults(const FrameRunArgs& args, const std::vector<Row>& rows, const 
             return fixed(r.effectMs.count(e) ? r.effectMs.at(e) : 0.0, 3);
         };
         const std::string fogMs = r.fog == "froxel" ? ms("froxel_fog") : ms("fog");
-        md << "| " << r.width << "×" << r.height << " | " << r.fog << " | " << r.preset << " | "
+        const std::string preset = r.chosen.empty() ? r.preset : r.preset + " (" + r.chosen + ")";
+        md << "| " << r.width << "×" << r.height << " | " << r.fog << " | " << preset << " | "
            << fixed(r.timing.median, 3) << " (" << fixed(r.timing.p10, 3) << "–" << fixed(r.timing.p90, 3)
            << ") | " << ms("atmosphere") << " | " << ms("clouds") << " | " << fogMs << " | " << ms("postfx")
            << " | " << percent(r.error[0].relativeRmse) << " | " << percent(r.error[2].relativeRmse)
@@ -171,8 +175,8 @@ int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std
         for (const std::string fog : {"froxel", "raymarched"}) {
             const demo::Scene variant = frameVariant(showcase, fog);
             if (!runner->setScene(variant, error)) return fail(error);
-            // The reference does not depend on the presets (a reduced-resolution fog cannot be subsampled:
-            // the reference is of the scene's medium, at scale 1).
+            // The reference does not depend on the presets: the scene's media, every pixel's own ray (a
+            // preset below resolution scale 1 is compared at the same pixels: its upsampling's error counts).
             demo::Scene referenceScene = variant;
             referenceScene.fog.resolutionScale = 1.0f;
             demo::ImageF reference;
@@ -180,30 +184,50 @@ int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std
             std::fflush(stdout);
             if (!runner->reference(referenceScene, args.referenceSteps, stride, reference, error))
                 return fail(error);
-            for (const std::string& preset : args.presets) {
+            std::vector<std::string> rowsOf = args.presets;
+            if (args.budgetMs > 0.0f) rowsOf.push_back("budget");
+            for (const std::string& preset : rowsOf) {
                 Row row;
                 row.width = width;
                 row.height = height;
                 row.fog = fog;
                 row.preset = preset;
                 row.stride = stride;
-                const demo::Scene scene = withPreset(variant, preset);
-                // A reduced-resolution ray-marched fog's pixels are not the reference's at a stride: time
-                // only.
-                const bool subsampled =
-                    stride == 1 || !scene.fog.enabled ||
-                    postfx::applyFogQuality(scene.fog, scene.fog.quality).resolutionScale >= 1.0f;
-                const demo::ImageF none;
-                if (!runner->measure(scene, fog == "froxel" ? Method::Froxel : Method::Ours, 0.0f,
-                                     subsampled ? reference : none, stride, row.timing, row.error, error))
+                demo::Scene scene = withPreset(variant, preset);
+                if (preset == "budget") scene.budgetMs = args.budgetMs;
+                if (!runner->measure(scene, fog == "froxel" ? Method::Froxel : Method::Ours, 0.0f, reference,
+                                     stride, row.timing, row.error, error))
                     return fail(error);
+                if (preset == "budget") {
+                    postfx::BudgetChoice choice;
+                    const postfx::Status s = runner->postfxContext().budgetChoice(choice);
+                    if (!s.ok()) return fail("budget row: " + s.message);
+                    static const char* const kNames[] = {"low", "medium", "high", "ultra"};
+                    for (const postfx::BudgetChoice::EffectChoice& e : choice.effects)
+                        row.chosen += (row.chosen.empty() ? "" : " + ") + e.effect + " " +
+                                      (e.preset < 4 ? kNames[e.preset] : "?");
+                    for (const postfx::AutoQualityTimings& t : runner->postfxContext().autoQualityTimings()) {
+                        std::printf("  auto measured %s at %ux%u (features %u), presets [ms]:",
+                                    t.effect.c_str(), t.width, t.height, t.features);
+                        for (float ms : t.presetMs)
+                            std::printf(" %.4f", ms);
+                        std::printf("\n");
+                    }
+                    std::printf("  budget: other work %.4f ms + chosen %.4f ms (%s)\n", choice.otherMs,
+                                choice.chosenMs, choice.fits ? "fits" : "does not fit");
+                    char b[64];
+                    std::snprintf(b, sizeof b, "%.3g", double(args.budgetMs));
+                    row.preset = std::string("budget ") + b + " ms";
+                }
                 for (const auto& [pass, ms] : row.timing.passMedians)
                     row.effectMs[passEffect(pass)] += ms;
                 std::printf(
-                    "%ux%u %-10s %-6s %8.4f ms  atmosphere %.4f clouds %.4f fog %.4f  rel. RMSE %s / %s\n",
-                    width, height, fog.c_str(), preset.c_str(), row.timing.median, row.effectMs["atmosphere"],
-                    row.effectMs["clouds"], row.effectMs[fog == "froxel" ? "froxel_fog" : "fog"],
-                    percent(row.error[0].relativeRmse).c_str(), percent(row.error[2].relativeRmse).c_str());
+                    "%ux%u %-10s %-6s %8.4f ms  atmosphere %.4f clouds %.4f fog %.4f  rel. RMSE %s / %s %s\n",
+                    width, height, fog.c_str(), row.preset.c_str(), row.timing.median,
+                    row.effectMs["atmosphere"], row.effectMs["clouds"],
+                    row.effectMs[fog == "froxel" ? "froxel_fog" : "fog"],
+                    percent(row.error[0].relativeRmse).c_str(), percent(row.error[2].relativeRmse).c_str(),
+                    row.chosen.c_str());
                 std::fflush(stdout);
                 rows.push_back(row);
             }

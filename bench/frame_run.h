@@ -19,6 +19,9 @@ struct FrameRunArgs {
     RunnerOptions runner;  // width and height are replaced by each of `sizes`
     std::vector<std::pair<uint32_t, uint32_t>> sizes{{1920, 1080}, {3840, 2160}};
     std::vector<std::string> presets{"low", "medium", "high", "ultra"};
+    // Also a row per fog with the clouds and the ray-marched fog on quality Auto under one frame budget of
+    // this many ms (FrameInfo::budgetMs); 0: none.
+    float budgetMs = 1.0f;
     std::string sceneDir;  // where showcase.json is
     uint32_t referenceSteps = 512;
     // The error's pixel stride at 1920 wide; scaled with the width (so every size has about as many error
@@ -31,7 +34,8 @@ struct FrameRunArgs {
 // The scene variants the mode measures: "froxel" (the showcase as committed) and "raymarched" (its froxel
 // fog's medium as the ray-marched fog, marched to the same distance).
 demo::Scene frameVariant(const demo::Scene& showcase, const std::string& fog);
-// `scene` with the clouds' and the ray-marched fog's quality set to `preset` ("low" .. "ultra").
+// `scene` with the clouds' and the ray-marched fog's quality set to `preset` ("low" .. "ultra"; "budget":
+// both on Auto under scene.budgetMs, which the caller sets).
 demo::Scene withPreset(const demo::Scene& scene, const std::string& preset);
 // The effect a pass belongs to: its name up to the first '.' ("clouds.march" -> "clouds").
 std::string passEffect(const std::string& pass);

@@ -27,6 +27,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <exception>
 #include <filesystem>
@@ -171,6 +172,8 @@ const char* kUsage =
     "  --frame                this mode\n"
     "  --frame-sizes LIST     frame sizes WxH [1920x1080,3840x2160; quick: 64x36]\n"
     "  --frame-presets LIST   low, medium, high, ultra [all; quick: medium]\n"
+    "  --frame-budget MS      also a row per fog with the clouds and the ray-marched fog on quality Auto\n"
+    "                         under one frame budget (FrameInfo::budgetMs) [1; quick: 0]; 0: none\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device; --clouds:\n"
     "  POSTFX_BENCH_DUMP=DIR writes each row's GPU and reference images (the error's pixels) to DIR as PFM\n";
 
@@ -214,6 +217,7 @@ struct Args {
     bool frame = false;
     std::vector<std::pair<uint32_t, uint32_t>> frameSizes;  // empty: the default
     std::vector<std::string> framePresets;                  // empty: the default
+    double frameBudgetMs = -1.0;                            // < 0: the default
     bool quick = false;
     // In motion
     bool motion = true;
@@ -368,6 +372,13 @@ Args parseArgs(int argc, char** argv) {
                 args.frameSizes.emplace_back(w, h);
             }
             if (args.frameSizes.empty()) throw cli::UsageError{"--frame-sizes is empty"};
+        } else if (a == "--frame-budget") {
+            const std::string v = value();
+            char* end = nullptr;
+            args.frameBudgetMs = std::strtod(v.c_str(), &end);
+            if (end == v.c_str() || *end != '\0' ||
+                !(args.frameBudgetMs >= 0.0 && args.frameBudgetMs <= 1000.0))
+                throw cli::UsageError{"--frame-budget '" + v + "': expected a number of ms in [0, 1000]"};
         } else if (a == "--frame-presets") {
             args.framePresets = cli::splitList(value());
             for (const std::string& p : args.framePresets)
@@ -686,6 +697,7 @@ int runFrame(const Args& args, const std::string& command) {
     a.runner = args.runner;
     a.sizes = args.frameSizes;
     a.presets = args.framePresets;
+    a.budgetMs = float(args.frameBudgetMs >= 0.0 ? args.frameBudgetMs : (args.quick ? 0.0 : 1.0));
     a.sceneDir = args.sceneDir;
     a.referenceSteps = args.referenceSteps;
     a.errorStride = args.errorStride;

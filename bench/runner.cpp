@@ -171,6 +171,10 @@ const demo::VulkanHost& Runner::host() const {
     return *impl_->host;
 }
 
+const postfx::Context& Runner::postfxContext() const {
+    return impl_->renderer->postfxContext();
+}
+
 bool Runner::hasBaselines() {
     return POSTFX_BENCH_BASELINES != 0;
 }

@@ -43,6 +43,8 @@ public:
     Runner& operator=(const Runner&) = delete;
 
     const demo::VulkanHost& host() const;
+    // The demo renderer's postfx context (what quality Auto and the frame budget chose).
+    const postfx::Context& postfxContext() const;
     // Whether the baselines (bench/baseline.h) were built in.
     static bool hasBaselines();
 

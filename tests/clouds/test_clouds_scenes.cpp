@@ -32,26 +32,12 @@ constexpr double kMaxBias = 0.05;
 class CloudsScenes : public GpuTest {
 protected:
     demo::Scene load(const std::string& name) {
-        demo::Scene scene;
-        std::string error;
-        EXPECT_TRUE(demo::loadSceneFile(std::string(POSTFX_SOURCE_DIR) + "/demo/scenes/" + name + ".json",
-                                        scene, error))
-            << error;
+        demo::Scene scene = loadDemoScene(name);
         EXPECT_TRUE(scene.atmosphere.enabled) << name;
         EXPECT_TRUE(scene.clouds.enabled) << name;
         return scene;
     }
-    std::unique_ptr<demo::Renderer> renderer() {
-        demo::RenderOptions o;
-        o.width = kWidth;
-        o.height = kHeight;
-        o.frames = 2;
-        o.shadowMapSize = 512;
-        std::string error;
-        auto r = demo::Renderer::create(*host, o, error);
-        EXPECT_TRUE(r) << error;
-        return r;
-    }
+    std::unique_ptr<demo::Renderer> renderer() { return sceneRenderer(*host, kWidth, kHeight); }
 
     void expectSceneMatchesGolden(const std::string& name) {
         const demo::Scene scene = load(name);

@@ -4,7 +4,31 @@
 #include <cmath>
 #include <cstdio>
 
+#include <gtest/gtest.h>
+
 namespace test {
+
+demo::Scene loadDemoScene(const std::string& name) {
+    demo::Scene scene;
+    std::string error;
+    EXPECT_TRUE(
+        demo::loadSceneFile(std::string(POSTFX_SOURCE_DIR) + "/demo/scenes/" + name + ".json", scene, error))
+        << error;
+    return scene;
+}
+
+std::unique_ptr<demo::Renderer> sceneRenderer(demo::VulkanHost& host, uint32_t width, uint32_t height,
+                                              uint32_t frames) {
+    demo::RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.frames = frames;
+    o.shadowMapSize = 512;
+    std::string error;
+    auto r = demo::Renderer::create(host, o, error);
+    EXPECT_TRUE(r) << error;
+    return r;
+}
 
 ReferenceDifference referenceDifference(const demo::ImageF& gpu, const demo::ImageF& reference,
                                         uint32_t blockW, uint32_t blockH) {

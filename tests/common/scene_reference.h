@@ -5,9 +5,12 @@
 #pragma once
 
 #include "host/renderer.h"
+#include "host/vulkan_host.h"
+#include "scene/scene.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace test {
@@ -17,6 +20,13 @@ struct ReferenceDifference {
     std::array<double, 3> referenceSum{};                // Σ ref per channel (> 0 for a meaningful ratio)
     bool finite = true;                                  // every GPU value finite
 };
+
+// demo/scenes/<name>.json, expecting it to load.
+demo::Scene loadDemoScene(const std::string& name);
+// A demo renderer of width × height rendering `frames` frames (render() returns the last), with a
+// 512² sun shadow map; expects it to be created.
+std::unique_ptr<demo::Renderer> sceneRenderer(demo::VulkanHost& host, uint32_t width, uint32_t height,
+                                              uint32_t frames = 2);
 
 // Blocks of blockW × blockH pixels (the image's last partial blocks included).
 ReferenceDifference referenceDifference(const demo::ImageF& gpu, const demo::ImageF& reference,

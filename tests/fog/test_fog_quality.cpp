@@ -135,12 +135,14 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
         frame.fog.autoBudgetMs = budget;
         const FogHarnessImages im = images(frame);
         std::vector<float> out;
-        // Frames 0..11 measure Low, Medium, High, Ultra in turn, three times each (each frame here is
-        // waited for, so its timings are read when the next is recorded); frame 12 chooses.
+        // Frames 0..11 measure Low, Medium, High, Ultra in turn, three times each. A frame's timings are
+        // read once the host has waited for it by the contract (framesInFlight = 2 frames later, though
+        // each frame here is waited for at once): frame 12 still waits for frame 11's Ultra and measures
+        // Ultra again; frame 13 chooses.
         constexpr uint64_t kMeasuring = 4 * 3;
         const postfx::FogQuality kTurns[] = {FogQuality::Low, FogQuality::Medium, FogQuality::High,
                                              FogQuality::Ultra};
-        for (uint64_t i = 0; i < kMeasuring + 2; ++i) {
+        for (uint64_t i = 0; i < kMeasuring + 3; ++i) {
             frame.frameIndex = i;
             const postfx::Status s = harness.run(*context, im, frame, out);
             ASSERT_TRUE(s.ok()) << s.message;
@@ -150,11 +152,12 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
                     GTEST_SKIP() << "no GPU timings on this device";
             }
             const postfx::Status c = postfx::fogAutoQuality(*context, chosen);
-            if (i < kMeasuring) {
+            if (i <= kMeasuring) {
                 EXPECT_EQ(c.code, Result::NotReady) << "frame " << i;
                 // What was rendered is the preset whose turn it is.
                 postfx::FrameInfo turn = frame;
-                turn.fog = postfx::applyFogQuality(frame.fog, kTurns[i % 4]);
+                turn.fog =
+                    postfx::applyFogQuality(frame.fog, i < kMeasuring ? kTurns[i % 4] : FogQuality::Ultra);
                 turn.fog.quality = FogQuality::Custom;
                 std::vector<float> expectedImage;
                 ASSERT_TRUE(harness.run(*asCustom, im, turn, expectedImage).ok());
@@ -174,7 +177,7 @@ TEST_F(FogQualityTest, AutoMeasuresThePresetsThenChoosesByBudget) {
         EXPECT_EQ(out, reference);
         // A new key (another extent would need other images; noise on is one) measures again.
         frame.fog.noise.enabled = true;
-        frame.frameIndex = kMeasuring + 2;
+        frame.frameIndex = kMeasuring + 3;
         ASSERT_TRUE(harness.run(*context, im, frame, out).ok());
         EXPECT_EQ(postfx::fogAutoQuality(*context, chosen).code, Result::NotReady);
     }
@@ -235,8 +238,8 @@ TEST_F(FogQualityTest, AutoTimingsCarryToANewContext) {
     // Measured on one context, given to another: the same times, and the new one chooses at once.
     std::unique_ptr<postfx::Context> measuring = newContext();
     ASSERT_TRUE(measuring);
-    frame.fog.autoBudgetMs = 1e6f;  // Ultra
-    for (uint64_t i = 0; i < 13; ++i) {
+    frame.fog.autoBudgetMs = 1e6f;       // Ultra
+    for (uint64_t i = 0; i < 14; ++i) {  // 12 measured, their last read two frames later
         frame.frameIndex = i;
         ASSERT_TRUE(harness.run(*measuring, im, frame, out).ok());
         std::vector<postfx::PassTiming> timings;

@@ -26,26 +26,12 @@ constexpr uint32_t kAtmosphereReferenceSteps = 256;
 class FrameShowcase : public GpuTest {
 protected:
     demo::Scene load() {
-        demo::Scene scene;
-        std::string error;
-        EXPECT_TRUE(
-            demo::loadSceneFile(std::string(POSTFX_SOURCE_DIR) + "/demo/scenes/showcase.json", scene, error))
-            << error;
+        demo::Scene scene = loadDemoScene("showcase");
         EXPECT_TRUE(scene.atmosphere.enabled && scene.clouds.enabled && scene.froxelFog.enabled);
         EXPECT_FALSE(scene.lights.empty());
         return scene;
     }
-    std::unique_ptr<demo::Renderer> renderer() {
-        demo::RenderOptions o;
-        o.width = kWidth;
-        o.height = kHeight;
-        o.frames = 2;
-        o.shadowMapSize = 512;
-        std::string error;
-        auto r = demo::Renderer::create(*host, o, error);
-        EXPECT_TRUE(r) << error;
-        return r;
-    }
+    std::unique_ptr<demo::Renderer> renderer() { return sceneRenderer(*host, kWidth, kHeight); }
 };
 
 }  // namespace

@@ -173,7 +173,10 @@ public:
 
     // Timings of the passes recorded for `frameIndex`. Returns NotReady while the GPU has not finished
     // that frame, InvalidArgument if that frame's queries were overwritten by a newer frame (more than
-    // framesInFlight ago) or were never written. Does not wait.
+    // framesInFlight ago) or were never written. Does not wait. Read a frame the host has waited for (its
+    // fence): a frame recorded and submitted but not yet started on the GPU still holds the timings of the
+    // frame that used its query slot framesInFlight frames before (the slot is reset by the frame's own
+    // commands). Quality Auto reads only frames recorded framesInFlight frames ago or earlier.
     Status readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const;
 
     // Quality Auto (every effect with presets; the fog's typed view: fogAutoQuality in fog.h). The

@@ -17,7 +17,9 @@ double AutoQuality::Entry::medianMs(size_t preset) const {
     return t[kSamples / 2];
 }
 
-void AutoQuality::setEffects(std::vector<uint32_t> presetCount, std::vector<uint32_t> fallback) {
+void AutoQuality::setEffects(std::vector<uint32_t> presetCount, std::vector<uint32_t> fallback,
+                             uint32_t framesInFlight) {
+    framesInFlight_ = std::max(framesInFlight, 1u);
     presetCount_ = std::move(presetCount);
     fallback_ = std::move(fallback);
     last_.assign(presetCount_.size(), std::nullopt);
@@ -33,9 +35,18 @@ AutoQuality::Entry& AutoQuality::entry(const AutoQualityKey& key) {
     return cache_.back();
 }
 
+void AutoQuality::frameRecorded(uint64_t frameIndex) {
+    recent_[sequence_ % kRecentFrames] = frameIndex;
+    ++sequence_;
+}
+
 Status AutoQuality::collect(const PassTimer& timer) {
     std::vector<PassTimer::TaggedTiming> timings;
     for (auto it = pending_.begin(); it != pending_.end();) {
+        if (it->sequence + framesInFlight_ > sequence_) {  // not yet known to be finished
+            ++it;
+            continue;
+        }
         const Status s = timer.readTagged(it->frameIndex, timings);
         if (s.code == Result::NotReady) {
             ++it;
@@ -99,8 +110,7 @@ uint32_t AutoQuality::nextToMeasure(const Entry& e) const {
 }
 
 Status AutoQuality::selectJoint(const std::vector<JointRequest>& requests, const std::vector<int>& others,
-                                double budgetMs, uint64_t frameIndex, uint32_t framesInFlight,
-                                const PassTimer& timer, std::vector<uint32_t>& presets) {
+                                double budgetMs, const PassTimer& timer, std::vector<uint32_t>& presets) {
     presets.assign(requests.size(), 0);
     joint_.reset();
     if (!timer.enabled()) {
@@ -113,10 +123,12 @@ Status AutoQuality::selectJoint(const std::vector<JointRequest>& requests, const
     }
     if (Status s = collect(timer); !s) return s;
 
-    // The rest of postfx's work, from the newest finished frame before this one.
+    // The rest of postfx's work, from the newest frame the host has waited for (collect says why not a
+    // younger one).
     std::vector<PassTimer::TaggedTiming> timings;
-    for (uint64_t back = 1; back <= framesInFlight && back <= frameIndex; ++back) {
-        const Status s = timer.readTagged(frameIndex - back, timings);
+    for (uint64_t back = framesInFlight_; back <= 2 * uint64_t(framesInFlight_) && back <= sequence_;
+         ++back) {
+        const Status s = timer.readTagged(recent_[(sequence_ - back) % kRecentFrames], timings);
         if (s.code == Result::VulkanError || s.code == Result::OutOfMemory) return s;
         if (!s.ok()) continue;
         double other = 0.0;
@@ -186,7 +198,7 @@ void AutoQuality::recorded(uint64_t frameIndex, const AutoQualityKey& key, uint3
     if (preset >= presetCount_[size_t(key.effect)]) return;
     std::erase_if(pending_,
                   [&](const Pending& p) { return p.frameIndex == frameIndex && p.key.effect == key.effect; });
-    pending_.push_back({frameIndex, key, preset});
+    pending_.push_back({frameIndex, sequence_, key, preset});
 }
 
 std::vector<std::pair<AutoQualityKey, std::vector<float>>> AutoQuality::timings() const {

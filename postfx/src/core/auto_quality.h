@@ -32,7 +32,9 @@ public:
 
     // `presetCount[e]`, `fallback[e]`: effect e's number of presets (0: none) and the preset it uses
     // without GPU timings.
-    void setEffects(std::vector<uint32_t> presetCount, std::vector<uint32_t> fallback);
+    // `framesInFlight`: the context's; only frames at least that old are read (below).
+    void setEffects(std::vector<uint32_t> presetCount, std::vector<uint32_t> fallback,
+                    uint32_t framesInFlight);
 
     // The preset frame `frameIndex` with `key` uses. First collects the timings of pending measured
     // frames that have finished (does not wait); call before the timer starts `frameIndex`. While `key`
@@ -47,7 +49,7 @@ public:
     // select) and the others use their fallback; then the presets of chooseWithinBudget (core/budget.h)
     // over the measured times and the errors, within `budgetMs` less the other work's time: the
     // autoTimed passes of the effects in `others` (this frame's other active effects) and the context's
-    // own, in the newest finished of the frames before `frameIndex` (the last value read when none is
+    // own, in the newest frame the host has waited for (collect; the last value read when none is
     // readable). `presets` gets one per request. Fails only as select does.
     struct JointRequest {
         AutoQualityKey key;
@@ -61,12 +63,14 @@ public:
         bool fits = false;
     };
     Status selectJoint(const std::vector<JointRequest>& requests, const std::vector<int>& others,
-                       double budgetMs, uint64_t frameIndex, uint32_t framesInFlight, const PassTimer& timer,
-                       std::vector<uint32_t>& presets);
+                       double budgetMs, const PassTimer& timer, std::vector<uint32_t>& presets);
     // The last selectJoint's choice; NotReady while it measured, or when the last frame had no budget.
     Status jointChoice(JointChoice& out) const;
     // A frame chose each Auto effect on its own (no budget): jointChoice has nothing.
     void clearJoint() { joint_.reset(); }
+
+    // After a frame was recorded (and every recorded() of it): its index joins the recording order.
+    void frameRecorded(uint64_t frameIndex);
 
     // After `frameIndex` was recorded with `preset` (as select returned): measure it if still needed.
     void recorded(uint64_t frameIndex, const AutoQualityKey& key, uint32_t preset);
@@ -89,15 +93,26 @@ private:
     };
     struct Pending {
         uint64_t frameIndex;
+        uint64_t sequence;  // its place in recording order (frameRecorded's count when it was recorded)
         AutoQualityKey key;
         uint32_t preset;
     };
     Entry& entry(const AutoQualityKey& key);
     // The preset of an unmeasured entry to measure next (the presets take turns).
     uint32_t nextToMeasure(const Entry& e) const;
+    // Reads the pending frames the host has waited for: recorded at least framesInFlight frames before the
+    // one being prepared (in recording order; frame indices may jump). A younger frame may be recorded and
+    // submitted but not yet started on the GPU: its query slot still holds the results of the frame that
+    // used it framesInFlight frames earlier (the slot's reset is a command of the frame itself), which
+    // read as its own would be another preset's time (seen on the H100; lavapipe runs a submission at
+    // once).
     Status collect(const PassTimer& timer);
 
     std::vector<uint32_t> presetCount_, fallback_;
+    uint32_t framesInFlight_ = 1;
+    uint64_t sequence_ = 0;                         // frames recorded so far
+    static constexpr size_t kRecentFrames = 16;     // >= 2 × the largest framesInFlight (8)
+    std::array<uint64_t, kRecentFrames> recent_{};  // frame index of recorded frame n at n % kRecentFrames
     std::vector<Entry> cache_;
     std::vector<Pending> pending_;
     std::vector<std::optional<uint32_t>> last_;  // per effect: choice for its last select()'s key

@@ -95,7 +95,7 @@ void Context::Impl::addEffect(std::unique_ptr<core::Effect> effect) {
         fallback.push_back(e->fallbackPreset());
     }
     graph.setEffectNames(std::move(names));
-    autoQuality.setEffects(std::move(presets), std::move(fallback));
+    autoQuality.setEffects(std::move(presets), std::move(fallback), info.framesInFlight);
 }
 
 Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& out) {
@@ -196,9 +196,7 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
     }
     if (budget) {
         std::vector<uint32_t> presets;
-        if (Status s = autoQuality.selectJoint(joint, others, double(frame.budgetMs), frame.frameIndex,
-                                               info.framesInFlight, timer, presets);
-            !s)
+        if (Status s = autoQuality.selectJoint(joint, others, double(frame.budgetMs), timer, presets); !s)
             return {s.code, "FrameInfo.budgetMs: " + s.message};
         for (size_t r = 0; r < joint.size(); ++r) {
             const size_t e = jointEffects[r];
@@ -258,6 +256,7 @@ Status Context::record(const FrameInfo& frame) {
         return impl.report(s);
     for (const Impl::AutoUse& m : measuring)
         if (m.preset != ~0u) impl.autoQuality.recorded(frame.frameIndex, m.key, m.preset);
+    impl.autoQuality.frameRecorded(frame.frameIndex);
     for (const auto& effect : impl.effects)
         effect->recorded(impl.resolved, effect->active(impl.resolved));
     return Status::success();
