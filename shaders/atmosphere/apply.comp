@@ -60,14 +60,16 @@ vec3 skyViewLuminance(vec3 d, float cosView) {
     return textureLod(skyViewLut, uv, 0.0).rgb * atmo.applyScale.y;
 }
 
+// `depth`: the host's depth, or with kAtmosphereFlagViewDistance the surface distance (∞ without geometry).
 void applyPixel(uvec2 pixel, vec2 ndc, vec4 color, float depth) {
-    bool noGeometry = depth == atmo.skyView.z;
-    vec4 p = atmo.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);
+    bool isDistance = (atmo.flags.x & kAtmosphereFlagViewDistance) != 0u;
+    bool noGeometry = isDistance ? depth == kInfinity : depth == atmo.skyView.z;
+    vec4 p = atmo.clipToView * vec4(ndc, noGeometry || isDistance ? 0.5 : depth, 1.0);
     vec3 E = atmo.sun.rgb;
     vec3 result;
     if (!noGeometry) {
         vec3 L, T;
-        aerialPerspective(p.xyz / p.w, L, T);
+        aerialPerspective(isDistance ? normalize(p.w < 0.0 ? -p.xyz : p.xyz) * depth : p.xyz / p.w, L, T);
         result = compositeOver(color.rgb, T, L * E);
     } else {
         vec3 d = normalize(p.w < 0.0 ? -p.xyz : p.xyz);  // p.xyz / p.w, normalised

@@ -36,6 +36,8 @@ PFX_CONST(uint, kAtmosphereBindingDepth, 8);            // sampler2D: host depth
 // Flags in AtmosphereUniforms.flags.x
 PFX_CONST(uint, kAtmosphereFlagMultipleScattering, 1u);  // add σs·Ψ (Hillaire eq. 10)
 PFX_CONST(uint, kAtmosphereFlagDepthReversedZ, 2u);
+// The apply pass's depth binding holds postfx.view_distance's surface distances, not the host's depth.
+PFX_CONST(uint, kAtmosphereFlagViewDistance, 4u);
 
 // The sky-view LUT's mapping above the top (atmosphere.md#high-up-and-in-space): the span D of its sky
 // half's zenith angles falls from Z = π - β at the top to αt - β at this fraction of the atmosphere's

@@ -46,6 +46,8 @@ PFX_CONST(uint, kCloudFlagJitter, 16u);
 PFX_CONST(uint, kCloudFlagCoverageMap, 32u);  // read the host's coverage map
 // The upsample reads the temporal history, whose alpha is the optical depth τ (temporal.comp), not T.
 PFX_CONST(uint, kCloudFlagOpticalDepthHistory, 64u);
+// The depth binding holds postfx.view_distance's surface distances, not the host's depth.
+PFX_CONST(uint, kCloudFlagViewDistance, 128u);
 
 // The model's constants (docs/effects/clouds.md, "Density" and "Light").
 PFX_CONST(float, kCloudDetailTilingRatio, 8.0f);  // the detail texture repeats tiling / this [m]

@@ -3,6 +3,7 @@
 #define POSTFX_CLOUDS_RAY_GLSL
 
 #include "common/reduced_resolution.glsl"
+#include "common/view_distance.glsl"
 
 struct CloudRay {
     vec3 dir;       // unit direction from the camera
@@ -21,13 +22,14 @@ vec3 cloudUnproject(vec2 ndc, float depth, out float w) {
 // pixel's own centre, or for a reduced march the pixel nearest the texel's centre).
 CloudRay cloudRayThrough(vec2 ndc, uvec2 depthPixel) {
     float depth = texelFetch(depthTexture, ivec2(depthPixel), 0).r;
-    bool noGeometry = depth == cl.march.y;
     float w;
     vec3 far = cloudUnproject(ndc, 0.5, w);
     CloudRay ray;
     ray.dir = normalize(w < 0.0 ? -far : far);
     vec2 pixelNdc = (vec2(depthPixel) + 0.5) / vec2(cl.extent.xy) * 2.0 - 1.0;
-    ray.surface = noGeometry ? kInfinity : length(cloudUnproject(pixelNdc, depth, w));
+    ray.surface = surfaceDistanceOf(depth, (cl.flags.x & kCloudFlagViewDistance) != 0u, cl.clipToView,
+                                    pixelNdc, cl.march.y);
+    bool noGeometry = ray.surface == kInfinity;
     ray.far = noGeometry ? cl.march.x : min(ray.surface, cl.march.x);
     return ray;
 }

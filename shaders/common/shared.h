@@ -24,6 +24,12 @@ const float kInfinity = 1.0 / 0.0;
 PFX_CONST(uint, kCopyGroupSize, 8);   // postfx.copy workgroup: kCopyGroupSize² pixels
 PFX_CONST(uint, kCopyBindingIn, 0);   // storage image: host color (read)
 PFX_CONST(uint, kCopyBindingOut, 1);  // storage image: host output (written)
+// postfx.view_distance (core/view_distance.comp): the host's depth unprojected once per frame for every
+// effect that reads it, when two or more do (docs/architecture.md, "Shared inputs").
+PFX_CONST(uint, kViewDistanceGroupSize, 8);     // workgroup: kViewDistanceGroupSize² invocations
+PFX_CONST(uint, kViewDistanceRows, 4);          // pixels per invocation, kViewDistanceGroupSize rows apart
+PFX_CONST(uint, kViewDistanceBindingDepth, 0);  // sampler2D: host depth
+PFX_CONST(uint, kViewDistanceBindingOut, 1);    // storage image r32f: the surface distance [m]
 
 // ---- the tileable Perlin–Worley noise formula (shaders/common/noise.glsl; the fog generates its texture)
 // ---- Octave o of each fBm has a lattice of min(base << o, size) cells per tile: a power of two that divides

@@ -62,6 +62,9 @@ PFX_CONST(uint, kFogFlagDepthReversedZ, 64u);
 PFX_CONST(uint, kFogFlagSkipEmptySpace, 128u);
 PFX_CONST(uint, kFogFlagAtmosphere, 256u);   // the sun's light through the atmosphere's transmittance LUT
 PFX_CONST(uint, kFogFlagCloudShadow, 512u);  // the sun's light through the clouds' shadow map
+// The depth binding holds postfx.view_distance's surface distances, not the host's depth (shared by the
+// frame's effects; docs/architecture.md, "Shared inputs").
+PFX_CONST(uint, kFogFlagViewDistance, 1024u);
 
 struct FogUniforms {
     mat4 clipToView;      // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))

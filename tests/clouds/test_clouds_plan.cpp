@@ -157,7 +157,8 @@ TEST_F(CloudsPlanTest, WithTheAtmosphereTheMarchReadsItsLuts) {
               "atmosphere.aerial_transmittance", "atmosphere.multiple_scattering"})
             EXPECT_NE(std::find(p.reads.begin(), p.reads.end(), lut), p.reads.end()) << lut;
     }
-    EXPECT_EQ(planAndRun(), (Passes{"atmosphere.apply", "clouds.march"})) << "still";
+    // Two effects: the depth is unprojected once, before both (docs/architecture.md, "Shared inputs").
+    EXPECT_EQ(planAndRun(), (Passes{"postfx.view_distance", "atmosphere.apply", "clouds.march"})) << "still";
 }
 
 }  // namespace

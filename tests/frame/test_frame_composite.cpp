@@ -21,7 +21,9 @@ using namespace test;
 namespace {
 
 constexpr uint32_t kWidth = 32, kHeight = 18;
-constexpr double kSurfaceDistance = 5000.0;  // every pixel sees a surface this far away [m]
+constexpr double kSurfaceDistance = 5300.0;  // every pixel sees a surface this far away [m]: between two
+                                             // of the aerial perspective's 1 km slice ends (at one, either
+                                             // side of it is an approximation 3e-4 apart)
 
 class FrameCompositeTest : public ReversedZContextTest {
 protected:

@@ -2,8 +2,10 @@
 // light, camera and sun still and no wind. The first frame builds every persistent image; every later
 // frame records exactly the passes that depend on the frame (the jittered, temporally accumulated march,
 // scatter and their composites) and lists every LUT, noise texture and the clouds' shadow map as cached.
-// Shared inputs are made once: one pass makes the clouds' shadow map that the fog reads, the atmosphere's
-// transmittance LUT is the one every effect reads, and no two passes of the frame do the same work.
+// Shared inputs are made once: the host's depth is unprojected by one pass (postfx.view_distance) that
+// every effect reads, one pass makes the clouds' shadow map that the fog reads, the atmosphere's
+// transmittance LUT is the one every effect reads, the clouds' base noise is the froxel fog's noise (same
+// formula, size and seed), and no two passes of the frame do the same work.
 #include "fog_harness.h"
 
 #include <gtest/gtest.h>
@@ -72,20 +74,25 @@ protected:
 TEST_F(FramePlanTest, StillFramesRecordOnlyWhatDependsOnTheFrame) {
     const Passes first = planAndRun();
     // Every persistent image is built in the first frame.
-    for (const char* build :
-         {"atmosphere.transmittance", "atmosphere.multiple_scattering", "clouds.base_noise",
-          "clouds.detail_noise", "clouds.shadow", "froxel_fog.noise"})
+    for (const char* build : {"atmosphere.transmittance", "atmosphere.multiple_scattering",
+                              "clouds.base_noise", "clouds.detail_noise", "clouds.shadow"})
         EXPECT_NE(std::find(first.begin(), first.end(), build), first.end()) << build;
     EXPECT_TRUE(cached().empty());
+    // The froxel fog's noise (32³, seed 1) is the clouds' base noise: generated once, read by both.
+    EXPECT_EQ(std::find(first.begin(), first.end(), "froxel_fog.noise"), first.end());
+    const postfx::PlannedPass* firstScatter = last.pass("froxel_fog.scatter");
+    ASSERT_TRUE(firstScatter);
+    EXPECT_NE(std::find(firstScatter->reads.begin(), firstScatter->reads.end(), "clouds.base_noise"),
+              firstScatter->reads.end());
 
     const Passes still = planAndRun();
-    EXPECT_EQ(still, (Passes{"atmosphere.apply", "clouds.march", "clouds.temporal", "clouds.upsample",
-                             "froxel_fog.scatter", "froxel_fog.integrate", "froxel_fog.apply"}));
-    EXPECT_EQ(cached(),
-              (std::set<std::string>{"atmosphere.transmittance", "atmosphere.multiple_scattering",
-                                     "atmosphere.sky_view", "atmosphere.aerial_perspective",
-                                     "atmosphere.aerial_transmittance", "clouds.base_noise",
-                                     "clouds.detail_noise", "clouds.shadow_map", "froxel_fog.noise"}));
+    EXPECT_EQ(still,
+              (Passes{"postfx.view_distance", "atmosphere.apply", "clouds.march", "clouds.temporal",
+                      "clouds.upsample", "froxel_fog.scatter", "froxel_fog.integrate", "froxel_fog.apply"}));
+    EXPECT_EQ(cached(), (std::set<std::string>{"atmosphere.transmittance", "atmosphere.multiple_scattering",
+                                               "atmosphere.sky_view", "atmosphere.aerial_perspective",
+                                               "atmosphere.aerial_transmittance", "clouds.base_noise",
+                                               "clouds.detail_noise", "clouds.shadow_map"}));
     EXPECT_EQ(planAndRun(), still);  // and so on
 
     // Shared inputs, made once: the fog reads the clouds' shadow map and the atmosphere's transmittance LUT,
@@ -100,12 +107,23 @@ TEST_F(FramePlanTest, StillFramesRecordOnlyWhatDependsOnTheFrame) {
     EXPECT_NE(std::find(march->reads.begin(), march->reads.end(), "atmosphere.transmittance"),
               march->reads.end());
     EXPECT_EQ(std::set<std::string>(still.begin(), still.end()).size(), still.size());
+    // The host's depth is read by one pass; every pass that needs surface distances reads its result.
+    for (const postfx::PlannedPass& p : last.passes) {
+        const bool readsDepth = std::find(p.reads.begin(), p.reads.end(), "host.depth") != p.reads.end();
+        EXPECT_EQ(readsDepth, p.name == "postfx.view_distance") << p.name;
+    }
+    for (const char* reader : {"atmosphere.apply", "clouds.march", "clouds.upsample", "froxel_fog.apply"}) {
+        const postfx::PlannedPass* p = last.pass(reader);
+        ASSERT_TRUE(p) << reader;
+        EXPECT_NE(std::find(p->reads.begin(), p->reads.end(), "postfx.view_distance"), p->reads.end())
+            << reader;
+    }
 
     // The sun moves: the atmosphere's view LUTs and the clouds' shadow map are rebuilt, the noise is not.
     frame.sun.toSun = {0.3f, 0.45f, -0.8f};
     const Passes moved = planAndRun();
     for (const char* rebuilt : {"clouds.shadow"})
         EXPECT_NE(std::find(moved.begin(), moved.end(), rebuilt), moved.end()) << rebuilt;
-    for (const char* kept : {"clouds.base_noise", "froxel_fog.noise"})
+    for (const char* kept : {"clouds.base_noise", "clouds.detail_noise"})
         EXPECT_EQ(std::find(moved.begin(), moved.end(), kept), moved.end()) << kept;
 }

@@ -289,7 +289,9 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     const bool rgba32 = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT;
     const Views v = views(frame);
     const glm::dvec3 camera = planetCamera(frame);
-    const gpu::AtmosphereUniforms u = buildUniforms(frame, b.depthConvention(), v, camera);
+    const core::DepthInput depth = b.depthInput();
+    gpu::AtmosphereUniforms u = buildUniforms(frame, b.depthConvention(), v, camera);
+    if (depth.distance) u.flags.x |= gpu::kAtmosphereFlagViewDistance;
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
 
     const core::ImageRef transmittance = b.persistentImage(
@@ -350,7 +352,7 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kAtmosphereBindingColorIn, source, Use::StorageRead)
-        .bind(gpu::kAtmosphereBindingDepth, b.host(core::HostImage::Depth), Use::Sampled)
+        .bind(gpu::kAtmosphereBindingDepth, depth.image, Use::Sampled)
         .bind(gpu::kAtmosphereBindingColorOut, target, Use::StorageWrite);
     return Status::success();
 }

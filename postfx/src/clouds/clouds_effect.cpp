@@ -354,14 +354,15 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         t = history_.decide(frame, s.temporal, temporalKey(frame), false);
         if (t.historyValid) windDelta = glm::vec3(glm::dvec3(s.wind) * (frame.timeSeconds - historyTime_));
     }
-    const gpu::CloudUniforms u = buildUniforms(frame, b.depthConvention(), windDelta);
+    const core::DepthInput depthInput = b.depthInput();
+    gpu::CloudUniforms u = buildUniforms(frame, b.depthConvention(), windDelta);
+    if (depthInput.distance) u.flags.x |= gpu::kCloudFlagViewDistance;
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
 
     // The atmosphere's, declared earlier this frame when it runs.
     const core::BufferRef atmosphereUniforms =
         frame.atmosphere.enabled ? b.findUniforms(atmosphere::kUniforms) : core::BufferRef{};
     const bool withAtmosphere = atmosphereUniforms.valid();
-    const core::ImageRef depth = b.host(core::HostImage::Depth);
 
     if (castsShadows(frame)) {  // before the fogs, which read it; held: the host reads it next frame
         core::ImageDesc shadowDesc;
@@ -383,7 +384,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     b.pass(kMarch[scatter ? 1 + temporal : 0][withAtmosphere][rgba32], groupsFor(march.x), groupsFor(march.y),
            1)
         .bind(gpu::kCloudBindingUniforms, uniforms)
-        .bind(gpu::kCloudBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kCloudBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kCloudBindingBaseNoise, base, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kCloudBindingDetailNoise, detail, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kCloudBindingCoverageMap, coverageMap, mapUse, SamplerKind::LinearRepeat);
@@ -442,7 +443,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     b.pass(kUpsample[temporal && !rgba32 ? 2 : rgba32], groupsFor(width), groupsFor(height), 1)
         .bind(gpu::kCloudBindingUniforms, uniforms)
         .bind(gpu::kCloudBindingColorIn, b.compositeSource(), Use::StorageRead)
-        .bind(gpu::kCloudBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kCloudBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kCloudBindingScatter, result, Use::StorageRead)
         .bind(gpu::kCloudBindingColorOut, b.compositeTarget(), Use::StorageWrite);
     return Status::success();

@@ -133,8 +133,7 @@ Status AutoQuality::selectJoint(const std::vector<JointRequest>& requests, const
         if (!s.ok()) continue;
         double other = 0.0;
         for (const PassTimer::TaggedTiming& t : timings) {
-            const bool counted =
-                t.effect < 0 || std::find(others.begin(), others.end(), t.effect) != others.end();
+            const bool counted = std::find(others.begin(), others.end(), t.effect) != others.end();
             if (t.autoTimed && counted) other += t.milliseconds;
         }
         otherMs_ = other;

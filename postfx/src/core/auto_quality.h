@@ -48,9 +48,10 @@ public:
     // presets' errors. While a request's presets are not all measured, each unmeasured one measures (as
     // select) and the others use their fallback; then the presets of chooseWithinBudget (core/budget.h)
     // over the measured times and the errors, within `budgetMs` less the other work's time: the
-    // autoTimed passes of the effects in `others` (this frame's other active effects) and the context's
-    // own, in the newest frame the host has waited for (collect; the last value read when none is
-    // readable). `presets` gets one per request. Fails only as select does.
+    // autoTimed passes of the effects in `others` (this frame's other active effects; -1: the context's
+    // own passes, postfx.view_distance, when this frame has them), in the newest frame the host has waited
+    // for (collect; the last value read when none is readable). `presets` gets one per request. Fails only as
+    // select does.
     struct JointRequest {
         AutoQualityKey key;
         std::vector<double> errors;  // per preset, lowest first

@@ -4,6 +4,7 @@
 #include "core/context_impl.h"
 #include "effects.h"
 
+#include <algorithm>
 #include <string>
 
 namespace postfx {
@@ -195,6 +196,10 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         effect.applyPreset(resolved, preset);
     }
     if (budget) {
+        // The context's own pass in a frame of two or more effects (postfx.view_distance) is other work.
+        if (std::count_if(effects.begin(), effects.end(), [&](const auto& e) { return e->active(frame); }) >=
+            2)
+            others.push_back(-1);
         std::vector<uint32_t> presets;
         if (Status s = autoQuality.selectJoint(joint, others, double(frame.budgetMs), timer, presets); !s)
             return {s.code, "FrameInfo.budgetMs: " + s.message};
@@ -210,6 +215,9 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         if (Status s = effect->validate(resolved); !s) return s;
 
     graph.begin(out, resolved);
+    // Every effect reads the host's depth: with two or more active, it is unprojected once for all.
+    out.shareDepth = std::count_if(effects.begin(), effects.end(),
+                                   [&](const auto& effect) { return effect->active(resolved); }) >= 2;
     for (size_t e = 0; e < effects.size(); ++e) {
         if (!effects[e]->active(resolved)) continue;
         core::FrameBuilder builder(graph, out, int(e));

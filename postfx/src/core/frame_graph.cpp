@@ -2,6 +2,7 @@
 
 #include "common/shared.h"
 #include "core/barriers.h"
+#include "core/camera_math.h"
 #include "core/checks.h"
 #include "postfx_objects_spirv.h"
 
@@ -20,6 +21,15 @@ constexpr Binding kCopyBindings[] = {{gpu::kCopyBindingIn, VK_DESCRIPTOR_TYPE_ST
                                      {gpu::kCopyBindingOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 const ComputePipelineDesc kCopy16{"postfx.copy", spirv::core_copy_comp, kCopyBindings, 8};
 const ComputePipelineDesc kCopy32{"postfx.copy", spirv::core_copy_comp_COLOR_RGBA32F, kCopyBindings, 8};
+
+// postfx.view_distance (shaders/core/view_distance.comp): the host's depth as surface distances, once for
+// every effect that reads it.
+constexpr Binding kViewDistanceBindings[] = {
+    {gpu::kViewDistanceBindingDepth, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+    {gpu::kViewDistanceBindingOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+const ComputePipelineDesc kViewDistance{"postfx.view_distance", spirv::core_view_distance_comp,
+                                        kViewDistanceBindings, 80};
+inline constexpr ResourceId kViewDistanceImage{"postfx.view_distance"};
 
 bool reads(Use u) {
     return u == Use::StorageRead || u == Use::StorageReadWrite || u == Use::Sampled || u == Use::Uniform;
@@ -172,9 +182,46 @@ void FrameBuilder::exportImage(ImageRef image) {
     if (image.valid()) f_.resources[image.index].exported = true;
 }
 
+DepthInput FrameBuilder::depthInput() {
+    const ImageRef depth = host(HostImage::Depth);
+    if (!f_.shareDepth) return {depth, false};
+    if (const ImageRef shared = find(kViewDistanceImage); shared.valid()) return {shared, true};
+    // Declared by the context (effect -1), before the first reader's passes.
+    FrameBuilder context(graph_, f_, -1);
+    const VkExtent2D e = f_.info->color.extent;
+    ImageDesc desc;
+    desc.format = VK_FORMAT_R32_SFLOAT;
+    desc.extent = {e.width, e.height, 1};
+    const ImageRef distance = context.transientImage(kViewDistanceImage, desc);
+    struct {
+        glm::mat4 clipToView;
+        glm::vec4 params;
+    } push{};
+    const FrameInfo& info = *f_.info;
+    push.clipToView =
+        glm::mat4(glm::inverse(glm::dmat4(info.camera.projection) * rotationOnly(info.camera.view)));
+    push.params = glm::vec4(depthConvention().reversedZ ? 0.0f : 1.0f, float(e.width), float(e.height), 0.0f);
+    static_assert(sizeof push == 80);
+    const uint32_t g = gpu::kViewDistanceGroupSize, rows = g * gpu::kViewDistanceRows;
+    context.pass(kViewDistance, (e.width + g - 1) / g, (e.height + rows - 1) / rows, 1)
+        .bind(gpu::kViewDistanceBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kViewDistanceBindingOut, distance, Use::StorageWrite)
+        .push(&push, sizeof push);
+    return {distance, true};
+}
+
 ImageRef FrameBuilder::find(const ResourceId& id) const {
     for (size_t i = 0; i < f_.resources.size(); ++i)
         if (f_.resources[i].id == &id && isImage(f_.resources[i])) return {uint16_t(i)};
+    return {};
+}
+
+ImageRef FrameBuilder::findPersistent(const ImageDesc& desc, uint64_t buildKey) const {
+    for (size_t i = 0; i < f_.resources.size(); ++i) {
+        const ResourceDecl& r = f_.resources[i];
+        if (r.kind == ResourceDecl::Kind::Persistent && r.buildKey == buildKey && sameDesc(r.desc, desc))
+            return {uint16_t(i)};
+    }
     return {};
 }
 

@@ -108,11 +108,20 @@ struct Frame {
     std::vector<Access> accesses;
     std::vector<std::byte> uniformData;
     uint16_t host[4] = {kNoResource, kNoResource, kNoResource, kNoResource};  // by HostImage
+    // Two or more of the frame's effects read the host's depth: postfx.view_distance unprojects it once
+    // for all of them (FrameBuilder::depthInput); set by the context before the effects declare.
+    bool shareDepth = false;
     bool composited = false;       // a pass has written the composite target
     std::vector<uint8_t> scratch;  // compile()'s
 };
 
 class FrameGraph;
+
+// What an effect reads for its pixels' surface distances (FrameBuilder::depthInput).
+struct DepthInput {
+    ImageRef image;         // sampled with texelFetch at the pixel
+    bool distance = false;  // the shared surface distance [m] (R32F); false: the host's depth
+};
 
 // What an effect declares through; handed to Effect::declare.
 // An image another effect may have declared earlier this frame, for a consumer's sampled binding: that
@@ -136,6 +145,12 @@ public:
 
     // The host's depth and shadow map (invalid when absent).
     ImageRef host(HostImage image) const { return {f_.host[size_t(image)]}; }
+    // The image an effect reads its pixels' surface distances from (docs/architecture.md, "Shared
+    // inputs"): when two or more of the frame's effects read the host's depth, postfx.view_distance's
+    // R32F image (declared, with its pass, by the first call of the frame; the distance along the pixel
+    // centre's ray, +∞ without geometry, NaN for a NaN depth); otherwise the host's depth, which the effect
+    // unprojects itself. Call it before declaring a pass, not between a pass and its bindings.
+    DepthInput depthInput();
     // Compositing into color: the image the next composite reads (host color, or the separate output
     // once an earlier pass has written it) and the one it writes (the output when given, else color).
     ImageRef compositeSource() const;
@@ -159,6 +174,10 @@ public:
     void exportImage(ImageRef image);
     // An image another effect declared earlier this frame (invalid if it did not).
     ImageRef find(const ResourceId& id) const;
+    // A persistent image declared earlier this frame with `desc` and `buildKey` (invalid if none): for
+    // contents several effects would build alike (a noise texture of one formula, size and seed), so that
+    // they share one image and one build.
+    ImageRef findPersistent(const ImageDesc& desc, uint64_t buildKey) const;
     // Uniform data another effect declared earlier this frame (invalid if it did not).
     BufferRef findUniforms(const ResourceId& id) const;
     // Uniform data for this frame: `bytes` copied into a ring of framesInFlight slots.

@@ -143,12 +143,14 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
 
     const bool temporal = frame.fog.temporal.enabled;
 
+    const core::DepthInput depthInput = b.depthInput();
     const core::ImageRef noiseImage = declareNoise(b, noise, {kNoise, kNoNoise, kNoiseGenerate});
     core::ImageDesc marchDesc;
     marchDesc.format = frame.color.format;
     marchDesc.extent = {march.x, march.y, 1};
     marchDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-    const gpu::FogUniforms u = buildUniforms(frame, b.depthConvention(), noise.enabled, shadowRead);
+    gpu::FogUniforms u = buildUniforms(frame, b.depthConvention(), noise.enabled, shadowRead);
+    if (depthInput.distance) u.flags.x |= gpu::kFogFlagViewDistance;
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
 
     const core::ImageRef depth = b.host(HostImage::Depth);
@@ -163,7 +165,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
         b.pass(kRaymarch[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
             .bind(gpu::kFogBindingColorIn, source, Use::StorageRead)
-            .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
+            .bind(gpu::kFogBindingDepth, depthInput.image, Use::Sampled)
             .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
             .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
             .bind(gpu::kFogBindingUniforms, uniforms)
@@ -189,7 +191,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         }
     }
     b.pass(kRaymarchReduced[temporal][rgba32], groupsFor(march.x), groupsFor(march.y), 1)
-        .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kFogBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFogBindingUniforms, uniforms)
@@ -220,7 +222,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
     b.pass(kUpsample[temporal && !rgba32 ? 2 : rgba32], groupsFor(full.x), groupsFor(full.y), 1)
         .bind(gpu::kFogBindingColorIn, source, Use::StorageRead)
-        .bind(gpu::kFogBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kFogBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kFogBindingScatter, result, Use::StorageRead)
         .bind(gpu::kFogBindingUniforms, uniforms)
         .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);

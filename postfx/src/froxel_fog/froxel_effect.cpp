@@ -159,6 +159,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const bool shadowRead = frame.shadowMap.image.present() && (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f);
     const UVec3 grid = froxelGridSize(s, frame.color.extent.width, frame.color.extent.height);
 
+    const core::DepthInput depthInput = b.depthInput();
     const core::ImageRef noise = fog::declareNoise(b, s.noise, {kNoise, kNoNoise, kNoiseGenerate});
 
     // Local lights: their buffer, and the light lists when there are many.
@@ -166,8 +167,9 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const uint32_t lightCount = packLights(frame, lights);
     const bool lists = lightCount > 0 && lightCount >= s.lightListMinLights;
     const uint32_t words = lists ? (lightCount + 31) / 32 : 0;
-    const PassUniforms u =
+    PassUniforms u =
         buildPassUniforms(frame, b.depthConvention(), grid, lightCount, words, s.noise.enabled, shadowRead);
+    if (depthInput.distance) u.fog.flags.x |= gpu::kFogFlagViewDistance;
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
     core::BufferRef lightBuffer;
     if (lightCount > 0) lightBuffer = b.uniforms(kLights, &lights, sizeof lights);
@@ -250,7 +252,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
     b.pass(kApplyPass[rgba32], groupsFor(frame.color.extent.width), groupsFor(frame.color.extent.height), 1)
         .bind(gpu::kFroxelBindingColorIn, source, Use::StorageRead)
-        .bind(gpu::kFroxelBindingDepth, depth, Use::Sampled)
+        .bind(gpu::kFroxelBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kFroxelBindingUniforms, uniforms)
         .bind(gpu::kFroxelBindingIntegrated, integrated, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
