@@ -27,7 +27,8 @@ protected:
     postfx::FrameInfo frame() const {
         postfx::FrameInfo f;
         f.cameraCut = true;
-        f.camera = lookCamera({0.0, 1.7, 0.0}, {0.2, 0.35, -1.0}, {0.0, 1.0, 0.0}, 70.0f, float(kWidth) / kHeight);
+        f.camera =
+            lookCamera({0.0, 1.7, 0.0}, {0.2, 0.35, -1.0}, {0.0, 1.0, 0.0}, 70.0f, float(kWidth) / kHeight);
         f.sun.toSun = glm::normalize(glm::vec3(0.4f, 0.3f, -0.8f));
         f.sun.illuminance = {1e5f, 1e5f, 1e5f};
         f.ambient = {300.0f, 400.0f, 600.0f};
@@ -60,9 +61,10 @@ protected:
             for (uint32_t i = 0; i < kWidth; ++i) {
                 const size_t p = size_t(j) * kWidth + i;
                 const double distance = 0.5 * std::pow(1e4, double((i * 5 + j * 3) % 17) / 16.0);
-                im.depth[p] = i % 6 == 5 ? 0.0f
-                                         : depthAtDistance(f.camera, pixelDirection(f.camera, i, j, kWidth, kHeight),
-                                                           distance);
+                im.depth[p] = i % 6 == 5
+                                  ? 0.0f
+                                  : depthAtDistance(f.camera, pixelDirection(f.camera, i, j, kWidth, kHeight),
+                                                    distance);
                 for (int c = 0; c < 4; ++c)
                     im.color[p * 4 + c] = 50.0f + 10.0f * float((i * 7 + j * 3 + c) % 11);
             }
@@ -70,7 +72,8 @@ protected:
     }
 
     // `f` in a new context over `im`'s color; the plan it recorded in `plan`.
-    std::vector<float> render(const postfx::FrameInfo& f, const FogHarnessImages& im, postfx::FramePlan& plan) {
+    std::vector<float> render(const postfx::FrameInfo& f, const FogHarnessImages& im,
+                              postfx::FramePlan& plan) {
         std::unique_ptr<postfx::Context> c;
         postfx::ContextCreateInfo info;
         info.depth.reversedZ = true;
@@ -113,7 +116,9 @@ TEST_F(FrameViewDistanceTest, OneEffectReadsTheDepthItselfTwoShareOneDistancePas
     const std::vector<float> together = render(both, im, planBoth);
     ASSERT_TRUE(planBoth.pass("postfx.view_distance"));
     const std::vector<std::string> order = passNames(planBoth);
-    const auto at = [&](const char* name) { return std::find(order.begin(), order.end(), name) - order.begin(); };
+    const auto at = [&](const char* name) {
+        return std::find(order.begin(), order.end(), name) - order.begin();
+    };
     EXPECT_LT(at("postfx.view_distance"), at("clouds.march"));  // made before its first reader
     for (const postfx::PlannedPass& p : planBoth.passes)
         EXPECT_EQ(reads(planBoth, p.name.c_str(), "host.depth"), p.name == "postfx.view_distance") << p.name;
@@ -126,12 +131,15 @@ TEST_F(FrameViewDistanceTest, OneEffectReadsTheDepthItselfTwoShareOneDistancePas
         if (k % 4 == 3) continue;
         const double expected = oneAfterTheOther[k];
         ASSERT_TRUE(std::isfinite(together[k])) << k;
-        worst = std::max(worst, std::abs(double(together[k]) - expected) / std::max(std::abs(expected), 1e-3));
-        largestChange = std::max(largestChange, std::abs(expected - double(im.color[k])) / double(im.color[k]));
+        worst =
+            std::max(worst, std::abs(double(together[k]) - expected) / std::max(std::abs(expected), 1e-3));
+        largestChange =
+            std::max(largestChange, std::abs(expected - double(im.color[k])) / double(im.color[k]));
     }
-    std::printf("[ frame ] shared distances against each effect's own unprojection: worst relative "
-                "difference %.3g (the effects change the color by up to %.3g)\n",
-                worst, largestChange);
+    std::printf(
+        "[ frame ] shared distances against each effect's own unprojection: worst relative "
+        "difference %.3g (the effects change the color by up to %.3g)\n",
+        worst, largestChange);
     EXPECT_GT(largestChange, 0.1);  // the effects do change the image
     EXPECT_LT(worst, 1e-4);         // float rounding of the ray's direction and distance
 }
