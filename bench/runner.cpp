@@ -86,6 +86,7 @@ void Runner::Impl::readStrided(uint32_t stride, uint32_t w, uint32_t h, std::vec
                 out[dst + c] = glm::unpackHalf1x16(half[src + c]);
         }
     }
+    demo::unexpose(out, renderer->preExposure());  // errors in physical units
 }
 
 Runner::Impl::~Impl() {

@@ -61,14 +61,11 @@ bool writeImage(const std::string& path, const ImageF& image, float ev100, std::
         return false;
     }
     if (ext == ".exr") {
-        OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::HALF);
+        // 32-bit floats: radiance in physical units (the renderer divided its pre-exposure out) exceeds
+        // half's 65,504 toward a 100,000 lux sun.
+        OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::FLOAT);
         spec.attribute("compression", "zip");
-        // Half floats: values past the format's range become its largest finite value, never Inf
-        // (as postfx's RGBA16F outputs do); NaN stays NaN.
-        std::vector<float> clamped(image.rgba);
-        for (float& v : clamped)
-            if (!std::isnan(v)) v = std::clamp(v, -65504.0f, 65504.0f);
-        return write(path, spec, OIIO::TypeDesc::FLOAT, clamped.data(), error);
+        return write(path, spec, OIIO::TypeDesc::FLOAT, image.rgba.data(), error);
     }
     if (ext == ".png") {
         // Photometric exposure (Lagarde & de Rousiers 2014): saturation-based, max luminance 1.2·2^EV100.

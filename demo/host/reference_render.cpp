@@ -166,6 +166,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const auto* half = static_cast<const uint16_t*>(r.readback.mapped);
     for (size_t i = 0; i < color.size(); ++i)
         color[i] = glm::unpackHalf1x16(half[i]);
+    unexpose(color, r.preExposure);  // physical units, as the references work in
     std::vector<float> depth = floatsAt(buffer, depthOffset, pixels);
     glm::mat4 projection = in.camera.projection;
     out.width = r.extent.width;

@@ -297,13 +297,15 @@ bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
                  "vkWaitForFences", error))
         return false;
 
-    // RGBA16F -> RGBA32F (the memory is coherent; the barrier made the copy visible to the host).
+    // RGBA16F -> RGBA32F (the memory is coherent; the barrier made the copy visible to the host), the
+    // pre-exposure divided out: radiance in physical units.
     out.width = r.extent.width;
     out.height = r.extent.height;
     out.rgba.resize(size_t(out.width) * out.height * 4);
     const auto* half = static_cast<const uint16_t*>(r.readback.mapped);
     for (size_t i = 0; i < out.rgba.size(); ++i)
         out.rgba[i] = glm::unpackHalf1x16(half[i]);
+    unexpose(out.rgba, r.preExposure);
     return true;
 }
 
@@ -318,6 +320,15 @@ const ShadowMapInfo& Renderer::shadowMap() const {
 }
 postfx::Context& Renderer::postfxContext() const {
     return *impl_->postfx;
+}
+float Renderer::preExposure() const {
+    return impl_->preExposure;
+}
+
+void unexpose(std::vector<float>& rgba, float preExposure) {
+    const double scale = 1.0 / double(preExposure);
+    for (size_t i = 0; i < rgba.size(); ++i)
+        if (i % 4 != 3) rgba[i] = float(double(rgba[i]) * scale);
 }
 
 }  // namespace demo

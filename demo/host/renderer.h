@@ -40,6 +40,10 @@ struct RenderOptions {
     bool reversedZ = true;     // depth convention of the G-buffer (and of the postfx context)
     bool infiniteFar = false;  // projection without a far plane
     uint32_t shadowMapSize = 2048;
+    // Store the HDR image pre-exposed (scenePreExposure; postfx::FrameInfo::preExposure), as a host
+    // lighting in physical units into RGBA16F should; false: physical units (pre-exposure 1), where a
+    // 100,000 lux sun's in-scattering clips at RGBA16F's 65,504.
+    bool preExpose = true;
 };
 
 // Linear RGBA32F pixels, row-major, top row first.
@@ -147,6 +151,9 @@ public:
     const ImageInfo& depthImage() const;  // D32_SFLOAT, DEPTH_STENCIL_READ_ONLY_OPTIMAL
     const ShadowMapInfo& shadowMap() const;
     postfx::Context& postfxContext() const;  // the context created from this renderer's handles
+    // The pre-exposure of the last recorded frame: hdrImage() holds radiance × this (scenePreExposure:
+    // the camera's exposure, within postfx's limits). render() and renderReference() divide it out.
+    float preExposure() const;
 
     struct Impl;
 
@@ -155,7 +162,10 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-// Writes linear radiance: .exr as half-float RGBA un-tonemapped (zip), .png as 8-bit RGB tonemapped:
+// Divides the pre-exposure out of RGBA radiance (alpha untouched): physical units again.
+void unexpose(std::vector<float>& rgba, float preExposure);
+
+// Writes linear radiance: .exr as 32-bit float RGBA un-tonemapped (zip), .png as 8-bit RGB tonemapped:
 // exposure 1 / (1.2 · 2^ev100) (camera.ev100), ACES fitted curve (Narkowicz 2015), sRGB OETF.
 // Returns false with `error` on failure (an unknown extension is named).
 bool writeImage(const std::string& path, const ImageF& image, float ev100, std::string& error);

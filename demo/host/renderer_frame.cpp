@@ -3,6 +3,7 @@
 #include "host/camera_math.h"
 #include "host/renderer_impl.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -19,9 +20,10 @@ constexpr VkPipelineStageFlags kUniformStages =
     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
+// The light is pre-exposed (`preExposure`): the lighting writes radiance × preExposure, as postfx does.
 shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions& options,
                                         const glm::mat4& proj, const ShadowFit& fit, bool shadows,
-                                        const AtmosphereLighting& atmosphere) {
+                                        const AtmosphereLighting& atmosphere, float preExposure) {
     const Camera& cam = scene.camera;
     glm::mat4 viewRel = cameraView(cam);
     viewRel[3] = glm::vec4(0, 0, 0, 1);  // rotation only: positions are camera-relative
@@ -32,9 +34,9 @@ shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions&
     u.shadowViewProj = fit.viewProj;
     u.cameraPosition = glm::vec4(cam.position, 1.0f);
     u.toSun = glm::vec4(glm::normalize(scene.sun.direction), shadows ? 1.0f : 0.0f);
-    u.sunIlluminance = glm::vec4(scene.sun.illuminance, 0.0f);
-    u.ambient = glm::vec4(atmosphere.ambient, 0.0f);
-    u.sky = glm::vec4(atmosphere.sky, 0.0f);
+    u.sunIlluminance = glm::vec4(scene.sun.illuminance * preExposure, 0.0f);
+    u.ambient = glm::vec4(atmosphere.ambient * preExposure, 0.0f);
+    u.sky = glm::vec4(atmosphere.sky * preExposure, 0.0f);
     u.depthParams = glm::vec4(options.reversedZ ? 0.0f : 1.0f, 1.0f / float(options.shadowMapSize),
                               fit.texelWorldSize, float(scene.lights.size()));
     u.extent = glm::uvec4(options.width, options.height, 0, 0);
@@ -46,7 +48,7 @@ shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions&
 // The scene's lights for lighting.comp: positions camera-relative (computed in double), angles as cosines.
 // The first scene.lights.size() entries of shared::LightsUniforms (at most kMaxDemoLights: recordFrame
 // checks).
-std::vector<shared::GpuLight> makeGpuLights(const Scene& scene) {
+std::vector<shared::GpuLight> makeGpuLights(const Scene& scene, float preExposure) {
     std::vector<shared::GpuLight> out(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const postfx::LocalLight l = toLocalLight(scene.lights[i]);
@@ -54,7 +56,7 @@ std::vector<shared::GpuLight> makeGpuLights(const Scene& scene) {
         const glm::vec3 relative(glm::dvec3(l.position) - glm::dvec3(scene.camera.position));
         shared::GpuLight& g = out[i];
         g.positionRadius = glm::vec4(relative, l.sourceRadius);
-        g.intensityRange = glm::vec4(glm::vec3(l.intensity), l.range);
+        g.intensityRange = glm::vec4(glm::vec3(l.intensity) * preExposure, l.range);
         g.directionCosOuter = glm::vec4(glm::vec3(l.direction), spot ? std::cos(l.outerConeAngle) : -2.0f);
         g.cosInner = glm::vec4(spot ? std::cos(l.innerConeAngle) : -1.0f, 0.0f, 0.0f, 0.0f);
     }
@@ -62,6 +64,22 @@ std::vector<shared::GpuLight> makeGpuLights(const Scene& scene) {
 }
 
 }  // namespace
+
+float scenePreExposure(const Scene& scene, const glm::vec3& ambient, const RenderOptions& options) {
+    if (!options.preExpose) return 1.0f;
+    double p = exposureFromEv100(scene.camera.ev100);
+    double light = 0.0, intensity = 0.0;
+    for (int c = 0; c < 3; ++c)
+        light = std::max({light, double(scene.sun.illuminance[c]), double(ambient[c])});
+    for (const Light& l : scene.lights)
+        for (int c = 0; c < 3; ++c)
+            intensity = std::max(intensity, double(toLocalLight(l).intensity[c]));
+    // A margin under postfx's limits for the float rounding of p and of the products.
+    if (light > 0.0) p = std::min(p, 1e7 / light);
+    if (intensity > 0.0) p = std::min(p, 1e9 / intensity);
+    // 2^-33 ≈ 1.2e-10 and 2^33 ≈ 8.6e9: within postfx's [1e-10, 1e10]; rounding down keeps the limits.
+    return float(std::exp2(std::clamp(std::floor(std::log2(p)), -33.0, 33.0)));
+}
 
 ShadowFit Renderer::Impl::shadowFit(const Scene& scene) const {
     return fitShadowMap(scene, options.shadowMapSize);
@@ -97,6 +115,7 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
         // visibly moving shadow edges in the volume (a texel is ~1-3 cm in the demo scenes).
         in.shadowMap.depthBias = shadowDepthBias(fit);
     }
+    in.preExposure = scenePreExposure(scene, in.ambient, options);
     in.fog = scene.fog;
     in.froxelFog = froxelFogSettings(scene);
     in.atmosphere = scene.atmosphere;
@@ -124,6 +143,7 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
     frame.output = fogOutput;
     frame.timeSeconds = in.timeSeconds;
     frame.budgetMs = scene.budgetMs;
+    frame.preExposure = in.preExposure;
     frame.camera = in.camera;
     frame.sun = in.sun;
     frame.ambient = in.ambient;
@@ -207,8 +227,10 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     shadowInfo.texelWorldSize = fit.texelWorldSize;
 
     // Frame uniforms: overwrite after the previous frame's readers (WAR), then publish to this frame's.
+    const AtmosphereLighting& surfaceLight = atmosphereLighting.update(scene);
+    preExposure = scenePreExposure(scene, surfaceLight.ambient, options);
     shared::FrameUniforms u =
-        makeFrameUniforms(scene, options, projection(scene), fit, shadows, atmosphereLighting.update(scene));
+        makeFrameUniforms(scene, options, projection(scene), fit, shadows, surfaceLight, preExposure);
     const postfx::CloudShadowTransform clouds = bindCloudShadow(cmd);
     u.cloudShadowU = glm::vec4(glm::dvec4(clouds.u));
     u.cloudShadowV = glm::vec4(glm::dvec4(clouds.v));
@@ -219,7 +241,7 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
                   kUniformStages, VK_ACCESS_UNIFORM_READ_BIT);
     // Local lights (lighting pass only): the same, for the entries in use (none: nothing written).
     if (!scene.lights.empty()) {
-        const std::vector<shared::GpuLight> lights = makeGpuLights(scene);
+        const std::vector<shared::GpuLight> lights = makeGpuLights(scene, preExposure);
         bufferBarrier(cmd, lightsUniforms, kCompute, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                       VK_ACCESS_TRANSFER_WRITE_BIT);
         vkCmdUpdateBuffer(cmd, lightsUniforms.buffer, 0, lights.size() * sizeof(shared::GpuLight),

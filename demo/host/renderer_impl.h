@@ -30,7 +30,17 @@ struct PostfxInputs {
     postfx::FroxelFogSettings froxelFog;
     postfx::AtmosphereSettings atmosphere;
     postfx::CloudSettings clouds;
+    // The factor the HDR image is stored with (postfx::FrameInfo::preExposure; scenePreExposure).
+    float preExposure = 1.0f;
 };
+
+// The pre-exposure the demo stores its HDR image with: the camera's exposure 1 / (1.2 · 2^ev100) rounded
+// down to a power of two (multiplying by it and dividing it out are exact in float and half: pre-exposing
+// moves values in range, it rounds nothing), so that what shows near white on screen is near 1 in the
+// RGBA16F image and a 100,000 lux sun's in-scattering fits it; limited to what postfx accepts
+// (FrameInfo::preExposure: its range, the pre-exposed sun and ambient ≤ 1e7, each light's intensity
+// ≤ 1e9). 1 when options.preExpose is off. `ambient`: the surfaces' (and postfx's) ambient.
+float scenePreExposure(const Scene& scene, const glm::vec3& ambient, const RenderOptions& options);
 
 struct Renderer::Impl {
     explicit Impl(VulkanHost& h) : host(h) {}
@@ -73,6 +83,8 @@ struct Renderer::Impl {
     postfx::CloudShadowTransform cloudShadow;
     // requestCameraCut(): the next recorded frame is a camera cut (FrameInfo::cameraCut).
     bool cameraCutRequested = false;
+    // The pre-exposure of the last recorded frame (its HDR image holds radiance × this).
+    float preExposure = 1.0f;
 
     // renderReference(): where postfx writes the fogged frame so that the HDR image keeps the
     // un-fogged scene (FrameInfo::output); created on first use.

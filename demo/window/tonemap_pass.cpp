@@ -97,7 +97,7 @@ void TonemapPass::destroy() {
     device_ = VK_NULL_HANDLE;
 }
 
-void TonemapPass::record(VkCommandBuffer cmd, float ev100, bool swapRedBlue) const {
+void TonemapPass::record(VkCommandBuffer cmd, float ev100, float preExposure, bool swapRedBlue) const {
     const VkPipelineStageFlags compute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     const VkPipelineStageFlags transfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
     // The previous frame's blit/copy read the output; its content is overwritten entirely.
@@ -108,8 +108,10 @@ void TonemapPass::record(VkCommandBuffer cmd, float ev100, bool swapRedBlue) con
                  compute, VK_ACCESS_SHADER_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
 
     shared::TonemapPush push{};
-    push.params = glm::vec4(1.0f / (shared::kExposureSaturation * std::exp2(ev100)),
-                            swapRedBlue ? 1.0f : 0.0f, 0.0f, 0.0f);
+    // The image holds radiance × preExposure: the exposure applied on top is exposure / preExposure.
+    push.params = glm::vec4(
+        float(1.0 / (double(shared::kExposureSaturation) * std::exp2(double(ev100)) * double(preExposure))),
+        swapRedBlue ? 1.0f : 0.0f, 0.0f, 0.0f);
     push.extent = glm::uvec4(output_.extent.width, output_.extent.height, 0, 0);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set_, 0, nullptr);

@@ -22,7 +22,8 @@ public:
     // Records: output -> GENERAL (after the previous frame's transfer read), HDR compute writes ->
     // this read, the dispatch, then output -> TRANSFER_SRC_OPTIMAL readable by TRANSFER.
     // swapRedBlue: store (b, g, r) for a bit-exact copy into a BGRA image.
-    void record(VkCommandBuffer cmd, float ev100, bool swapRedBlue) const;
+    // `preExposure`: the factor the HDR image holds radiance with (Renderer::preExposure).
+    void record(VkCommandBuffer cmd, float ev100, float preExposure, bool swapRedBlue) const;
 
     const GpuImage& output() const { return output_; }  // RGBA8_UNORM, TRANSFER_SRC_OPTIMAL after record
 

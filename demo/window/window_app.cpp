@@ -6,6 +6,7 @@
 #include "scene/motion.h"
 #include "window/atmosphere_controls.h"
 #include "window/budget_controls.h"
+#include "window/camera_controls.h"
 #include "window/clouds_controls.h"
 #include "window/fly_camera.h"
 #include "window/fog_controls.h"
@@ -98,6 +99,7 @@ private:
     LightControls lightControls_;            // edits scene_.lights
     AtmosphereControls atmosphereControls_;  // edits scene_.atmosphere, scene_.sun.direction, the camera's y
     CloudsControls cloudsControls_;          // edits scene_.clouds
+    CameraControls cameraControls_;          // edits scene_.camera.ev100 (exposure and pre-exposure)
     BudgetControls budgetControls_;          // edits scene_.budgetMs and the effects' quality
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers_{};
     std::array<VkFence, kFramesInFlight> fences_{};              // signalled when the slot's frame completed
@@ -291,7 +293,7 @@ std::vector<std::string> App::planLines() {
 
 void App::recordCommands(VkCommandBuffer cmd, uint32_t imageIndex) {
     // Renderer::recordFrame has already been recorded: HDR radiance after postfx, GENERAL.
-    tonemap_.record(cmd, scene_.camera.ev100, swapchain_.srgb && swapchain_.bgr);
+    tonemap_.record(cmd, scene_.camera.ev100, renderer_->preExposure(), swapchain_.srgb && swapchain_.bgr);
 
     const VkImage target = swapchain_.images[imageIndex];
     const GpuImage& src = tonemap_.output();
@@ -369,6 +371,7 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
         // values are always valid for postfx, and at most one of the two fogs is on.
         ui_->build(stats_, [this] {
             // In the effects' composite order: the atmosphere (the farthest) first.
+            cameraControls_.build(scene_, renderer_->preExposure());
             budgetControls_.build(scene_, renderer_->postfxContext());
             atmosphereControls_.build(scene_);
             cloudsControls_.build(scene_);

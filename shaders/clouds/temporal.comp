@@ -103,6 +103,7 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvTexel, float expectedSur
     // Too little of the footprint matched (its positive lobes mostly rejected): no history.
     if (!(weight > 0.25) || !(positive > 0.5)) return false;
     history = sum / weight;
+    history.rgb *= temporal.previous.y;  // the previous frame's pre-exposure -> this one's
     return true;
 }
 

@@ -57,8 +57,9 @@ PFX_CONST(uint, kTemporalMaxSpheres, 64u);  // postfx::kTemporalMaxRejectedSpher
 struct TemporalUniforms {
     mat4 previousClip;  // current camera-relative position -> the previous frame's clip space
     vec4 cameraDelta;   // xyz: current camera position - previous [m]; w: the current frame's weight [1]
-    vec4 previous;      // froxel fog: x: the previous grid's near [m], y: history radiance factor
-                        // (current storage scale / previous)
+    vec4 previous;      // x: the previous grid's near [m] (froxel fog); y: the history's radiance factor:
+                        // this frame's pre-exposure / the previous frame's (froxel fog: times its
+                        // storage scale / the previous)
     uvec4 state;        // x: 1 when the history is valid, y: rejected spheres
     vec4 spheres[64];   // rejected spheres: xyz: camera-relative centre [m], w: radius [m]
 };

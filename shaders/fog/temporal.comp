@@ -94,6 +94,7 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
     // reprojects a hair beside itself), not a surface seen last frame.
     if (!(weight > 1e-3)) return false;
     history = sum / weight;
+    history.rgb *= temporal.previous.y;  // the previous frame's pre-exposure -> this one's
     return true;
 }
 

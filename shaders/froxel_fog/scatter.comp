@@ -113,7 +113,8 @@ vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 dir, float start, float end
         vec3 w = mix(1.0 - f, f, vec3(o));
         history += w.x * w.y * w.z * texelFetch(historyVolume, clamp(p0 + o, ivec3(0), last), 0);
     }
-    history.rgb *= temporal.previous.y;       // the previous frame's storage scale -> this one's
+    // The previous frame's storage scale and pre-exposure -> this one's.
+    history.rgb *= temporal.previous.y;
     if (!finiteVec(history)) return current;  // a host's NaN once in the volume: not kept
     // Each trilinear resample blurs the history by a variance of b = Σ f(1 - f) froxel² (0 for a still
     // view, which reads each froxel's own texel); an exponential blend of weight w adds these up to

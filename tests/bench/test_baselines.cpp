@@ -247,6 +247,7 @@ double BenchBaselineTest::runOnRenderer(demo::Renderer& renderer, const demo::Re
             frame.sun.toSun = scene.sun.direction;
             frame.sun.illuminance = scene.sun.illuminance;
             frame.ambient = scene.ambient;
+            frame.preExposure = renderer.preExposure();  // the HDR image's: its lighting wrote it pre-exposed
             const demo::ShadowMapInfo& shadow = renderer.shadowMap();
             if (shadow.enabled) {
                 const demo::ImageInfo& s = shadow.image;
@@ -270,7 +271,8 @@ double BenchBaselineTest::runOnRenderer(demo::Renderer& renderer, const demo::Re
     EXPECT_TRUE(frameError.empty()) << frameError;
     EXPECT_TRUE(recorded) << recordError;
     const double ms = dispatchMilliseconds();
-    const std::vector<float> out = unpackHalf(buffer, values);
+    std::vector<float> out = unpackHalf(buffer, values);
+    demo::unexpose(out, renderer.preExposure());  // physical units, as render() gives postfx's image
     demo::destroyBuffer(host->device, buffer);
     const ImageStats stats = compareImages(out, expected.rgba, extent.width, extent.height, 0.05, 1.0);
     std::printf("[ baseline ] %s, step %.3g m: vs postfx %s (dispatch %.3f ms)\n", bench::baselineName(which),

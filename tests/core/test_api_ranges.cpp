@@ -162,6 +162,36 @@ void frameRows(std::vector<Row>& bad, std::vector<Row>& good) {
     addRange<float>(
         bad, good, "FrameInfo.budgetMs", [](FrameInfo& f) -> float& { return f.budgetMs; }, 0.0f,
         postfx::core::kMaxBudgetMs);
+    // Pre-exposure: its range, and the light it pre-exposes within the light's own ranges (the frame's
+    // sun 1e3 lux, ambient 1, one light of 100 cd).
+    {
+        const std::string pe = "FrameInfo.preExposure";
+        constexpr float kInfF = std::numeric_limits<float>::infinity();
+        for (float v : {std::numeric_limits<float>::quiet_NaN(), kInfF, -kInfF, 0.0f, -1.0f,
+                        std::nextafter(float(postfx::core::kMinPreExposure), 0.0f),
+                        std::nextafter(float(postfx::core::kMaxPreExposure), kInfF)})
+            addBad(bad, pe, std::to_string(v), [v](FrameInfo& f) { f.preExposure = v; });
+        addBad(bad, pe, "2e4 × sun 1e3 lux", [](FrameInfo& f) { f.preExposure = 2e4f; });
+        addBad(bad, pe, "2e4 × ambient 1e3", [](FrameInfo& f) {
+            f.sun.illuminance = postfx::Vec3(0.0f);
+            f.ambient = postfx::Vec3(1e3f);
+            f.preExposure = 2e4f;
+        });
+        addBad(bad, pe, "2e7 × a light of 100 cd", [](FrameInfo& f) {
+            f.sun.illuminance = postfx::Vec3(0.0f);
+            f.ambient = postfx::Vec3(0.0f);
+            f.preExposure = 2e7f;
+        });
+        good.push_back(
+            {pe, "the smallest", [](FrameInfo& f) { f.preExposure = float(postfx::core::kMinPreExposure); }});
+        good.push_back({pe, "1e4 × sun 1e3 lux: 1e7", [](FrameInfo& f) { f.preExposure = 1e4f; }});
+        good.push_back({pe, "the largest, without light", [](FrameInfo& f) {
+                            f.sun.illuminance = postfx::Vec3(0.0f);
+                            f.ambient = postfx::Vec3(0.0f);
+                            f.lightCount = 0;
+                            f.preExposure = float(postfx::core::kMaxPreExposure);
+                        }});
+    }
     for (int c = 0; c < 3; ++c)
         addRange<double>(
             bad, good, "FrameInfo.camera.position",

@@ -67,10 +67,17 @@ struct FrameInfo {
     // temporal history is dropped and this frame starts it anew (docs/temporal.md).
     bool cameraCut = false;
 
-    // HDR scene color, linear radiance [W/(sr·m²) or cd/m², the host's choice, used consistently].
-    // Formats: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, usage STORAGE. Effects composite into it.
-    // Its alpha is carried through unchanged.
+    // HDR scene color, linear radiance [W/(sr·m²) or cd/m², the host's choice, used consistently] times
+    // preExposure. Formats: R16G16B16A16_SFLOAT or R32G32B32A32_SFLOAT, usage STORAGE. Effects composite
+    // into it. Its alpha is carried through unchanged.
     ImageInput color;
+    // The factor the host stores its color with (pre-exposure, as Unreal's: typically its camera exposure,
+    // so that a 100,000 lux sun's radiance fits RGBA16F) [1]; default 1: physical units. postfx reads color
+    // as radiance × preExposure and writes every radiance it adds the same way (the light it is given,
+    // below, stays in physical units; docs/integration.md, "Pre-exposure"). In [1e-10, 1e10], and the
+    // pre-exposed light within the ranges below (sun.illuminance and ambient × preExposure ≤ 1e7, each
+    // light's intensity × preExposure ≤ 1e9). May change every frame: histories are rescaled.
+    float preExposure = 1.0f;
     // Scene depth, D32_SFLOAT / D16_UNORM / D24_UNORM_S8_UINT / X8_D24_UNORM_PACK32 / D32_SFLOAT_S8_UINT
     // (its view must select the depth aspect only), usage SAMPLED,
     // same extent as color, in the context's DepthConvention.

@@ -3,6 +3,7 @@
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_settings.h"
 #include "core/camera_math.h"
+#include "core/exposure.h"
 #include "core/temporal.h"
 #include "postfx_objects_spirv.h"
 
@@ -164,8 +165,8 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const double alpha = glm::radians(double(s.sunAngularRadiusDeg));
     const double halfSin = std::sin(0.5 * alpha);
     u.toSun = glm::vec4(glm::vec3(toSun), alpha > 0.0 ? float(std::cos(alpha)) : 2.0f);
-    u.sun =
-        glm::vec4(frame.sun.illuminance, alpha > 0.0 ? float(1.0 / (4.0 * M_PI * halfSin * halfSin)) : 0.0f);
+    u.sun = glm::vec4(core::preExposed(frame.sun.illuminance, frame.preExposure),
+                      alpha > 0.0 ? float(1.0 / (4.0 * M_PI * halfSin * halfSin)) : 0.0f);
     const double muS = glm::dot(glm::normalize(v.skyView.camera), v.skyView.toSun);
     u.skyView =
         glm::vec4(float(skyRadius), float(muS), depth.reversedZ ? 0.0f : 1.0f, float(lutStorageScale(s)));

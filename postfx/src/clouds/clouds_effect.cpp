@@ -7,6 +7,7 @@
 #include "clouds/clouds_settings.h"
 #include "clouds/clouds_shadow.h"
 #include "core/camera_math.h"
+#include "core/exposure.h"
 #include "fog/medium_noise.h"
 #include "postfx_objects_spirv.h"
 
@@ -230,9 +231,9 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     u.phase = glm::vec4(s.anisotropyForward, s.anisotropyBack, s.lobeMix, s.albedo);
     const CloudMultipleScattering& ms = s.multipleScattering;
     u.multiScatter = glm::vec4(ms.attenuation, ms.contribution, ms.eccentricity, float(ms.octaves));
-    u.sun = glm::vec4(frame.sun.illuminance, s.lightDistance);
+    u.sun = glm::vec4(core::preExposed(frame.sun.illuminance, frame.preExposure), s.lightDistance);
     u.toSun = glm::vec4(glm::vec3(glm::normalize(glm::dvec3(frame.sun.toSun))), 0.0f);
-    u.ambient = glm::vec4(frame.ambient, 0.0f);
+    u.ambient = glm::vec4(core::preExposed(frame.ambient, frame.preExposure), 0.0f);
     u.march = glm::vec4(s.maxDistance, depth.reversedZ ? 0.0f : 1.0f, 0.0f, 0.0f);
     const ShadowMapGeometry shadow = shadowMapGeometry(frame);
     u.shadow = glm::vec4(glm::vec3(shadow.center - camera), float(shadow.extent));

@@ -292,6 +292,30 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
     for (uint32_t i = 0; i < frame.lightCount; ++i)
         if (Status s = checkLight(frame.lights[i], "FrameInfo.lights[" + std::to_string(i) + "]"); !s)
             return s;
+    return checkPreExposure(frame);
+}
+
+Status checkPreExposure(const FrameInfo& frame) {
+    const double p = frame.preExposure;
+    if (!(p >= kMinPreExposure && p <= kMaxPreExposure))
+        return invalid("FrameInfo.preExposure: " + numberText(frame.preExposure) + " is outside [" +
+                       numberText(float(kMinPreExposure)) + ", " + numberText(float(kMaxPreExposure)) + "]");
+    // The light pre-exposed stays within the ranges of the light itself (the effects' arithmetic is
+    // checked for those).
+    auto within = [&](const Vec3& light, double limit, const std::string& name) -> Status {
+        for (int c = 0; c < 3; ++c)
+            if (double(light[c]) * p > limit)
+                return invalid("FrameInfo.preExposure: " + numberText(frame.preExposure) + " × " + name +
+                               " " + numberText(light[c]) + " exceeds " + numberText(float(limit)));
+        return Status::success();
+    };
+    if (Status s = within(frame.sun.illuminance, kMaxPreExposedLight, "sun.illuminance"); !s) return s;
+    if (Status s = within(frame.ambient, kMaxPreExposedLight, "ambient"); !s) return s;
+    for (uint32_t i = 0; i < frame.lightCount; ++i)
+        if (Status s = within(frame.lights[i].intensity, kMaxPreExposedIntensity,
+                              "lights[" + std::to_string(i) + "].intensity");
+            !s)
+            return s;
     return Status::success();
 }
 

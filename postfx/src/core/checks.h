@@ -47,6 +47,10 @@ inline constexpr double kMaxWorldCoordinate = 1e9;
 inline constexpr double kMaxTimeSeconds = 1e12;
 // FrameInfo::budgetMs [ms].
 inline constexpr float kMaxBudgetMs = 1000.0f;
+// FrameInfo::preExposure's range, and the largest pre-exposed light (illuminance and ambient; a local
+// light's intensity: kMaxPreExposedIntensity): the ranges the light itself has.
+inline constexpr double kMinPreExposure = 1e-10, kMaxPreExposure = 1e10;
+inline constexpr double kMaxPreExposedLight = 1e7, kMaxPreExposedIntensity = 1e9;
 
 // "1920x1080"
 std::string extentText(VkExtent2D extent);
@@ -61,6 +65,9 @@ Status checkRange(const char* field, double value, double lo, double hi);
 // structSize, color, depth, output (not the color image, same extent and format), usage flags, the
 // camera, sun, ambient, time, shadow map and local lights.
 Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info);
+// FrameInfo::preExposure: in [kMinPreExposure, kMaxPreExposure], the light it pre-exposes within range
+// (the light itself already checked).
+Status checkPreExposure(const FrameInfo& frame);
 
 // The camera alone (also used by the CPU references): position within ±kMaxWorldCoordinate, view and
 // projection finite, projection times the view's rotation invertible with an inverse finite in float.

@@ -93,7 +93,7 @@ gpu::TemporalUniforms temporalUniforms(const TemporalFrame& t) {
     gpu::TemporalUniforms u{};
     u.previousClip = t.previousClipFromCurrent;
     u.cameraDelta = glm::vec4(t.cameraDelta, t.currentWeight);
-    u.previous = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+    u.previous = glm::vec4(0.0f, t.historyScale, 0.0f, 0.0f);
     u.state = glm::uvec4(t.historyValid ? 1u : 0u, uint32_t(t.rejected.size()), 0u, 0u);
     for (size_t i = 0; i < t.rejected.size() && i < gpu::kTemporalMaxSpheres; ++i)
         u.spheres[i] = glm::vec4(t.rejected[i].center, t.rejected[i].radius);
@@ -174,6 +174,8 @@ TemporalFrame TemporalHistory::evaluate(const FrameInfo& frame, const TemporalSe
         t.cameraDelta = glm::vec3(delta);
         t.previousClipFromCurrent = glm::mat4(glm::dmat4(camera_.projection) * rotationOnly(camera_.view) *
                                               glm::translate(glm::dmat4(1.0), delta));
+        // Both in [kMinPreExposure, kMaxPreExposure] (checked): the ratio is finite and positive.
+        t.historyScale = float(double(frame.preExposure) / double(preExposure_));
     }
 
     if (next) {
@@ -182,6 +184,7 @@ TemporalFrame TemporalHistory::evaluate(const FrameInfo& frame, const TemporalSe
         next->frames_ = t.framesSinceReset + 1u;
         next->key_ = key;
         next->camera_ = frame.camera;
+        next->preExposure_ = frame.preExposure;
         next->sun_ = reset ? frame.sun : sun_;
         next->ambient_ = reset ? frame.ambient : ambient_;
         next->shadowMap_ = shadowMap;

@@ -34,8 +34,11 @@ struct TemporalFrame {
     uint32_t readSlot = 1, writeSlot = 0;  // which of the effect's two history images is read / written
     // Current camera-relative position -> the previous frame's clip space (Vulkan, its DepthConvention).
     glm::mat4 previousClipFromCurrent{1.0f};
-    glm::vec3 cameraDelta{0.0f};           // current camera position - previous [m]
-    CameraInput previousCamera;            // the previous recorded frame's camera
+    glm::vec3 cameraDelta{0.0f};  // current camera position - previous [m]
+    CameraInput previousCamera;   // the previous recorded frame's camera
+    // This frame's FrameInfo::preExposure / the previous recorded frame's: the history holds radiance
+    // pre-exposed with the previous frame's, so it is scaled by this before blending (1 when not valid).
+    float historyScale = 1.0f;
     std::vector<TemporalSphere> rejected;  // changed local lights' spheres (old and new place)
 };
 
@@ -58,7 +61,8 @@ private:
     uint32_t writtenSlot_ = 1;
     uint32_t frames_ = 0;  // frames the history holds
     uint64_t key_ = 0;
-    CameraInput camera_;  // the last recorded frame's camera
+    CameraInput camera_;        // the last recorded frame's camera
+    float preExposure_ = 1.0f;  // the last recorded frame's FrameInfo::preExposure
     // The lighting the history was last reset for (the sun, the ambient, the shadow map) and each
     // local light's state its spheres were last rejected for.
     SunInput sun_;
@@ -68,7 +72,8 @@ private:
     std::vector<LocalLight> lights_;
 };
 
-// The TemporalUniforms of a frame (shaders/common/shared.h); the froxel fog fills `previous` itself.
+// The TemporalUniforms of a frame (shaders/common/shared.h): previous.y is the history's radiance factor
+// (historyScale); the froxel fog sets previous.x and multiplies previous.y by its storage scale's change.
 gpu::TemporalUniforms temporalUniforms(const TemporalFrame& frame);
 
 // FNV-1a over `bytes`, continuing `hash` (keys of settings).

@@ -3,6 +3,7 @@
 #include "clouds/clouds_shadow.h"
 
 #include "core/camera_math.h"
+#include "core/exposure.h"
 #include "fog/fog_settings.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -21,8 +22,8 @@ gpu::FogUniforms buildMediumUniforms(const FogMedium& s, const FrameInfo& frame,
     u.viewToShadow = glm::mat4(frame.shadowMap.worldToClip * glm::translate(glm::dmat4(1.0), camera));
     // In double: a long float vector's dot product would overflow (toSun = (1e30, 0, 0) gives 0 in float).
     u.toSun = glm::vec4(glm::vec3(glm::normalize(glm::dvec3(frame.sun.toSun))), 0.0f);
-    u.sunIlluminance = glm::vec4(frame.sun.illuminance, 0.0f);
-    u.ambient = glm::vec4(frame.ambient, 0.0f);
+    u.sunIlluminance = glm::vec4(core::preExposed(frame.sun.illuminance, frame.preExposure), 0.0f);
+    u.ambient = glm::vec4(core::preExposed(frame.ambient, frame.preExposure), 0.0f);
     u.albedo = glm::vec4(s.albedo, 0.0f);
     // An empty medium (fogMediumEmpty) has no extinction anywhere, the analytic tail's included.
     const float density = fogMediumEmpty(s, noiseEnabled) ? 0.0f : s.density;

@@ -189,7 +189,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         FrameInfo previous = frame;
         previous.camera = t.previousCamera;
         tu.previous.x = float(gridNear(previous, b.depthConvention()));
-        tu.previous.y = storageScale(frame) / previousStorageScale_;
+        tu.previous.y = t.historyScale * (storageScale(frame) / previousStorageScale_);
         temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
         // RGBA32F: accumulated in half, updates below half an ulp would be lost.
         core::ImageDesc historyDesc = volume;

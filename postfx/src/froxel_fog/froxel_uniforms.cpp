@@ -1,5 +1,6 @@
 #include "froxel_fog/froxel_uniforms.h"
 
+#include "core/exposure.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
 
@@ -38,9 +39,9 @@ float storageScale(const FrameInfo& frame) {
     // Henyey–Greenstein's largest value, at cos θ = ±1 (sign of g): (1 + |g|) / (4π (1 - |g|)²).
     const double g = std::abs(double(fog::clampedAnisotropy(s.anisotropy)));
     const double peak = (1.0 + g) / (4.0 * 3.14159265358979323846 * (1.0 - g) * (1.0 - g));
-    double largest = 0.0;
+    double largest = 0.0;  // of the pre-exposed radiance (core/exposure.h)
     for (int c = 0; c < 3; ++c)
-        largest = std::max(largest, double(s.albedo[c]) *
+        largest = std::max(largest, double(s.albedo[c]) * double(frame.preExposure) *
                                         (double(frame.sun.illuminance[c]) * peak + double(frame.ambient[c])));
     if (!(largest > kStorageTarget)) return 1.0f;
     return float(std::exp2(std::max(std::floor(std::log2(kStorageTarget / largest)), -120.0)));
@@ -54,7 +55,7 @@ uint32_t packLights(const FrameInfo& frame, gpu::FroxelLights& out) {
         if (l.intensity == Vec3(0.0f)) continue;  // adds nothing (the reference drops it too)
         gpu::FroxelLight& g = out.lights[count++];
         g.positionRange = glm::vec4(glm::vec3(glm::dvec3(l.position) - camera), l.range);
-        g.intensityRadius = glm::vec4(l.intensity, l.sourceRadius);
+        g.intensityRadius = glm::vec4(core::preExposed(l.intensity, frame.preExposure), l.sourceRadius);
         if (l.type == LightType::Spot) {
             const glm::dvec3 axis = glm::normalize(glm::dvec3(l.direction));
             g.directionCosOuter = glm::vec4(glm::vec3(axis), float(std::cos(double(l.outerConeAngle))));
