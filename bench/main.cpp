@@ -12,6 +12,7 @@
 #include "froxel_run.h"
 #include "motion.h"
 #include "motion_report.h"
+#include "pipeline_stats.h"
 #include "progress.h"
 #include "report.h"
 #include "runner.h"
@@ -174,6 +175,11 @@ const char* kUsage =
     "  --frame-presets LIST   low, medium, high, ultra [all; quick: medium]\n"
     "  --frame-budget MS      also a row per fog with the clouds and the ray-marched fog on quality Auto\n"
     "                         under one frame budget (FrameInfo::budgetMs) [1; quick: 0]; 0: none\n"
+    "pipeline statistics (--pipeline-stats): on a device of its own with "
+    "VK_KHR_pipeline_executable_properties,\n"
+    "compiles the fog's march pipelines (fog.raymarch at full size, reduced, reduced with temporal) and "
+    "prints\n"
+    "every statistic the driver reports (registers, instructions, ...); nothing is rendered\n"
     "environment: POSTFX_DEVICE=<substring of the device name> picks the Vulkan device; --clouds:\n"
     "  POSTFX_BENCH_DUMP=DIR writes each row's GPU and reference images (the error's pixels) to DIR as PFM\n";
 
@@ -215,6 +221,7 @@ struct Args {
     uint32_t cloudsLightSteps = 0, cloudsConvergedFrames = 0, cloudsMotionFrames = 0;  // 0: the default
     // --frame
     bool frame = false;
+    bool pipelineStats = false;  // --pipeline-stats: the fog march pipelines' driver statistics
     std::vector<std::pair<uint32_t, uint32_t>> frameSizes;  // empty: the default
     std::vector<std::string> framePresets;                  // empty: the default
     double frameBudgetMs = -1.0;                            // < 0: the default
@@ -360,6 +367,8 @@ Args parseArgs(int argc, char** argv) {
             } else {
                 args.atmosphereSweep.emplace_back(text.substr(0, eq), cli::splitList(text.substr(eq + 1)));
             }
+        } else if (a == "--pipeline-stats") {
+            args.pipelineStats = true;
         } else if (a == "--frame") {
             args.frame = true;
         } else if (a == "--frame-sizes") {
@@ -707,6 +716,7 @@ int runFrame(const Args& args, const std::string& command) {
 }
 
 int run(const Args& args, const std::string& command) {
+    if (args.pipelineStats) return bench::runPipelineStats();
     if (args.frame) return runFrame(args, command);
     if (args.froxel) return runFroxel(args, command);
     if (args.clouds) return runClouds(args, command);

@@ -18,7 +18,7 @@ ComputePipeline& ComputePipeline::operator=(ComputePipeline&& other) noexcept {
     return *this;
 }
 
-Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc) {
+Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc, VkPipelineCreateFlags flags) {
     reset();
     gpu_ = &gpu;
     name_ = desc.name;
@@ -72,6 +72,7 @@ Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc) 
     info.stage.module = module;
     info.stage.pName = "main";
     info.stage.pSpecializationInfo = spec.mapEntryCount ? &spec : nullptr;
+    info.flags = flags;
     info.layout = layout_;
     VkPipeline pipeline = VK_NULL_HANDLE;
     s = vulkanStatus(

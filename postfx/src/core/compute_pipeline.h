@@ -30,7 +30,8 @@ public:
     ComputePipeline& operator=(ComputePipeline&& other) noexcept;
     ~ComputePipeline() { reset(); }
 
-    Status create(const Gpu& gpu, const ComputePipelineDesc& desc);
+    // `flags`: VkComputePipelineCreateInfo::flags (a tool's VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR).
+    Status create(const Gpu& gpu, const ComputePipelineDesc& desc, VkPipelineCreateFlags flags = 0);
     void reset();
     bool valid() const { return pipeline_ != VK_NULL_HANDLE; }
 
@@ -39,6 +40,7 @@ public:
 
     VkDescriptorSetLayout setLayout() const { return setLayout_; }
     const std::string& name() const { return name_; }
+    VkPipeline handle() const { return pipeline_; }
 
 private:
     const Gpu* gpu_ = nullptr;

@@ -74,6 +74,14 @@ uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kFogGroupSize - 1) / gpu::kFogGroupSize;
 }
 
+}  // namespace
+
+std::vector<const core::ComputePipelineDesc*> marchPipelines() {
+    return {&kRaymarch[0], &kRaymarchReduced[0][0], &kRaymarchReduced[1][0]};
+}
+
+namespace {
+
 // Everything the accumulated (L, T) depends on besides the camera and the light (core/temporal.h).
 uint64_t temporalKey(const FrameInfo& frame) {
     using core::hashValue;

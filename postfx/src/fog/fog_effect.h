@@ -24,6 +24,10 @@ inline constexpr core::ResourceId kHistoryDistance[2] = {{"fog.history_distance_
                                                          {"fog.history_distance_b"}};
 inline constexpr core::ResourceId kTemporalUniforms{"fog.temporal_uniforms"};
 
+// The fog's march pipelines, RGBA16F color (for tools that inspect the compiled pipelines: postfx-bench
+// --pipeline-stats): fog.raymarch at full size, and at a reduced size without and with temporal.
+std::vector<const core::ComputePipelineDesc*> marchPipelines();
+
 class FogEffect final : public core::Effect {
 public:
     // Queries once whether the device can generate the noise texture (R8_UNORM storage, linear filter).
