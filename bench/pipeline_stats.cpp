@@ -132,9 +132,7 @@ int runPipelineStats() {
         return 1;
     }
     std::printf("device: %s\n", gpu.properties.deviceName);
-    const char* variants[] = {"full size", "reduced size", "reduced size, temporal"};
-    size_t v = 0;
-    for (const postfx::core::ComputePipelineDesc* desc : postfx::fog::marchPipelines()) {
+    for (const auto& [variant, desc] : postfx::fog::marchPipelines()) {
         postfx::core::ComputePipeline pipeline;
         if (postfx::Status s = pipeline.create(gpu, *desc, VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR);
             !s) {
@@ -149,7 +147,7 @@ int runPipelineStats() {
             executables, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
         getProperties(d.device, &pi, &executables, props.data());
         for (uint32_t e = 0; e < executables; ++e) {
-            std::printf("%s (%s, RGBA16F) executable %u: %s (subgroup %u)\n", desc->name, variants[v], e,
+            std::printf("%s (%s, RGBA16F) executable %u: %s (subgroup %u)\n", desc->name, variant, e,
                         props[e].name, props[e].subgroupSize);
             VkPipelineExecutableInfoKHR ei{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR};
             ei.pipeline = pipeline.handle();
@@ -162,7 +160,6 @@ int runPipelineStats() {
             for (const VkPipelineExecutableStatisticKHR& s : stats)
                 std::printf("  %-32s %12s  %s\n", s.name, statisticText(s).c_str(), s.description);
         }
-        ++v;
     }
     return 0;
 }

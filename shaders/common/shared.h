@@ -50,6 +50,10 @@ PFX_CONST(uint, kNoiseWorley, 1u);         // NoisePush.params.z: the inverted W
 struct NoisePush {                         // push constants of noise_generate.comp
     uvec4 params;  // x: texture size [texels], y: seed, z: kNoisePerlinWorley or kNoiseWorley
 };
+struct ViewDistancePush {  // push constants of core/view_distance.comp
+    mat4 clipToView;       // camera-relative: inverse(projection · rotation of view)
+    vec4 params;           // x: no-geometry depth (0 reversed Z, 1 standard), y, z: extent [px]
+};
 
 // ---- temporal accumulation, both fogs (docs/temporal.md; postfx/src/core/temporal.h) ----
 PFX_CONST(uint, kTemporalMaxSpheres, 64u);  // postfx::kTemporalMaxRejectedSpheres
@@ -67,6 +71,7 @@ struct TemporalUniforms {
 #ifdef __cplusplus
 static_assert(sizeof(TemporalUniforms) == 64 + 3 * 16 + 64 * 16, "TemporalUniforms must match std140");
 static_assert(sizeof(NoisePush) == 16, "NoisePush must match the shader's push constants");
+static_assert(sizeof(ViewDistancePush) == 80, "ViewDistancePush must match the shader's push constants");
 }  // namespace postfx::gpu
 #endif
 

@@ -10,12 +10,9 @@ layout(local_size_x = kViewDistanceGroupSize, local_size_y = kViewDistanceGroupS
 
 layout(binding = kViewDistanceBindingDepth) uniform sampler2D depthTexture;
 layout(binding = kViewDistanceBindingOut, r32f) uniform writeonly image2D distanceOut;
-// clang-format off
 layout(push_constant) uniform Push {
-    mat4 clipToView;  // camera-relative: inverse(projection · rotation of view)
-    vec4 params;      // x: no-geometry depth (0 reversed Z, 1 standard), y, z: extent [px]
-} pc;
-// clang-format on
+    ViewDistancePush pc;
+};
 
 #include "common/view_distance.glsl"
 

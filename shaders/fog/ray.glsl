@@ -9,7 +9,12 @@ struct FogRay {
     float surfaceDistance;  // to the reconstructed surface [m]; infinite for pixels with no geometry
 };
 
-vec3 fogRayDirection(uvec2 pixel);
+// The unit direction of pixel `pixel`'s view ray, camera-relative (no depth read).
+vec3 fogRayDirection(uvec2 pixel) {
+    vec2 ndc = (vec2(pixel) + 0.5) / vec2(fog.extent.xy) * 2.0 - 1.0;
+    vec4 p = fog.clipToView * vec4(ndc, 0.5, 1.0);
+    return normalize(p.xyz / p.w);
+}
 
 // With kFogFlagViewDistance the depth binding holds the surface distance itself (∞ without geometry).
 FogRay fogRay(uvec2 pixel) {
@@ -21,13 +26,6 @@ FogRay fogRay(uvec2 pixel) {
     vec3 surface = p.xyz / p.w;
     float distance = length(surface);
     return FogRay(surface / distance, noGeometry ? kInfinity : distance);
-}
-
-// The unit direction of pixel `pixel`'s view ray, camera-relative (no depth read).
-vec3 fogRayDirection(uvec2 pixel) {
-    vec2 ndc = (vec2(pixel) + 0.5) / vec2(fog.extent.xy) * 2.0 - 1.0;
-    vec4 p = fog.clipToView * vec4(ndc, 0.5, 1.0);
-    return normalize(p.xyz / p.w);
 }
 
 // The surface distance the temporal pass compares (∞ without geometry); -1 for a NaN depth (a host's

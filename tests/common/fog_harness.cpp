@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include <cmath>
 #include <cstring>
 
 namespace test {
@@ -270,6 +271,28 @@ float depthAtDistance(const postfx::CameraInput& camera, glm::dvec3 direction, d
     rotation[3] = glm::dvec4(0, 0, 0, 1);
     const glm::dvec4 clip = glm::dmat4(camera.projection) * rotation * glm::dvec4(direction * distance, 1.0);
     return float(clip.z / clip.w);
+}
+
+FogHarnessImages surfaceImages(const postfx::CameraInput& camera, uint32_t width, uint32_t height,
+                               const std::function<double(uint32_t, uint32_t)>& distance,
+                               const std::function<float(uint32_t, uint32_t, int)>& color) {
+    FogHarnessImages im;
+    im.width = width;
+    im.height = height;
+    im.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+    im.color.resize(size_t(width) * height * 4);
+    im.depth.resize(size_t(width) * height);
+    for (uint32_t j = 0; j < height; ++j)
+        for (uint32_t i = 0; i < width; ++i) {
+            const size_t p = size_t(j) * width + i;
+            const double d = distance(i, j);
+            im.depth[p] = std::isinf(d)
+                              ? 0.0f
+                              : depthAtDistance(camera, pixelDirection(camera, i, j, width, height), d);
+            for (int c = 0; c < 4; ++c)
+                im.color[p * 4 + c] = color(i, j, c);
+        }
+    return im;
 }
 
 postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dvec3 up, float fovYDeg,

@@ -56,6 +56,13 @@ postfx::CameraInput testCamera(glm::dvec3 position, float fovYDeg, float aspect,
 glm::dvec3 pixelDirection(const postfx::CameraInput& camera, uint32_t i, uint32_t j, uint32_t w, uint32_t h);
 float depthAtDistance(const postfx::CameraInput& camera, glm::dvec3 direction, double distance);
 
+// RGBA32F color and reversed-Z depth of `width` × `height` pixels for `camera`: pixel (i, j) sees a surface
+// distance(i, j) metres along its ray (no geometry, depth 0, where that is infinite); its channel c has
+// color(i, j, c).
+FogHarnessImages surfaceImages(const postfx::CameraInput& camera, uint32_t width, uint32_t height,
+                               const std::function<double(uint32_t, uint32_t)>& distance,
+                               const std::function<float(uint32_t, uint32_t, int)>& color);
+
 // A camera at world `position` looking along `forward` with `up` (reversed Z, near 0.1 m, far 1e6 m).
 postfx::CameraInput lookCamera(glm::dvec3 position, glm::dvec3 forward, glm::dvec3 up, float fovYDeg,
                                float aspect);

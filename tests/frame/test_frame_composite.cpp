@@ -63,21 +63,9 @@ protected:
     }
 
     FogHarnessImages images(const postfx::FrameInfo& f) const {
-        FogHarnessImages im;
-        im.width = kWidth;
-        im.height = kHeight;
-        im.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-        im.color.resize(size_t(kWidth) * kHeight * 4);
-        im.depth.resize(size_t(kWidth) * kHeight);
-        for (uint32_t j = 0; j < kHeight; ++j)
-            for (uint32_t i = 0; i < kWidth; ++i) {
-                const size_t p = size_t(j) * kWidth + i;
-                const glm::dvec3 d = pixelDirection(f.camera, i, j, kWidth, kHeight);
-                im.depth[p] = depthAtDistance(f.camera, d, kSurfaceDistance);
-                for (int c = 0; c < 4; ++c)
-                    im.color[p * 4 + c] = 100.0f + 10.0f * float((i * 7 + j * 3 + c) % 11);
-            }
-        return im;
+        return surfaceImages(
+            f.camera, kWidth, kHeight, [](uint32_t, uint32_t) { return kSurfaceDistance; },
+            [](uint32_t i, uint32_t j, int c) { return 100.0f + 10.0f * float((i * 7 + j * 3 + c) % 11); });
     }
 
     // `f` rendered alone in a new context: the output over the input color, per channel (RGB).

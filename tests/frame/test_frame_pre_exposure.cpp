@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -54,25 +55,15 @@ protected:
 
     // Surfaces from 2 m to 2 km, one column in five with no geometry; color × `preExposure`.
     FogHarnessImages images(const postfx::FrameInfo& f, float preExposure) const {
-        FogHarnessImages im;
-        im.width = kWidth;
-        im.height = kHeight;
-        im.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-        im.color.resize(size_t(kWidth) * kHeight * 4);
-        im.depth.resize(size_t(kWidth) * kHeight);
-        for (uint32_t j = 0; j < kHeight; ++j)
-            for (uint32_t i = 0; i < kWidth; ++i) {
-                const size_t p = size_t(j) * kWidth + i;
-                const double distance = 2.0 * std::pow(1e3, double((i * 3 + j * 5) % 11) / 10.0);
-                im.depth[p] = i % 5 == 4
-                                  ? 0.0f
-                                  : depthAtDistance(f.camera, pixelDirection(f.camera, i, j, kWidth, kHeight),
-                                                    distance);
-                for (int c = 0; c < 4; ++c)
-                    im.color[p * 4 + c] =
-                        (100.0f + 40.0f * float((i * 7 + j * 3 + c) % 11)) * (c < 3 ? preExposure : 1.0f);
-            }
-        return im;
+        return surfaceImages(
+            f.camera, kWidth, kHeight,
+            [](uint32_t i, uint32_t j) {
+                return i % 5 == 4 ? std::numeric_limits<double>::infinity()
+                                  : 2.0 * std::pow(1e3, double((i * 3 + j * 5) % 11) / 10.0);
+            },
+            [preExposure](uint32_t i, uint32_t j, int c) {
+                return (100.0f + 40.0f * float((i * 7 + j * 3 + c) % 11)) * (c < 3 ? preExposure : 1.0f);
+            });
     }
 
     std::unique_ptr<postfx::Context> newContext() {

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,24 +52,13 @@ protected:
 
     // Surfaces from 0.5 m to 5 km, one column in six with no geometry.
     FogHarnessImages images(const postfx::FrameInfo& f) const {
-        FogHarnessImages im;
-        im.width = kWidth;
-        im.height = kHeight;
-        im.colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-        im.color.resize(size_t(kWidth) * kHeight * 4);
-        im.depth.resize(size_t(kWidth) * kHeight);
-        for (uint32_t j = 0; j < kHeight; ++j)
-            for (uint32_t i = 0; i < kWidth; ++i) {
-                const size_t p = size_t(j) * kWidth + i;
-                const double distance = 0.5 * std::pow(1e4, double((i * 5 + j * 3) % 17) / 16.0);
-                im.depth[p] = i % 6 == 5
-                                  ? 0.0f
-                                  : depthAtDistance(f.camera, pixelDirection(f.camera, i, j, kWidth, kHeight),
-                                                    distance);
-                for (int c = 0; c < 4; ++c)
-                    im.color[p * 4 + c] = 50.0f + 10.0f * float((i * 7 + j * 3 + c) % 11);
-            }
-        return im;
+        return surfaceImages(
+            f.camera, kWidth, kHeight,
+            [](uint32_t i, uint32_t j) {
+                return i % 6 == 5 ? std::numeric_limits<double>::infinity()
+                                  : 0.5 * std::pow(1e4, double((i * 5 + j * 3) % 17) / 16.0);
+            },
+            [](uint32_t i, uint32_t j, int c) { return 50.0f + 10.0f * float((i * 7 + j * 3 + c) % 11); });
     }
 
     // `f` in a new context over `im`'s color; the plan it recorded in `plan`.

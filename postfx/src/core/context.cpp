@@ -4,7 +4,6 @@
 #include "core/context_impl.h"
 #include "effects.h"
 
-#include <algorithm>
 #include <string>
 
 namespace postfx {
@@ -171,9 +170,13 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
     std::vector<core::AutoQuality::JointRequest> joint;
     std::vector<size_t> jointEffects;
     std::vector<int> others;  // the active effects not on Auto: the rest of the budget's work
+    // Every effect reads the host's depth: with two or more active, postfx.view_distance unprojects it
+    // once for all of them (a preset never turns an effect on or off).
+    size_t activeCount = 0;
     for (size_t e = 0; e < effects.size(); ++e) {
         const core::Effect& effect = *effects[e];
         if (!effect.active(frame)) continue;
+        ++activeCount;
         const bool onAuto =
             effect.presetCount() > 0 && effect.quality(frame).kind == core::QualityRequest::Kind::Auto;
         if (!budget || !onAuto) others.push_back(int(e));
@@ -196,10 +199,7 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         effect.applyPreset(resolved, preset);
     }
     if (budget) {
-        // The context's own pass in a frame of two or more effects (postfx.view_distance) is other work.
-        if (std::count_if(effects.begin(), effects.end(), [&](const auto& e) { return e->active(frame); }) >=
-            2)
-            others.push_back(-1);
+        if (activeCount >= 2) others.push_back(-1);  // the context's own pass, postfx.view_distance
         std::vector<uint32_t> presets;
         if (Status s = autoQuality.selectJoint(joint, others, double(frame.budgetMs), timer, presets); !s)
             return {s.code, "FrameInfo.budgetMs: " + s.message};
@@ -215,9 +215,7 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         if (Status s = effect->validate(resolved); !s) return s;
 
     graph.begin(out, resolved);
-    // Every effect reads the host's depth: with two or more active, it is unprojected once for all.
-    out.shareDepth = std::count_if(effects.begin(), effects.end(),
-                                   [&](const auto& effect) { return effect->active(resolved); }) >= 2;
+    out.shareDepth = activeCount >= 2;
     for (size_t e = 0; e < effects.size(); ++e) {
         if (!effects[e]->active(resolved)) continue;
         core::FrameBuilder builder(graph, out, int(e));

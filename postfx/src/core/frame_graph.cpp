@@ -28,7 +28,7 @@ constexpr Binding kViewDistanceBindings[] = {
     {gpu::kViewDistanceBindingDepth, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
     {gpu::kViewDistanceBindingOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 const ComputePipelineDesc kViewDistance{"postfx.view_distance", spirv::core_view_distance_comp,
-                                        kViewDistanceBindings, 80};
+                                        kViewDistanceBindings, sizeof(gpu::ViewDistancePush)};
 inline constexpr ResourceId kViewDistanceImage{"postfx.view_distance"};
 
 bool reads(Use u) {
@@ -193,15 +193,11 @@ DepthInput FrameBuilder::depthInput() {
     desc.format = VK_FORMAT_R32_SFLOAT;
     desc.extent = {e.width, e.height, 1};
     const ImageRef distance = context.transientImage(kViewDistanceImage, desc);
-    struct {
-        glm::mat4 clipToView;
-        glm::vec4 params;
-    } push{};
+    gpu::ViewDistancePush push{};
     const FrameInfo& info = *f_.info;
     push.clipToView =
         glm::mat4(glm::inverse(glm::dmat4(info.camera.projection) * rotationOnly(info.camera.view)));
     push.params = glm::vec4(depthConvention().reversedZ ? 0.0f : 1.0f, float(e.width), float(e.height), 0.0f);
-    static_assert(sizeof push == 80);
     const uint32_t g = gpu::kViewDistanceGroupSize, rows = g * gpu::kViewDistanceRows;
     context.pass(kViewDistance, (e.width + g - 1) / g, (e.height + rows - 1) / rows, 1)
         .bind(gpu::kViewDistanceBindingDepth, depth, Use::Sampled)

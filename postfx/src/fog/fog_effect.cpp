@@ -76,8 +76,10 @@ uint32_t groupsFor(uint32_t size) {
 
 }  // namespace
 
-std::vector<const core::ComputePipelineDesc*> marchPipelines() {
-    return {&kRaymarch[0], &kRaymarchReduced[0][0], &kRaymarchReduced[1][0]};
+std::vector<MarchPipeline> marchPipelines() {
+    return {{"full size", &kRaymarch[0]},
+            {"reduced size", &kRaymarchReduced[0][0]},
+            {"reduced size, temporal", &kRaymarchReduced[1][0]}};
 }
 
 namespace {

@@ -24,9 +24,13 @@ inline constexpr core::ResourceId kHistoryDistance[2] = {{"fog.history_distance_
                                                          {"fog.history_distance_b"}};
 inline constexpr core::ResourceId kTemporalUniforms{"fog.temporal_uniforms"};
 
-// The fog's march pipelines, RGBA16F color (for tools that inspect the compiled pipelines: postfx-bench
-// --pipeline-stats): fog.raymarch at full size, and at a reduced size without and with temporal.
-std::vector<const core::ComputePipelineDesc*> marchPipelines();
+// The fog's march pipelines for RGBA16F color, each with what it is for (for tools that inspect the compiled
+// pipelines: postfx-bench --pipeline-stats): fog.raymarch at full size, reduced, reduced with temporal.
+struct MarchPipeline {
+    const char* variant;  // "full size", ...
+    const core::ComputePipelineDesc* desc;
+};
+std::vector<MarchPipeline> marchPipelines();
 
 class FogEffect final : public core::Effect {
 public:
