@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bench {
@@ -132,35 +133,49 @@ int runPipelineStats() {
         return 1;
     }
     std::printf("device: %s\n", gpu.properties.deviceName);
-    for (const auto& [variant, desc] : postfx::fog::marchPipelines()) {
-        postfx::core::ComputePipeline pipeline;
-        if (postfx::Status s = pipeline.create(gpu, *desc, VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR);
-            !s) {
-            std::fprintf(stderr, "postfx-bench --pipeline-stats: %s\n", s.message.c_str());
-            return 1;
+    // Each march pipeline as postfx creates it for fog_default at Medium (flags: jitter, noise, shadow
+    // map, analytic tail, empty-space skipping; shadow kernel 1), and without its specialization
+    // constants (every flag read from the uniforms).
+    namespace fogGpu = postfx::gpu;
+    postfx::core::PipelineConstants medium;
+    medium.values[fogGpu::kFogConstantFlags] = fogGpu::kFogFlagJitter | fogGpu::kFogFlagNoise |
+                                               fogGpu::kFogFlagShadowMap | fogGpu::kFogFlagAnalyticTail |
+                                               fogGpu::kFogFlagSkipEmptySpace;
+    medium.values[fogGpu::kFogConstantShadowRadius] = 0;
+    medium.count = 2;
+    const std::pair<const char*, postfx::core::PipelineConstants> specializations[] = {
+        {"specialized for fog_default, Medium", medium}, {"flags from the uniforms", {}}};
+    for (const auto& [specialization, constants] : specializations)
+        for (const auto& [variant, desc] : postfx::fog::marchPipelines()) {
+            postfx::core::ComputePipeline pipeline;
+            if (postfx::Status s =
+                    pipeline.create(gpu, *desc, VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR, constants);
+                !s) {
+                std::fprintf(stderr, "postfx-bench --pipeline-stats: %s\n", s.message.c_str());
+                return 1;
+            }
+            VkPipelineInfoKHR pi{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
+            pi.pipeline = pipeline.handle();
+            uint32_t executables = 0;
+            getProperties(d.device, &pi, &executables, nullptr);
+            std::vector<VkPipelineExecutablePropertiesKHR> props(
+                executables, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
+            getProperties(d.device, &pi, &executables, props.data());
+            for (uint32_t e = 0; e < executables; ++e) {
+                std::printf("%s (%s, RGBA16F, %s) executable %u: %s (subgroup %u)\n", desc->name, variant,
+                            specialization, e, props[e].name, props[e].subgroupSize);
+                VkPipelineExecutableInfoKHR ei{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR};
+                ei.pipeline = pipeline.handle();
+                ei.executableIndex = e;
+                uint32_t count = 0;
+                getStatistics(d.device, &ei, &count, nullptr);
+                std::vector<VkPipelineExecutableStatisticKHR> stats(
+                    count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
+                getStatistics(d.device, &ei, &count, stats.data());
+                for (const VkPipelineExecutableStatisticKHR& s : stats)
+                    std::printf("  %-32s %12s  %s\n", s.name, statisticText(s).c_str(), s.description);
+            }
         }
-        VkPipelineInfoKHR pi{VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR};
-        pi.pipeline = pipeline.handle();
-        uint32_t executables = 0;
-        getProperties(d.device, &pi, &executables, nullptr);
-        std::vector<VkPipelineExecutablePropertiesKHR> props(
-            executables, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR});
-        getProperties(d.device, &pi, &executables, props.data());
-        for (uint32_t e = 0; e < executables; ++e) {
-            std::printf("%s (%s, RGBA16F) executable %u: %s (subgroup %u)\n", desc->name, variant, e,
-                        props[e].name, props[e].subgroupSize);
-            VkPipelineExecutableInfoKHR ei{VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR};
-            ei.pipeline = pipeline.handle();
-            ei.executableIndex = e;
-            uint32_t count = 0;
-            getStatistics(d.device, &ei, &count, nullptr);
-            std::vector<VkPipelineExecutableStatisticKHR> stats(
-                count, {VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR});
-            getStatistics(d.device, &ei, &count, stats.data());
-            for (const VkPipelineExecutableStatisticKHR& s : stats)
-                std::printf("  %-32s %12s  %s\n", s.name, statisticText(s).c_str(), s.description);
-        }
-    }
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #ifndef POSTFX_FOG_ATMOSPHERE_LIGHT_GLSL
 #define POSTFX_FOG_ATMOSPHERE_LIGHT_GLSL
 
+#include "fog/flags.glsl"
 #include "atmosphere/transmittance_lut.glsl"
 #include "common/cloud_shadow.glsl"
 
@@ -14,14 +15,14 @@ layout(binding = kFogBindingCloudShadow) uniform sampler2D cloudShadowMap;
 
 // T of the atmosphere from camera-relative x toward the sun; 1 with the atmosphere off.
 vec3 atmosphereSunTransmittance(vec3 x) {
-    if ((fog.flags.x & kFogFlagAtmosphere) == 0u) return vec3(1.0);
+    if (!fogFlag(kFogFlagAtmosphere)) return vec3(1.0);
     return sunTransmittanceFromLut(atmosphereTransmittance, fog.planetCamera.xyz + x, fog.toSun.xyz,
                                    fog.planet.x, fog.planet.y, fog.planet.zw);
 }
 
 // T of the clouds from camera-relative x toward the sun; 1 without clouds casting shadows.
 float cloudShadowVisibility(vec3 x) {
-    if ((fog.flags.x & kFogFlagCloudShadow) == 0u) return 1.0;
+    if (!fogFlag(kFogFlagCloudShadow)) return 1.0;
     return cloudShadow(cloudShadowMap, fog.cloudShadowU, fog.cloudShadowV, x);
 }
 

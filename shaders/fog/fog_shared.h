@@ -9,7 +9,10 @@
 namespace postfx::gpu {
 #endif
 
-PFX_CONST(uint, kFogGroupSize, 8);  // raymarch workgroup: kFogGroupSize² pixels
+PFX_CONST(uint, kFogGroupSize, 8);  // temporal and upsample workgroups: kFogGroupSize² pixels
+// The march's workgroup: kFogMarchGroupX × kFogMarchGroupY pixels
+PFX_CONST(uint, kFogMarchGroupX, 32);
+PFX_CONST(uint, kFogMarchGroupY, 8);
 
 PFX_CONST(uint, kFogBindingColorIn, 0);    // storage image: host color (read)
 PFX_CONST(uint, kFogBindingColorOut, 1);   // storage image: output (host color itself when in place)
@@ -51,6 +54,14 @@ PFX_CONST(float, kFogUpsampleDistanceTolerance, 0.1f);
 // h(y) = e^80 ≈ 5.5e34 stays finite in float far below the base height (fog.md, "Model").
 PFX_CONST(float, kMaxHeightExponent, 80.0f);
 
+// Specialization constants of the fog's march (fog/medium.glsl): its flags and its shadow kernel's
+// radius, fixed when the pipeline is created (postfx/src/fog/fog_effect.cpp), so that the compiler drops
+// the branches a frame does not take. A pipeline created without them (the froxel fog's scatter, the
+// benchmark's baselines) reads both from FogUniforms.
+PFX_CONST(uint, kFogConstantFlags, 0u);               // constant_id: FogUniforms.flags.x
+PFX_CONST(uint, kFogConstantShadowRadius, 1u);        // constant_id: FogUniforms.shadow.y
+PFX_CONST(uint, kFogFlagsFromUniforms, 0x80000000u);  // the flags constant's default: read the uniforms
+
 // Flags in FogUniforms.flags.x
 PFX_CONST(uint, kFogFlagJitter, 1u);
 PFX_CONST(uint, kFogFlagNoise, 2u);
@@ -65,6 +76,9 @@ PFX_CONST(uint, kFogFlagCloudShadow, 512u);  // the sun's light through the clou
 // The depth binding holds postfx.view_distance's surface distances, not the host's depth (shared by the
 // frame's effects; docs/architecture.md, "Shared inputs").
 PFX_CONST(uint, kFogFlagViewDistance, 1024u);
+// The shadow map's projection is orthographic (viewToShadow's last row is exactly (0, 0, 0, 1), a sun's
+// map): clip w is 1 and the march does not divide by it (the same bits, fewer instructions).
+PFX_CONST(uint, kFogFlagShadowOrthographic, 2048u);
 
 struct FogUniforms {
     mat4 clipToView;      // Vulkan clip -> camera-relative world (inverse(projection · rotation(view)))

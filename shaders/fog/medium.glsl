@@ -4,28 +4,39 @@
 #define POSTFX_FOG_MEDIUM_GLSL
 
 #include "common/integrate.glsl"
+#include "fog/flags.glsl"
 
-bool fogFlag(uint flag) {
-    return (fog.flags.x & flag) != 0u;
+// h(y) = exp(-height_falloff · (y - base_height)) of its exponent, clamped so that far below the base it
+// stays finite.
+float heightTermOfExponent(float exponent) {
+    return exp(min(exponent, kMaxHeightExponent));
 }
 
-// h(y) = exp(-height_falloff · (y - base_height)), exponent clamped so far below the base it stays finite.
 float heightTerm(float heightAboveBase) {
-    return exp(min(-fog.medium.y * heightAboveBase, kMaxHeightExponent));
+    return heightTermOfExponent(-fog.medium.y * heightAboveBase);
 }
 
-// noise(x) = clamp(n(u) - threshold, 0, 1) · multiplier, u = camera's noise coordinate + x · 0.01 · tiling.
-float noiseTerm(vec3 x) {
+// noise = clamp(n(u) - threshold, 0, 1) · multiplier at noise coordinate u.
+float noiseTermAt(vec3 u) {
     if (!fogFlag(kFogFlagNoise)) return 1.0;
-    float n = textureLod(noiseTexture, fog.noise.xyz + x * fog.noise.w, 0.0).r;
+    float n = textureLod(noiseTexture, u, 0.0).r;
     return clamp(n - fog.noiseRemap.x, 0.0, 1.0) * fog.noiseRemap.y;
 }
 
-// σt(x) = density · h(y) · noise(x) [1/m]. density · noise first (at most 1e6 · 1e3): density · h alone may
+// noise(x), u = camera's noise coordinate + x · 0.01 · tiling.
+float noiseTerm(vec3 x) {
+    return noiseTermAt(fog.noise.xyz + x * fog.noise.w);
+}
+
+// σt = density · h · noise [1/m]. density · noise first (at most 1e6 · 1e3): density · h alone may
 // overflow to +Inf (density > 6e3 where h reaches e^80), and +Inf · a noise of 0 would be NaN; +Inf · h is
 // +Inf, an opaque step (T = 0), never NaN.
+float extinctionOf(float noise, float height) {
+    return fog.medium.x * noise * height;
+}
+
 float extinction(vec3 x) {
-    return fog.medium.x * noiseTerm(x) * heightTerm(fog.heights.x + x.y);
+    return extinctionOf(noiseTerm(x), heightTerm(fog.heights.x + x.y));
 }
 
 // One PCF tap of the shadow test: whether texel depth `stored` leaves a sample at shadow depth `z` lit.
@@ -40,17 +51,16 @@ bool shadowTapLit(float z, float stored, bool reversed) {
 
 // Shadow-map visibility: mean of kernel² texel tests around the sample (1 outside the map's uv or before
 // its near plane).
-float shadowVisibility(vec3 x) {
+float shadowVisibilityOfClip(vec4 clip) {
     if (!fogFlag(kFogFlagShadowMap)) return 1.0;
-    vec4 clip = fog.viewToShadow * vec4(x, 1.0);
-    vec3 s = clip.xyz / clip.w;
+    vec3 s = fogFlag(kFogFlagShadowOrthographic) ? clip.xyz : clip.xyz / clip.w;
     vec2 uv = s.xy * 0.5 + 0.5;
     bool reversed = fogFlag(kFogFlagShadowReversedZ);
     bool beforeNear = reversed ? !(s.z <= 1.0) : !(s.z >= 0.0);  // NaN (clip.w = 0) too, like the reference
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || beforeNear) return 1.0;
     ivec2 size = textureSize(shadowMap, 0);
     ivec2 center = min(ivec2(uv * vec2(size)), size - 1);
-    int r = int(fog.shadow.y);
+    int r = fogShadowRadius();
     // One tap (shadow kernel 1, every preset's): no loop and no clamp (center is inside the map already):
     // 6-9% of the march on the H100.
     if (r == 0) return shadowTapLit(s.z, texelFetch(shadowMap, center, 0).r, reversed) ? 1.0 : 0.0;
@@ -65,13 +75,23 @@ float shadowVisibility(vec3 x) {
     return lit / (taps * taps);
 }
 
+// ... at camera-relative x.
+float shadowVisibility(vec3 x) {
+    return shadowVisibilityOfClip(fog.viewToShadow * vec4(x, 1.0));
+}
+
 // Self-shadowing: transmittance of the height fog from height y (above base) to the sun, closed form
 // τ = density · h(y) / (height_falloff · toSun.y); no way out (k·toSun.y <= 0) means none reaches x.
-float sunTransmittance(float heightAboveBase) {
+// `height`: h at x.
+float sunTransmittanceOfHeightTerm(float height) {
     if (!fogFlag(kFogFlagSelfShadow)) return 1.0;
     float a = fog.medium.y * fog.toSun.y;
     if (a <= 0.0) return 0.0;
-    return exp(-fog.medium.x * heightTerm(heightAboveBase) / a);
+    return exp(-fog.medium.x * height / a);
+}
+
+float sunTransmittance(float heightAboveBase) {
+    return sunTransmittanceOfHeightTerm(heightTerm(heightAboveBase));
 }
 
 // Optical depth of the height fog (no noise) along a ray segment that starts at `heightAboveBase0`, climbs

@@ -2,6 +2,7 @@
 #ifndef POSTFX_FOG_RAY_GLSL
 #define POSTFX_FOG_RAY_GLSL
 
+#include "fog/flags.glsl"
 #include "common/reduced_resolution.glsl"
 
 struct FogRay {
@@ -19,7 +20,7 @@ vec3 fogRayDirection(uvec2 pixel) {
 // With kFogFlagViewDistance the depth binding holds the surface distance itself (∞ without geometry).
 FogRay fogRay(uvec2 pixel) {
     float depth = texelFetch(depthTexture, ivec2(pixel), 0).r;
-    if ((fog.flags.x & kFogFlagViewDistance) != 0u) return FogRay(fogRayDirection(pixel), depth);
+    if (fogFlag(kFogFlagViewDistance)) return FogRay(fogRayDirection(pixel), depth);
     bool noGeometry = depth == fog.march.y;
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(fog.extent.xy) * 2.0 - 1.0;
     vec4 p = fog.clipToView * vec4(ndc, noGeometry ? 0.5 : depth, 1.0);

@@ -6,7 +6,7 @@
 
 #include "fog/fog_shared.h"
 
-layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
+layout(local_size_x = kFogMarchGroupX, local_size_y = kFogMarchGroupY) in;
 
 #include "fog/bindings.glsl"
 

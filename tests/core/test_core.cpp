@@ -10,6 +10,7 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <bit>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -257,16 +258,16 @@ TEST_F(CoreTest, ComputeHelpersProduceExactResults) {
     const postfx::core::Binding bindings[] = {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                               {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                               {2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
-    const VkSpecializationMapEntry spec[] = {{0, 0, sizeof(float)}};
     postfx::core::ComputePipelineDesc pd;
     pd.name = "test.affine";
     pd.spirv = core_test_spirv::core_affine_comp;
     pd.bindings = bindings;
     pd.pushConstantBytes = 12;
-    pd.specialization = spec;
-    pd.specializationData = std::as_bytes(std::span(&kScale, 1));
+    postfx::core::PipelineConstants constants;  // constant_id 0: the scale
+    constants.values[0] = std::bit_cast<uint32_t>(kScale);
+    constants.count = 1;
     postfx::core::ComputePipeline pipeline;
-    postfx::Status s = pipeline.create(gpu, pd);
+    postfx::Status s = pipeline.create(gpu, pd, 0, constants);
     ASSERT_TRUE(s.ok()) << s.message;
 
     postfx::core::DescriptorArena arena;

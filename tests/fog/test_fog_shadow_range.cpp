@@ -271,6 +271,40 @@ TEST_P(FogShadowRangeTest, CentralShaftMatchesClosedForm) {
     EXPECT_EQ(gpuOut[p + 3], 1.0f);
 }
 
+// (d) The march's pipeline is specialized for each frame's flags and kernel (fog_shared.h,
+// kFogConstant*), and for an orthographic map skips the divide by clip w. The same map as a projective
+// matrix (every row × 2: clip w = 2, the divide taken, exact in float) gives the same bits; and frames
+// that switch the kernel and the shadow map's convention in one context give each what a fresh context
+// gives (each frame gets its own specialization, none another's).
+TEST_P(FogShadowRangeTest, SpecializationsAgree) {
+    const RangeCase& c = GetParam();
+    const SlabFrame f = slabFrame(c);
+    FogHarness harness(*host, gpu);
+    std::vector<float> first, projective, switched, again;
+    postfx::Status s = harness.run(*context, f.images, f.frame, first);
+    ASSERT_TRUE(s.ok()) << s.message;
+
+    SlabFrame scaled = f;
+    scaled.frame.shadowMap.worldToClip = 2.0 * f.frame.shadowMap.worldToClip;
+    ASSERT_TRUE((s = harness.run(*context, scaled.images, scaled.frame, projective)).ok()) << s.message;
+    EXPECT_EQ(projective, first) << "the projective matrix's march differs from the orthographic one's";
+
+    // Another kernel and the other depth convention (its own texels), then the first frame again.
+    const SlabFrame other = slabFrame({c.cameraY, !c.shadowReversedZ, c.kernel == 1 ? 3u : 1u});
+    ASSERT_TRUE((s = harness.run(*context, other.images, other.frame, switched)).ok()) << s.message;
+    ASSERT_TRUE((s = harness.run(*context, f.images, f.frame, again)).ok()) << s.message;
+    EXPECT_EQ(again, first) << "the first frame's settings again, in the same context";
+
+    std::unique_ptr<postfx::Context> fresh;
+    postfx::ContextCreateInfo info;
+    info.depth.reversedZ = true;
+    ASSERT_TRUE(createContext(fresh, info).ok());
+    std::vector<float> freshSwitched;
+    ASSERT_TRUE((s = harness.run(*fresh, other.images, other.frame, freshSwitched)).ok()) << s.message;
+    EXPECT_EQ(switched, freshSwitched) << "the switched frame against a fresh context's";
+    EXPECT_NE(switched, first);
+}
+
 INSTANTIATE_TEST_SUITE_P(Slab, FogShadowRangeTest,
                          ::testing::Values(RangeCase{2.0, false, 1}, RangeCase{2.0, true, 1},
                                            RangeCase{2.0, false, 3}, RangeCase{2.0, true, 3},

@@ -1,5 +1,6 @@
 #include "core/compute_pipeline.h"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -18,7 +19,8 @@ ComputePipeline& ComputePipeline::operator=(ComputePipeline&& other) noexcept {
     return *this;
 }
 
-Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc, VkPipelineCreateFlags flags) {
+Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc, VkPipelineCreateFlags flags,
+                               const PipelineConstants& constants) {
     reset();
     gpu_ = &gpu;
     name_ = desc.name;
@@ -61,11 +63,14 @@ Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc, 
                            (name_ + ": vkCreateShaderModule").c_str())))
         return reset(), s;
 
+    std::array<VkSpecializationMapEntry, PipelineConstants::kMax> entries{};
+    for (uint32_t i = 0; i < constants.count; ++i)
+        entries[i] = {i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)};
     VkSpecializationInfo spec{};
-    spec.mapEntryCount = static_cast<uint32_t>(desc.specialization.size());
-    spec.pMapEntries = desc.specialization.data();
-    spec.dataSize = desc.specializationData.size();
-    spec.pData = desc.specializationData.data();
+    spec.mapEntryCount = std::min(constants.count, PipelineConstants::kMax);
+    spec.pMapEntries = entries.data();
+    spec.dataSize = spec.mapEntryCount * sizeof(uint32_t);
+    spec.pData = constants.values.data();
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

@@ -3,6 +3,7 @@
 
 #include "core/gpu.h"
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -19,8 +20,15 @@ struct ComputePipelineDesc {
     std::span<const uint32_t> spirv;
     std::span<const Binding> bindings;  // descriptor set 0
     uint32_t pushConstantBytes = 0;     // 0..128
-    std::span<const VkSpecializationMapEntry> specialization;
-    std::span<const std::byte> specializationData;
+};
+
+// A pipeline's specialization constants: value i is the shader's `constant_id = i` (32 bits: a uint, an
+// int, or a float's bits through std::bit_cast).
+struct PipelineConstants {
+    static constexpr uint32_t kMax = 4;
+    std::array<uint32_t, kMax> values{};
+    uint32_t count = 0;
+    bool operator==(const PipelineConstants&) const = default;
 };
 
 class ComputePipeline {
@@ -31,7 +39,9 @@ public:
     ~ComputePipeline() { reset(); }
 
     // `flags`: VkComputePipelineCreateInfo::flags (a tool's VK_PIPELINE_CREATE_CAPTURE_STATISTICS_BIT_KHR).
-    Status create(const Gpu& gpu, const ComputePipelineDesc& desc, VkPipelineCreateFlags flags = 0);
+    // `constants`: specialization constants; a shader's constant not given keeps its default.
+    Status create(const Gpu& gpu, const ComputePipelineDesc& desc, VkPipelineCreateFlags flags = 0,
+                  const PipelineConstants& constants = {});
     void reset();
     bool valid() const { return pipeline_ != VK_NULL_HANDLE; }
 

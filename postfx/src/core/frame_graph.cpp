@@ -281,6 +281,11 @@ FrameBuilder& FrameBuilder::push(const void* data, uint32_t bytes) {
     return *this;
 }
 
+FrameBuilder& FrameBuilder::constants(const PipelineConstants& constants) {
+    f_.passes.back().constants = constants;
+    return *this;
+}
+
 // ---- FrameGraph ----
 
 Status FrameGraph::create(const Gpu& gpu, uint32_t framesInFlight, const DepthConvention& depth) {
@@ -439,6 +444,21 @@ Status FrameGraph::sampler(SamplerKind kind, VkSampler& out) {
     return Status::success();
 }
 
+void FrameGraph::retireOldestVariant(const ComputePipelineDesc* desc, uint64_t frameIndex,
+                                     Retirement& retirement) {
+    size_t variants = 0;
+    auto oldest = pipelines_.end();
+    for (auto it = pipelines_.begin(); it != pipelines_.end(); ++it) {
+        if (it->desc != desc) continue;
+        ++variants;
+        if (it->lastUsed != frameIndex && (oldest == pipelines_.end() || it->lastUsed < oldest->lastUsed))
+            oldest = it;
+    }
+    if (variants < kMaxVariantsPerPipeline || oldest == pipelines_.end()) return;
+    retirement.retire(frameIndex, std::move(oldest->pipeline));
+    pipelines_.erase(oldest);
+}
+
 // Creates what the compiled frame holds and releases what it no longer does; no command is recorded.
 Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement) {
     for (OwnedImage& o : images_)
@@ -524,14 +544,17 @@ Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement
     for (size_t i = 0; i < f.passes.size(); ++i) {
         const PassDecl& p = f.passes[i];
         if (!p.live) continue;
-        auto it = std::find_if(pipelines_.begin(), pipelines_.end(),
-                               [&](const CachedPipeline& c) { return c.desc == p.pipeline; });
+        auto it = std::find_if(pipelines_.begin(), pipelines_.end(), [&](const CachedPipeline& c) {
+            return c.desc == p.pipeline && c.constants == p.constants;
+        });
         if (it == pipelines_.end()) {
             auto pipeline = std::make_unique<ComputePipeline>();
-            if (Status s = pipeline->create(*gpu_, *p.pipeline); !s) return s;
-            pipelines_.push_back({p.pipeline, p.effect, std::move(pipeline)});
+            if (Status s = pipeline->create(*gpu_, *p.pipeline, 0, p.constants); !s) return s;
+            retireOldestVariant(p.pipeline, frameIndex, retirement);
+            pipelines_.push_back({p.pipeline, p.constants, p.effect, frameIndex, std::move(pipeline)});
             it = pipelines_.end() - 1;
         }
+        it->lastUsed = frameIndex;
         passPipelines_[i] = it->pipeline.get();
         // Every binding of the pipeline's layout gets a resource (an unwritten descriptor is undefined).
         for (const Binding& binding : p.pipeline->bindings) {

@@ -91,6 +91,7 @@ struct ResourceDecl {
 
 struct PassDecl {
     const ComputePipelineDesc* pipeline = nullptr;  // static: pipelines are cached by its address
+    PipelineConstants constants;                    // and by its specialization constants
     int effect = -1;
     uint32_t groups[3] = {1, 1, 1};
     std::array<std::byte, 128> push{};
@@ -189,6 +190,9 @@ public:
                        SamplerKind sampler = SamplerKind::NearestClamp);
     FrameBuilder& bind(uint32_t binding, BufferRef buffer);
     FrameBuilder& push(const void* data, uint32_t bytes);  // at most 128 bytes
+    // The pass's specialization constants (constant_id 0, 1, ...): one pipeline per distinct set, created
+    // the first frame it is recorded.
+    FrameBuilder& constants(const PipelineConstants& constants);
 
 private:
     ImageRef ownedImage(const ResourceId& id, const ImageDesc& desc, ResourceDecl::Kind kind, uint64_t key);
@@ -254,11 +258,19 @@ private:
     };
     struct CachedPipeline {
         const ComputePipelineDesc* desc = nullptr;
+        PipelineConstants constants;
         int effect = -1;
+        uint64_t lastUsed = 0;  // frame index
         std::unique_ptr<ComputePipeline> pipeline;
     };
+    // Specializations of one pipeline kept at once (a host switching between a few settings keeps each
+    // compiled); the least recently used beyond these is released.
+    static constexpr size_t kMaxVariantsPerPipeline = 4;
     const OwnedImage* findImage(const ResourceId* id) const;
     Status prepare(Frame& frame, uint64_t frameIndex, Retirement& retirement);
+    // Before a new specialization of `desc` is cached: releases its least recently used one when
+    // kMaxVariantsPerPipeline are held (never one this frame uses).
+    void retireOldestVariant(const ComputePipelineDesc* desc, uint64_t frameIndex, Retirement& retirement);
     Status sampler(SamplerKind kind, VkSampler& out);
 
     const Gpu* gpu_ = nullptr;

@@ -70,11 +70,21 @@ const core::ComputePipelineDesc kTemporal[2][2] = {
 const core::ComputePipelineDesc kNoiseGenerate{"fog.noise", spirv::common_noise_generate_comp, kNoiseBindings,
                                                sizeof(gpu::NoisePush)};
 
-uint32_t groupsFor(uint32_t size) {
-    return (size + gpu::kFogGroupSize - 1) / gpu::kFogGroupSize;
+uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kFogGroupSize) {
+    return (size + groupSize - 1) / groupSize;
 }
 
 }  // namespace
+
+core::PipelineConstants marchConstants(const gpu::FogUniforms& u) {
+    // The radius only matters with the shadow map read: one pipeline for every kernel without it.
+    const bool shadowMap = (u.flags.x & gpu::kFogFlagShadowMap) != 0u;
+    core::PipelineConstants c;
+    c.values[gpu::kFogConstantFlags] = u.flags.x;
+    c.values[gpu::kFogConstantShadowRadius] = shadowMap ? uint32_t(u.shadow.y) : 0u;
+    c.count = 2;
+    return c;
+}
 
 std::vector<MarchPipeline> marchPipelines() {
     return {{"full size", &kRaymarch[0]},
@@ -173,7 +183,9 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const core::OptionalSampled cloudShadow = clouds::shadowMapInput(b, depth);
     if (!reduced && !temporal) {
         const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
-        b.pass(kRaymarch[rgba32], groupsFor(full.x), groupsFor(full.y), 1)
+        b.pass(kRaymarch[rgba32], groupsFor(full.x, gpu::kFogMarchGroupX),
+               groupsFor(full.y, gpu::kFogMarchGroupY), 1)
+            .constants(marchConstants(u))
             .bind(gpu::kFogBindingColorIn, source, Use::StorageRead)
             .bind(gpu::kFogBindingDepth, depthInput.image, Use::Sampled)
             .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
@@ -200,7 +212,9 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             distance[i] = b.historyImage(kHistoryDistance[i], distanceDesc);
         }
     }
-    b.pass(kRaymarchReduced[temporal][rgba32], groupsFor(march.x), groupsFor(march.y), 1)
+    b.pass(kRaymarchReduced[temporal][rgba32], groupsFor(march.x, gpu::kFogMarchGroupX),
+           groupsFor(march.y, gpu::kFogMarchGroupY), 1)
+        .constants(marchConstants(u))
         .bind(gpu::kFogBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)

@@ -9,6 +9,7 @@
 #include "core/frame_graph.h"
 #include "core/gpu.h"
 #include "core/temporal.h"
+#include "fog/fog_shared.h"
 
 namespace postfx::fog {
 
@@ -31,6 +32,8 @@ struct MarchPipeline {
     const core::ComputePipelineDesc* desc;
 };
 std::vector<MarchPipeline> marchPipelines();
+// The march's specialization constants for a frame's uniforms (fog_shared.h, kFogConstant*).
+core::PipelineConstants marchConstants(const gpu::FogUniforms& uniforms);
 
 class FogEffect final : public core::Effect {
 public:

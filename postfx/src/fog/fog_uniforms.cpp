@@ -47,6 +47,9 @@ gpu::FogUniforms buildMediumUniforms(const FogMedium& s, const FrameInfo& frame,
     if (noiseEnabled) flags |= gpu::kFogFlagNoise;
     if (shadowMapEnabled) flags |= gpu::kFogFlagShadowMap;
     if (shadowMapEnabled && frame.shadowMap.reversedZ) flags |= gpu::kFogFlagShadowReversedZ;
+    const glm::mat4& m = u.viewToShadow;  // m[column][row]
+    if (shadowMapEnabled && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f)
+        flags |= gpu::kFogFlagShadowOrthographic;
     if (s.selfShadow) flags |= gpu::kFogFlagSelfShadow;
     if (s.analyticTail) flags |= gpu::kFogFlagAnalyticTail;
     if (depth.reversedZ) flags |= gpu::kFogFlagDepthReversedZ;
