@@ -40,10 +40,10 @@ struct QualityPreset {
 // Chosen by postfx-bench's rule from the H100 run in docs/accuracy-cost/h100/ (README.md there: timed on
 // fog_default at 1920×1080, lowest 16-frame error averaged over the scenes within 0.25 / 0.5 / 1 / 2 ms).
 constexpr QualityPreset kQualityPresets[] = {
-    {FogQuality::Low, 32, true, 1, 0.5f, true, 0.006045},
-    {FogQuality::Medium, 32, true, 1, 1.0f, true, 0.004346},
-    {FogQuality::High, 64, true, 1, 1.0f, true, 0.002130},
-    {FogQuality::Ultra, 128, true, 1, 1.0f, true, 0.001110},
+    {FogQuality::Low, 32, true, 1, 0.5f, true, 0.005905},
+    {FogQuality::Medium, 32, true, 1, 1.0f, true, 0.003578},
+    {FogQuality::High, 64, true, 1, 1.0f, true, 0.001803},
+    {FogQuality::Ultra, 128, true, 1, 1.0f, true, 0.001075},
 };
 
 bool isPowerOfTwo(uint32_t v) {
