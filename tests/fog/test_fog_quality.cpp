@@ -80,8 +80,8 @@ TEST_F(FogQualityTest, ApplyFogQualitySetsThePresetTable) {
         bool temporal;
     };
     const Row rows[] = {
-        {FogQuality::Low, 32, true, 1, 0.5f, true},        {FogQuality::Medium, 32, true, 1, 1.0f, true},
-        {FogQuality::High, 64, true, 1, 1.0f, true},       {FogQuality::Ultra, 128, true, 1, 1.0f, true},
+        {FogQuality::Low, 64, true, 1, 0.5f, true},        {FogQuality::Medium, 32, true, 1, 1.0f, true},
+        {FogQuality::High, 128, true, 1, 1.0f, true},      {FogQuality::Ultra, 256, true, 1, 1.0f, true},
         {FogQuality::Custom, 77, false, 5, 0.375f, false}, {FogQuality::Auto, 77, false, 5, 0.375f, false}};
     for (const Row& r : rows) {
         const postfx::FogSettings s = postfx::applyFogQuality(custom, r.quality);

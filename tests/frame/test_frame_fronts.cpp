@@ -1,6 +1,6 @@
 // The preset errors that one budget for the frame weighs (Effect::presetErrors) against the committed
-// accuracy–cost fronts they come from: the fog's docs/accuracy-cost/h100/results.csv (16-frame relative
-// RMSE of the preset= rows, the mean over fog_default, fog_height, fog_shadowed, fog_valley) and the
+// accuracy–cost fronts they come from: the fog's docs/accuracy-cost/h100-presets/results.csv (16-frame
+// relative RMSE of the preset= rows, the mean over fog_default, fog_height, fog_shadowed, fog_valley) and the
 // clouds' docs/accuracy-cost/clouds/results.csv (converged still relative RMSE of the preset= rows, the
 // mean over the views). A new benchmark run that moves them fails here until the tables follow.
 #include "clouds/clouds_settings.h"
@@ -66,7 +66,7 @@ const char* const kPresetNames[] = {"low", "medium", "high", "ultra"};
 
 TEST(FrameFronts, FogPresetErrorsAreTheCommittedFronts) {
     const std::vector<Row> rows =
-        readCsv(std::string(POSTFX_SOURCE_DIR) + "/docs/accuracy-cost/h100/results.csv");
+        readCsv(std::string(POSTFX_SOURCE_DIR) + "/docs/accuracy-cost/h100-presets/results.csv");
     const std::vector<double> errors = postfx::fog::qualityPresetErrors();
     ASSERT_EQ(errors.size(), 4u);
     for (size_t p = 0; p < 4; ++p) {
