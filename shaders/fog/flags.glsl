@@ -2,7 +2,7 @@
 #ifndef POSTFX_FOG_FLAGS_GLSL
 #define POSTFX_FOG_FLAGS_GLSL
 
-// The flags and the shadow kernel's radius as specialization constants (fog_shared.h): 12-17% of the
+// The flags and the shadow kernel's radius as specialization constants (fog_shared.h): 12-29% of the
 // march on the H100 (docs/accuracy-cost/README.md, "What paid"). Defaults: read from the uniforms.
 layout(constant_id = kFogConstantFlags) const uint kFogFlags = kFogFlagsFromUniforms;
 layout(constant_id = kFogConstantShadowRadius) const int kFogShadowRadius = -1;
