@@ -40,6 +40,7 @@ struct Producer final : postfx::core::Effect {
     bool on = true;
     uint64_t key = 1;
     float value = 0.25f;
+    uint32_t variant = 0;  // the build pass's specialization constant (the shader declares none)
     const char* name() const override { return "producer"; }
     postfx::Status validate(const postfx::FrameInfo&) const override { return postfx::Status::success(); }
     bool active(const postfx::FrameInfo&) const override { return on; }
@@ -48,7 +49,10 @@ struct Producer final : postfx::core::Effect {
         desc.extent = {4, 4, 1};
         const glm::vec4 push(value);
         const ImageRef lut = b.persistentImage(kLut, desc, key);
-        b.pass(kBuild, 1, 1, 1).bind(0, lut, Use::StorageWrite).push(&push, sizeof push);
+        postfx::core::PipelineConstants constants;
+        constants.values[0] = variant;
+        constants.count = 1;
+        b.pass(kBuild, 1, 1, 1).constants(constants).bind(0, lut, Use::StorageWrite).push(&push, sizeof push);
         const ImageRef unread = b.transientImage(kUnread, desc);
         b.pass(kScratch, 1, 1, 1).bind(0, unread, Use::StorageWrite).push(&push, sizeof push);
         return postfx::Status::success();
@@ -210,6 +214,32 @@ TEST_F(CoreFrameGraphTest, OneEffectReadsAnothersPersistentImageRebuiltOnlyWhenI
     plan = run(6, color);
     EXPECT_TRUE(plan.passes.empty());
     expectColor(color, 1.0f);
+}
+
+// A pass's specialization constants select its pipeline: one per set of constants, created when first
+// recorded and reused after, at most kMaxVariantsPerPipeline (4) held per pipeline description: a fifth
+// releases the least recently used (counted by FrameGraph::heldObjects, with the LUT image).
+TEST_F(CoreFrameGraphTest, SpecializationsArePipelinesOfTheirOwnAtMostFourHeld) {
+    std::vector<float> color;
+    const postfx::core::FrameGraph& graph = postfx::ContextAccess::of(*context).graph;
+    uint64_t frame = 0;
+    auto buildWith = [&](uint32_t variant) {
+        producer->variant = variant;
+        producer->key = 100 + frame;  // a new key: the build pass is recorded
+        producer->value = 0.125f * float(variant);
+        const postfx::FramePlan plan = run(frame++, color);
+        EXPECT_EQ(names(plan), (std::vector<std::string>{"producer.build", "consumer.apply"}));
+        expectColor(color, 1.0f + 0.125f * float(variant));
+        return graph.heldObjects();
+    };
+    const size_t first = buildWith(1);
+    EXPECT_EQ(buildWith(2), first + 1);
+    EXPECT_EQ(buildWith(3), first + 2);
+    EXPECT_EQ(buildWith(4), first + 3);
+    EXPECT_EQ(buildWith(2), first + 3) << "a held specialization is reused";
+    EXPECT_EQ(buildWith(5), first + 3) << "the fifth releases the least recently used (1)";
+    EXPECT_EQ(buildWith(6), first + 3);
+    EXPECT_EQ(buildWith(1), first + 3) << "a released one is created again, another released";
 }
 
 TEST_F(CoreFrameGraphTest, CompositesChainThroughASeparateOutputAndHostImagesCrossOnce) {
