@@ -6,8 +6,8 @@
 #include "common/integrate.glsl"
 #include "fog/flags.glsl"
 
-// h(y) = exp(-height_falloff · (y - base_height)) of its exponent, clamped so that far below the base it
-// stays finite.
+// h(y) = exp(-height_falloff · (y - base_height)), from its exponent, clamped so that far below the base
+// it stays finite.
 float heightTermOfExponent(float exponent) {
     return exp(min(exponent, kMaxHeightExponent));
 }
@@ -82,7 +82,7 @@ float shadowVisibility(vec3 x) {
 
 // Self-shadowing: transmittance of the height fog from height y (above base) to the sun, closed form
 // τ = density · h(y) / (height_falloff · toSun.y); no way out (k·toSun.y <= 0) means none reaches x.
-// `height`: h at x.
+// `height`: h(y) at the sample.
 float sunTransmittanceOfHeightTerm(float height) {
     if (!fogFlag(kFogFlagSelfShadow)) return 1.0;
     float a = fog.medium.y * fog.toSun.y;
