@@ -3,12 +3,12 @@
 #include "core/compute_pipeline.h"
 #include "core/gpu.h"
 #include "fog/fog_effect.h"
+#include "host/vulkan_host.h"
 
 #include <vulkan/vulkan.h>
 
 #include <cinttypes>
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,16 +28,6 @@ struct StatsDevice {
     }
 };
 
-bool hasExtension(VkPhysicalDevice physical, const char* name) {
-    uint32_t count = 0;
-    vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, nullptr);
-    std::vector<VkExtensionProperties> all(count);
-    vkEnumerateDeviceExtensionProperties(physical, nullptr, &count, all.data());
-    for (const VkExtensionProperties& e : all)
-        if (std::strcmp(e.extensionName, name) == 0) return true;
-    return false;
-}
-
 std::string error(const char* what, VkResult r) {
     return std::string(what) + " failed (VkResult " + std::to_string(int(r)) + ")";
 }
@@ -55,7 +45,7 @@ bool createDevice(StatsDevice& d, std::string& message) {
     std::vector<VkPhysicalDevice> devices(count);
     vkEnumeratePhysicalDevices(d.instance, &count, devices.data());
     for (VkPhysicalDevice p : devices)
-        if (hasExtension(p, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+        if (demo::hasDeviceExtension(p, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
             d.physical = p;
             break;
         }

@@ -27,6 +27,9 @@ struct HostOptions {
 // "VK_ERROR_DEVICE_LOST" etc.; "VkResult(<n>)" for codes it does not know.
 const char* vkResultName(VkResult result);
 
+// Whether physical device `pd` offers device extension `name`.
+bool hasDeviceExtension(VkPhysicalDevice pd, const char* name);
+
 class VulkanHost {
 public:
     static std::unique_ptr<VulkanHost> create(const HostOptions& options, std::string& error);

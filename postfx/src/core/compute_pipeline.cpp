@@ -64,10 +64,10 @@ Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc, 
         return reset(), s;
 
     std::array<VkSpecializationMapEntry, PipelineConstants::kMax> entries{};
-    for (uint32_t i = 0; i < constants.count; ++i)
-        entries[i] = {i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)};
     VkSpecializationInfo spec{};
     spec.mapEntryCount = std::min(constants.count, PipelineConstants::kMax);
+    for (uint32_t i = 0; i < spec.mapEntryCount; ++i)
+        entries[i] = {i, uint32_t(i * sizeof(uint32_t)), sizeof(uint32_t)};
     spec.pMapEntries = entries.data();
     spec.dataSize = spec.mapEntryCount * sizeof(uint32_t);
     spec.pData = constants.values.data();
