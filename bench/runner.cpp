@@ -29,6 +29,11 @@ constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
 // ray-marched fog's IGN pattern repeats every 64 frames, the froxel fog's Halton (2, 3, 5) samples every
 // 1024 (a multiple of 64: the ray-marched fog's frames are those of a period of 64).
 constexpr uint64_t kJitterPeriod = 1024;
+// Before the error frames: a camera cut, then this many frames unread, so that the temporal histories the
+// error frames start from are the same in every run (the timed frames before them end wherever the
+// wall-clock warm-up left them). 64: the ray-marched fog's IGN period, and many times any history's
+// time constant.
+constexpr uint64_t kErrorWarmupFrames = 64;
 // A pixel is "off" when a channel differs by more than this fraction of the pixel's magnitude
 // max(max_c |reference_c|, kMagnitudeFloor) [radiance; the scenes' values are in the thousands].
 constexpr double kPixelTolerance = 0.01;
@@ -388,7 +393,22 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
                 " does not match stride " + std::to_string(stride);
         return false;
     }
-    m.nextFrame = (m.nextFrame + kJitterPeriod - 1) / kJitterPeriod * kJitterPeriod;
+    const uint64_t firstRead =
+        (m.nextFrame + kErrorWarmupFrames + kJitterPeriod - 1) / kJitterPeriod * kJitterPeriod;
+    m.nextFrame = firstRead - kErrorWarmupFrames;
+    m.renderer->requestCameraCut();
+    for (uint64_t k = 0; k < kErrorWarmupFrames; ++k) {
+        const uint64_t frameIndex = m.nextFrame++;
+        const size_t slot = frameIndex % kFramesInFlight;
+        if (!m.wait(slot, error) ||
+            !m.submit(
+                slot,
+                [&](VkCommandBuffer cmd) {
+                    return m.recordFrame(cmd, scene, method, stepLength, frameIndex, slot, false, error);
+                },
+                error))
+            return false;
+    }
     std::vector<double> sum(size_t(w) * h * 4, 0.0);
     std::vector<float> image(sum.size()), frame;
     const uint32_t frames = kAveragedFrames.back();

@@ -133,8 +133,8 @@ TEST_F(FrameBudgetContextTest, ChoosesTheLowestSummedErrorAndRendersThoseVeryPre
     std::vector<float> out;
     ASSERT_TRUE(harness.run(*context, im, f, out).ok());
 
-    // Within 1.35 ms: fog High (0.7) + clouds Medium (0.5), error 0.00213 + 0.00981, beats fog Medium +
-    // clouds High (1.2 ms, 0.00435 + 0.00868) and fog Ultra alone (clouds' Low does not fit beside it).
+    // Within 1.35 ms: fog High (0.7) + clouds Medium (0.5), error 0.000954 + 0.00981, beats fog Medium +
+    // clouds High (1.2 ms, 0.002829 + 0.00868) and fog Ultra alone (clouds' Low does not fit beside it).
     EXPECT_EQ(expected(f.budgetMs, true), (std::vector<uint32_t>{1, 2}));
     postfx::BudgetChoice choice;
     ASSERT_TRUE(context->budgetChoice(choice).ok());

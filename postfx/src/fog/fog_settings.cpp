@@ -42,10 +42,10 @@ struct QualityPreset {
 // fog_default at 1920×1080, lowest 16-frame error averaged over the scenes within 0.25 / 0.5 / 1 / 2 ms),
 // after issue 23's faster march; measured as presets in docs/accuracy-cost/h100-presets/.
 constexpr QualityPreset kQualityPresets[] = {
-    {FogQuality::Low, 64, true, 1, 0.5f, true, 0.005159},
-    {FogQuality::Medium, 32, true, 1, 1.0f, true, 0.003520},
-    {FogQuality::High, 128, true, 1, 1.0f, true, 0.001075},
-    {FogQuality::Ultra, 256, true, 1, 1.0f, true, 0.000815},
+    {FogQuality::Low, 64, true, 1, 0.5f, true, 0.005094},
+    {FogQuality::Medium, 32, true, 1, 1.0f, true, 0.002829},
+    {FogQuality::High, 128, true, 1, 1.0f, true, 0.000954},
+    {FogQuality::Ultra, 256, true, 1, 1.0f, true, 0.000771},
 };
 
 bool isPowerOfTwo(uint32_t v) {
