@@ -400,13 +400,13 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
     for (uint64_t k = 0; k < kErrorWarmupFrames; ++k) {
         const uint64_t frameIndex = m.nextFrame++;
         const size_t slot = frameIndex % kFramesInFlight;
-        if (!m.wait(slot, error) ||
-            !m.submit(
-                slot,
-                [&](VkCommandBuffer cmd) {
-                    return m.recordFrame(cmd, scene, method, stepLength, frameIndex, slot, false, error);
-                },
-                error))
+        if (!m.wait(slot, error) || !m.submit(
+                                        slot,
+                                        [&](VkCommandBuffer cmd) {
+                                            return m.recordFrame(cmd, scene, method, stepLength, frameIndex,
+                                                                 slot, false, error);
+                                        },
+                                        error))
             return false;
     }
     std::vector<double> sum(size_t(w) * h * 4, 0.0);
