@@ -896,3 +896,53 @@ TEST_F(BenchFrameSmoke, CsvHasARowPerFogWithEveryEffectTimedAndAFiniteError) {
     for (const char* section : {"| device | ", "## Target", "| 64×36 | froxel | medium |"})
         EXPECT_NE(md.find(section), std::string::npos) << section;
 }
+
+// BenchRepeatSmoke: two runs of `postfx-bench --quick` on fog_default that differ only in how many frames
+// each setting's warm-up and timing take give every error to the last digit, the temporal presets' too:
+// the error frames start from a camera cut and the same frames before them, whatever ran before.
+class BenchRepeatSmoke : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        for (int run = 0; run < 2; ++run) {
+            const std::string out = gOut + "/repeat" + std::to_string(run);
+            std::filesystem::remove_all(out);
+            const std::string frames = run == 0 ? " --warmup 1 --frames 2" : " --warmup 7 --frames 5";
+            const std::string command =
+                "'" + gBench +
+                "' --quick --validation --size 64x36 --scenes fog_default --steps 4 --scales 1 "
+                "--shadow-kernels 1 --no-baselines --no-motion" +
+                frames + " --scene-dir '" + gSceneDir + "' --out '" + out + "'";
+            std::printf("running: %s\n", command.c_str());
+            std::fflush(stdout);
+            status_[run] = std::system(command.c_str());
+        }
+    }
+    static int status_[2];
+};
+int BenchRepeatSmoke::status_[2] = {-1, -1};
+
+TEST_F(BenchRepeatSmoke, ErrorsDoNotDependOnTheFramesBeforeThem) {
+    ASSERT_EQ(status_[0], 0) << "the first postfx-bench run failed (its output is above)";
+    ASSERT_EQ(status_[1], 0) << "the second postfx-bench run failed (its output is above)";
+    std::vector<Row> rows[2];
+    for (int run = 0; run < 2; ++run) {
+        std::vector<std::string> header;
+        bool sawDevice = false;
+        const std::string path = gOut + "/repeat" + std::to_string(run) + "/results.csv";
+        ASSERT_TRUE(readCsv(path, header, rows[run], sawDevice)) << path;
+    }
+    ASSERT_EQ(rows[0].size(), rows[1].size());
+    size_t temporalRows = 0;
+    for (size_t i = 0; i < rows[0].size(); ++i) {
+        const Row& a = rows[0][i];
+        const Row& b = rows[1][i];
+        ASSERT_EQ(a.at("preset"), b.at("preset"));
+        ASSERT_EQ(a.at("steps"), b.at("steps"));
+        ASSERT_NE(a.at("frames"), b.at("frames"));  // the runs did differ before the error frames
+        if (!a.at("preset").empty() && presetTemporal(a.at("preset"))) ++temporalRows;
+        for (const char* column : {"rel_rmse_1", "rel_rmse_8", "rel_rmse_16", "max_abs_1", "max_abs_16"})
+            EXPECT_EQ(a.at(column), b.at(column)) << column << " of row " << i << " (preset '"
+                                                  << a.at("preset") << "', steps " << a.at("steps") << ")";
+    }
+    EXPECT_EQ(temporalRows, 4u);  // the four presets, temporal on: what the history would have changed
+}
