@@ -31,8 +31,9 @@ constexpr VkPipelineStageFlags kTransfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
 constexpr uint64_t kJitterPeriod = 1024;
 // Before the error frames: a camera cut, then this many frames unread, so that the temporal histories the
 // error frames start from are the same in every run (the timed frames before them end wherever the
-// wall-clock warm-up left them). 64: the ray-marched fog's IGN period, and many times any history's
-// time constant.
+// wall-clock warm-up left them). 64: the ray-marched fog's IGN period; after the cut a history is the
+// running mean of its first 1/blendWeight frames, then blends exponentially (temporal.h), and 64 frames
+// are past the mean's 10 and 20 frames at the fogs' default weights (0.1, the froxel fog's 0.05).
 constexpr uint64_t kErrorWarmupFrames = 64;
 // A pixel is "off" when a channel differs by more than this fraction of the pixel's magnitude
 // max(max_c |reference_c|, kMagnitudeFloor) [radiance; the scenes' values are in the thousands].
