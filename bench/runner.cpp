@@ -398,38 +398,29 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
         (m.nextFrame + kErrorWarmupFrames + kJitterPeriod - 1) / kJitterPeriod * kJitterPeriod;
     m.nextFrame = firstRead - kErrorWarmupFrames;
     m.renderer->requestCameraCut();
-    for (uint64_t k = 0; k < kErrorWarmupFrames; ++k) {
+    std::vector<double> sum(size_t(w) * h * 4, 0.0);
+    std::vector<float> image(sum.size()), frame;
+    const uint32_t frames = kAveragedFrames.back();
+    // The warm-up's frames, then the read ones (k = 0 is firstRead).
+    for (int64_t k = -int64_t(kErrorWarmupFrames); k < int64_t(frames); ++k) {
+        const bool read = k >= 0;
         const uint64_t frameIndex = m.nextFrame++;
         const size_t slot = frameIndex % kFramesInFlight;
         if (!m.wait(slot, error) || !m.submit(
                                         slot,
                                         [&](VkCommandBuffer cmd) {
                                             return m.recordFrame(cmd, scene, method, stepLength, frameIndex,
-                                                                 slot, false, error);
+                                                                 slot, read, error);
                                         },
                                         error))
             return false;
-    }
-    std::vector<double> sum(size_t(w) * h * 4, 0.0);
-    std::vector<float> image(sum.size()), frame;
-    const uint32_t frames = kAveragedFrames.back();
-    for (uint32_t k = 0; k < frames; ++k) {
-        const uint64_t frameIndex = m.nextFrame++;
-        const size_t slot = frameIndex % kFramesInFlight;
-        if (!m.wait(slot, error) ||
-            !m.submit(
-                slot,
-                [&](VkCommandBuffer cmd) {
-                    return m.recordFrame(cmd, scene, method, stepLength, frameIndex, slot, true, error);
-                },
-                error) ||
-            !m.wait(slot, error))
-            return false;
+        if (!read) continue;
+        if (!m.wait(slot, error)) return false;
         m.readStrided(stride, w, h, frame);
         for (size_t i = 0; i < sum.size(); ++i)
             sum[i] += double(frame[i]);
         for (size_t a = 0; a < kAveragedFrames.size(); ++a) {
-            if (k + 1 != kAveragedFrames[a]) continue;
+            if (uint64_t(k) + 1 != kAveragedFrames[a]) continue;
             for (size_t i = 0; i < sum.size(); ++i)
                 image[i] = float(sum[i] / double(k + 1));
             errors[a] = compare(image, reference);
