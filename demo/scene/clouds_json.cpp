@@ -36,7 +36,8 @@ constexpr const char* kCloudKeys[] = {"enabled",
                                       "shadow_map",
                                       "noise"};
 constexpr const char* kBoxKeys[] = {"center", "half_size", "yaw_deg", "pitch_deg"};
-constexpr const char* kMultipleScatteringKeys[] = {"octaves", "attenuation", "contribution", "eccentricity"};
+constexpr const char* kMultipleScatteringKeys[] = {"model", "octaves", "attenuation", "contribution",
+                                                   "eccentricity"};
 constexpr const char* kShadowMapKeys[] = {"size", "extent"};
 constexpr const char* kNoiseKeys[] = {"enabled", "base_size", "detail_size",
                                       "seed",    "tiling",    "detail_strength"};
@@ -82,6 +83,12 @@ postfx::CloudShape readShape(const json& j, const std::string& path) {
     fail(path, "expected \"layer\" or \"box\"" + got(j));
 }
 
+postfx::CloudScatteringModel readScatteringModel(const json& j, const std::string& path) {
+    if (j == "slab") return postfx::CloudScatteringModel::Slab;
+    if (j == "octaves") return postfx::CloudScatteringModel::Octaves;
+    fail(path, "expected \"slab\" or \"octaves\"" + got(j));
+}
+
 }  // namespace
 
 postfx::CloudSettings readClouds(const json& j, const std::string& path) {
@@ -110,6 +117,8 @@ postfx::CloudSettings readClouds(const json& j, const std::string& path) {
     readOptional(j, path, "anisotropy_back", s.anisotropyBack);
     readOptional(j, path, "lobe_mix", s.lobeMix);
     if (const json* m = nestedObject(j, path, "multiple_scattering", kMultipleScatteringKeys, p)) {
+        if (const json* v = find(*m, "model"))
+            s.multipleScattering.model = readScatteringModel(*v, child(p, "model"));
         readOptional(*m, p, "octaves", s.multipleScattering.octaves);
         readOptional(*m, p, "attenuation", s.multipleScattering.attenuation);
         readOptional(*m, p, "contribution", s.multipleScattering.contribution);
@@ -166,7 +175,8 @@ json cloudsToJson(const postfx::CloudSettings& s) {
                 {"anisotropy_back", number(s.anisotropyBack)},
                 {"lobe_mix", number(s.lobeMix)},
                 {"multiple_scattering",
-                 {{"octaves", m.octaves},
+                 {{"model", m.model == postfx::CloudScatteringModel::Octaves ? "octaves" : "slab"},
+                  {"octaves", m.octaves},
                   {"attenuation", number(m.attenuation)},
                   {"contribution", number(m.contribution)},
                   {"eccentricity", number(m.eccentricity)}}},

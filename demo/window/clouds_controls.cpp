@@ -176,6 +176,15 @@ bool buildMedium(postfx::CloudSettings& s) {
     tooltip("weight of the back lobe");
     if (ImGui::TreeNode("Multiple scattering")) {
         postfx::CloudMultipleScattering& m = s.multipleScattering;
+        int model = int(m.model);
+        const char* models[] = {"slab (delta-Eddington)", "octaves (Wrenninge)"};
+        if (ImGui::Combo("model", &model, models, 2)) {
+            m.model = postfx::CloudScatteringModel(model);
+            changed = true;
+        }
+        tooltip(
+            "slab: the local slab's diffuse light, close to a path tracer; octaves: art-directable, "
+            "too dark in thick clouds");
         changed |= sliderUint("octaves", m.octaves, 1, int(kMaxOctaves));
         tooltip("Wrenninge's octaves; 1: single scattering only");
         changed |= ImGui::SliderFloat("attenuation a", &m.attenuation, 0.01f, 1.0f, "%.3f", kClamp);
@@ -272,6 +281,8 @@ void CloudsControls::sanitize(postfx::CloudSettings& s) {
     s.anisotropyBack = clampOrLow(s.anisotropyBack, -kMaxAnisotropy, 0.0f);
     s.lobeMix = clampOrLow(s.lobeMix, 0.0f, 1.0f);
     postfx::CloudMultipleScattering& m = s.multipleScattering;
+    if (uint32_t(m.model) > uint32_t(postfx::CloudScatteringModel::Octaves))
+        m.model = postfx::CloudScatteringModel::Slab;
     m.octaves = std::clamp<uint32_t>(m.octaves, 1, kMaxOctaves);
     m.attenuation = clampOrLow(m.attenuation, 0.01f, 1.0f);
     m.contribution = clampOrLow(m.contribution, 0.0f, m.attenuation);

@@ -48,6 +48,8 @@ PFX_CONST(uint, kCloudFlagCoverageMap, 32u);  // read the host's coverage map
 PFX_CONST(uint, kCloudFlagOpticalDepthHistory, 64u);
 // The depth binding holds postfx.view_distance's surface distances, not the host's depth.
 PFX_CONST(uint, kCloudFlagViewDistance, 128u);
+// Multiple scattering by the δ-Eddington slab (CloudScatteringModel::Slab), not Wrenninge's octaves.
+PFX_CONST(uint, kCloudFlagSlabScattering, 256u);
 
 // The model's constants (docs/effects/clouds.md, "Density" and "Light").
 PFX_CONST(float, kCloudDetailTilingRatio, 8.0f);  // the detail texture repeats tiling / this [m]
@@ -62,6 +64,11 @@ PFX_CONST(float, kCloudTopFalloffCumulus, 0.3f);
 // below it taken as slabs of the sample's own extinction, with Elsasser's diffusivity factor for diffuse
 // light through a slab: T ≈ exp(-1.66·τ).
 PFX_CONST(float, kCloudDiffusivity, 1.66f);
+// The slab model (docs/effects/clouds.md, "Multiple scattering"): the sun's cosine to the slab's normal is
+// taken as at least this (a sun on the horizon lights the slab's top at grazing incidence), and kμ0 within
+// this of 1 is moved off the particular solution's pole.
+PFX_CONST(float, kCloudSlabMinCosine, 0.01f);
+PFX_CONST(float, kCloudSlabPoleGap, 1e-3f);
 PFX_CONST(float, kCloudTransmittanceCutoff, 1e-3f);  // the march stops below this transmittance
 PFX_CONST(uint, kCloudShadowSteps, 32u);             // samples of each shadow-map texel's ray toward the sun
 // The upsample blends the march's texels whose ray ends within this fraction of the pixel's own surface
@@ -89,10 +96,13 @@ struct CloudUniforms {
     vec4 shape;         // x: coverage, y: 1 / top falloff, z: detail strength, w: σt where the field is 1
     vec4 phase;         // x: g forward, y: g back, z: lobe mix, w: albedo
     vec4 multiScatter;  // x: attenuation a, y: contribution b, z: eccentricity c, w: octaves
-    vec4 sun;           // rgb: illuminance [lux] (outside the atmosphere with it on), w: light distance [m]
-    vec4 toSun;         // xyz: unit toward the sun
-    vec4 ambient;       // rgb: uniform incident radiance
-    vec4 march;         // x: max distance [m], y: no-geometry depth
+    // The slab model's δ-scaled medium (lighting.glsl, cloudSlabDiffuse): x: albedo ω', y: asymmetry g',
+    // z: the optical depth's scale 1 - ω·f, w: the phase's first moment g (f: its second moment)
+    vec4 slab;
+    vec4 sun;        // rgb: illuminance [lux] (outside the atmosphere with it on), w: light distance [m]
+    vec4 toSun;      // xyz: unit toward the sun
+    vec4 ambient;    // rgb: uniform incident radiance
+    vec4 march;      // x: max distance [m], y: no-geometry depth
     vec4 shadow;     // shadow map: xyz its centre on the shape's bottom plane (camera-relative), w extent [m]
     uvec4 counts;    // x: steps, y: light steps, z: octaves, w: shadow map size [texels]
     vec4 windDelta;  // xyz: how far the wind moved the clouds since the previous recorded frame [m]
@@ -102,7 +112,7 @@ struct CloudUniforms {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudUniforms) == 2 * 64 + 19 * 16, "CloudUniforms must match std140");
+static_assert(sizeof(CloudUniforms) == 2 * 64 + 20 * 16, "CloudUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

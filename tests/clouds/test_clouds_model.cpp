@@ -19,6 +19,8 @@ postfx::FrameInfo homogeneousFrame() {
     postfx::FrameInfo f;
     f.clouds = test::homogeneousLayer();
     f.clouds.albedo = 0.9f;
+    // Single scattering only: one octave of Wrenninge's model.
+    f.clouds.multipleScattering.model = postfx::CloudScatteringModel::Octaves;
     f.clouds.multipleScattering.octaves = 1;
     f.clouds.lightDistance = 1e5f;
     f.camera.position = {0.0, 10.0, 0.0};

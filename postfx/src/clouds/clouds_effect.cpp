@@ -165,8 +165,9 @@ uint64_t temporalKey(const FrameInfo& frame) {
                     s.multipleScattering.eccentricity, s.lightDistance, s.maxDistance, s.resolutionScale,
                     s.noise.tiling, s.noise.detailStrength})
         h = hashValue(h, v);
-    for (uint32_t v : {s.multipleScattering.octaves, s.steps, s.lightSteps, s.noise.baseSize,
-                       s.noise.detailSize, s.noise.seed, uint32_t(s.noise.enabled), uint32_t(s.jitter)})
+    for (uint32_t v :
+         {uint32_t(s.multipleScattering.model), s.multipleScattering.octaves, s.steps, s.lightSteps,
+          s.noise.baseSize, s.noise.detailSize, s.noise.seed, uint32_t(s.noise.enabled), uint32_t(s.jitter)})
         h = hashValue(h, v);
     h = hashValue(h, s.noise.hostBaseTexture);
     h = hashValue(h, s.noise.hostDetailTexture);
@@ -231,6 +232,8 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     u.phase = glm::vec4(s.anisotropyForward, s.anisotropyBack, s.lobeMix, s.albedo);
     const CloudMultipleScattering& ms = s.multipleScattering;
     u.multiScatter = glm::vec4(ms.attenuation, ms.contribution, ms.eccentricity, float(ms.octaves));
+    const SlabMedium slab = slabMedium(s);
+    u.slab = glm::vec4(float(slab.albedo), float(slab.asymmetry), float(slab.depthScale), float(slab.g));
     u.sun = glm::vec4(core::preExposed(frame.sun.illuminance, frame.preExposure), s.lightDistance);
     u.toSun = glm::vec4(glm::vec3(glm::normalize(glm::dvec3(frame.sun.toSun))), 0.0f);
     u.ambient = glm::vec4(core::preExposed(frame.ambient, frame.preExposure), 0.0f);
@@ -248,7 +251,8 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
                 (depth.reversedZ ? gpu::kCloudFlagDepthReversedZ : 0u) |
                 (s.jitter ? gpu::kCloudFlagJitter : 0u) |
                 (map.texture != VK_NULL_HANDLE ? gpu::kCloudFlagCoverageMap : 0u) |
-                (s.temporal.enabled ? gpu::kCloudFlagOpticalDepthHistory : 0u);
+                (s.temporal.enabled ? gpu::kCloudFlagOpticalDepthHistory : 0u) |
+                (ms.model == CloudScatteringModel::Slab ? gpu::kCloudFlagSlabScattering : 0u);
     return u;
 }
 

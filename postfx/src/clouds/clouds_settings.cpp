@@ -97,6 +97,9 @@ Status validateNoise(const CloudNoiseSettings& n) {
 }
 
 Status validateMultipleScattering(const CloudMultipleScattering& m) {
+    if (uint32_t(m.model) > uint32_t(CloudScatteringModel::Octaves))
+        return bad("multiple_scattering.model",
+                   std::to_string(uint32_t(m.model)) + " is not a CloudScatteringModel");
     if (Status r = count("multiple_scattering.octaves", m.octaves, 1, kMaxOctaves); !r) return r;
     if (Status r = positive("multiple_scattering.attenuation", m.attenuation, 1.0); !r) return r;
     if (Status r = range("multiple_scattering.contribution", m.contribution, 0.0, 1.0); !r) return r;
