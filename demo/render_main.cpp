@@ -1,6 +1,7 @@
 // postfx-render: renders a demo scene headless (G-buffer, sun + shadow map, lighting, postfx) and
 // writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog (ray-marched or
-// froxel) comes from postfx's CPU reference (Renderer::renderReference) instead of the GPU pass.
+// froxel) comes from postfx's CPU reference (Renderer::renderReference) instead of the GPU pass; with
+// --reference=path the clouds are path-traced and their standard error written beside the output.
 #include "program.h"
 
 #include <nlohmann/json.hpp>
@@ -23,10 +24,13 @@ namespace {
 constexpr uint32_t kMaxFrames = 100000;
 constexpr uint32_t kDefaultReferenceSteps = 4096;
 constexpr uint32_t kMaxReferenceSteps = 1u << 20;
+constexpr uint32_t kDefaultPathSamples = 64;
+constexpr uint32_t kMaxPathSamples = 1u << 24;
 
 const char* kUsage =
     "usage: postfx-render [SCENE.json] -o OUT.exr|OUT.png [--size WxH] [--frames N] [--standard-z]\n"
-    "                     [--infinite-far] [--validation] [--reference [--reference-steps N]]\n"
+    "                     [--infinite-far] [--validation]\n"
+    "                     [--reference|--reference=path [--reference-steps N] [--path-samples N]]\n"
     "       postfx-render [SCENE.json] --print-plan [--size WxH] [--frames N] [--standard-z] ...\n"
     "Renders SCENE.json (the built-in default scene when omitted) headless and writes OUT:\n"
     "  .exr  linear radiance [cd/m^2], half-float RGBA\n"
@@ -47,7 +51,12 @@ const char* kUsage =
     "                     from postfx's CPU references (double precision, no jitter, all CPU\n"
     "                     threads) instead of the GPU passes, over the same GPU frame (the last,\n"
     "                     N-1, in its state: a single frame, no history)\n"
+    "  --reference=path   as --reference, with the clouds from a Monte Carlo volumetric path tracer\n"
+    "                     (every scattering order; docs/effects/clouds.md, \"Path-traced truth\")\n"
+    "                     instead of the model's march; writes the clouds' standard error per pixel\n"
+    "                     to OUT's stem + .stderr.exr and prints its mean relative to the pixels\n"
     "  --reference-steps N  march steps per pixel of --reference (default 4096), 1..1048576\n"
+    "  --path-samples N   paths per pixel of --reference=path (default 64), 2..16777216\n"
     "  --print-plan       print postfx's frame plan of the last frame (docs/frame-plan.md) as JSON on\n"
     "                     stdout instead of writing an image: the frames before it are rendered\n"
     "                     (so --frames 2 shows the steady state, without one-time work)\n"
@@ -62,6 +71,9 @@ struct Args {
     bool reference = false;
     uint32_t referenceSteps = kDefaultReferenceSteps;
     bool referenceStepsGiven = false;
+    bool pathTraced = false;  // --reference=path
+    uint32_t pathSamples = kDefaultPathSamples;
+    bool pathSamplesGiven = false;
     bool printPlan = false;
 };
 
@@ -77,8 +89,14 @@ Args parseArgs(int argc, char** argv) {
             args.render.infiniteFar = true;
         } else if (a == "--print-plan") {
             args.printPlan = true;
-        } else if (a == "--reference") {
+        } else if (a == "--reference" || a == "--reference=path") {
             args.reference = true;
+            args.pathTraced = a == "--reference=path";
+        } else if (a.rfind("--reference=", 0) == 0) {
+            throw cli::UsageError{"'" + a + "': expected --reference or --reference=path"};
+        } else if (a == "--path-samples") {
+            cli::uintOption(a, next(), 2, kMaxPathSamples, args.pathSamples);
+            args.pathSamplesGiven = true;
         } else if (a == "--reference-steps") {
             cli::uintOption(a, next(), 1, kMaxReferenceSteps, args.referenceSteps);
             args.referenceStepsGiven = true;
@@ -99,6 +117,8 @@ Args parseArgs(int argc, char** argv) {
         throw cli::UsageError{"no output file given (-o OUT.exr or -o OUT.png; see --help)"};
     if (args.referenceStepsGiven && !args.reference)
         throw cli::UsageError{"--reference-steps needs --reference"};
+    if (args.pathSamplesGiven && !args.pathTraced)
+        throw cli::UsageError{"--path-samples needs --reference=path"};
     std::string ext = std::filesystem::path(args.output).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
@@ -145,6 +165,46 @@ int printPlan(demo::VulkanHost& host, const Args& args, const demo::Scene& scene
     return 0;
 }
 
+double luminance(const float* rgb) {
+    return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+}
+
+// --reference=path: writes the clouds' standard error to OUT's stem + .stderr.exr and prints its mean
+// relative to the pixels' values (luminance) over the pixels the paths reached, and the time.
+bool reportPathTracing(const Args& args, const demo::CloudsPathTracing& paths, const demo::ImageF& image,
+                       double seconds) {
+    const uint32_t threads = std::max(1u, std::thread::hardware_concurrency());
+    if (paths.standardError.empty()) {
+        std::printf("reference=path: the scene has no clouds, %.1f s on %u threads\n", seconds, threads);
+        return true;
+    }
+    double sum = 0.0;
+    size_t pixels = 0;
+    for (size_t p = 0; p * 4 < paths.standardError.size(); ++p) {
+        const double e = luminance(&paths.standardError[p * 4]), value = luminance(&image.rgba[p * 4]);
+        if (!(e > 0.0) || !(value > 0.0)) continue;
+        sum += e / value;
+        ++pixels;
+    }
+    const std::filesystem::path out(args.output);
+    const std::string errorPath = (out.parent_path() / (out.stem().string() + ".stderr.exr")).string();
+    demo::ImageF errorImage;
+    errorImage.width = image.width;
+    errorImage.height = image.height;
+    errorImage.rgba = paths.standardError;
+    std::string error;
+    if (!demo::writeImage(errorPath, errorImage, 0.0f, error)) {
+        fail(error);
+        return false;
+    }
+    std::printf(
+        "reference=path: clouds path-traced, %u paths/pixel, mean relative standard error %.3f%% "
+        "over %zu cloud pixels (%s), %.1f s on %u threads\n",
+        paths.samples, pixels ? 100.0 * sum / double(pixels) : 0.0, pixels, errorPath.c_str(), seconds,
+        threads);
+    return true;
+}
+
 int run(const Args& args) {
     demo::Scene scene;
     if (!kProgram.loadScene(args.common.scene, scene)) return 1;
@@ -157,10 +217,15 @@ int run(const Args& args) {
         if (!renderer) return fail(error);
         demo::ImageF image;
         if (args.reference) {
+            demo::CloudsPathTracing paths;
+            paths.samples = args.pathSamples;
             const auto start = std::chrono::steady_clock::now();
-            if (!renderer->renderReference(scene, image, error, args.referenceSteps)) return fail(error);
+            if (!renderer->renderReference(scene, image, error, args.referenceSteps, 1,
+                                           args.pathTraced ? &paths : nullptr))
+                return fail(error);
             const double seconds =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (args.pathTraced && !reportPathTracing(args, paths, image, seconds)) return 1;
             if (scene.fog.enabled || scene.froxelFog.enabled) {
                 std::printf("reference: %s, %u steps/pixel, %.1f s on %u threads\n",
                             scene.froxelFog.enabled ? "froxel fog" : "fog", args.referenceSteps, seconds,

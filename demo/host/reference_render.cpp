@@ -47,7 +47,7 @@ std::vector<float> floatsAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t
 }  // namespace
 
 bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel,
-                               uint32_t stride) {
+                               uint32_t stride, CloudsPathTracing* pathTracedClouds) {
     Impl& r = *impl_;
     const VkDevice device = r.host.device;
     if (r.broken) {
@@ -63,6 +63,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         error = "renderReference: stride " + std::to_string(stride) + " needs fog.resolution_scale 1";
         return false;
     }
+    if (pathTracedClouds) pathTracedClouds->standardError.clear();
     const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns
     // Its state: the camera and lights moved to that frame (as render() draws it).
     const Scene gpuScene = sceneAtFrame(scene, frameIndex);
@@ -237,7 +238,15 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         ci.settings = in.clouds;
         ci.atmosphere = in.atmosphere;
         std::vector<float> withClouds;
-        if (const postfx::Status s = postfx::reference::renderClouds(ci, withClouds); !s.ok()) {
+        std::vector<float>* standardError = nullptr;
+        if (pathTracedClouds) {
+            ci.pathTraced = true;
+            ci.pathSamples = pathTracedClouds->samples;
+            ci.pathSeed = pathTracedClouds->seed;
+            standardError = &pathTracedClouds->standardError;
+        }
+        if (const postfx::Status s = postfx::reference::renderClouds(ci, withClouds, standardError);
+            !s.ok()) {
             error = "clouds reference: " + s.message;
             return false;
         }

@@ -75,6 +75,15 @@ struct ShadowMapInfo {
     bool enabled = false;
 };
 
+// renderReference's clouds path-traced: the paths and, back, the Monte Carlo standard error of the clouds.
+struct CloudsPathTracing {
+    uint32_t samples = 64;  // paths per pixel, >= 2
+    uint64_t seed = 1;
+    // Out: the standard error of each pixel's clouds radiance [cd/m²] (RGBA, out's layout, alpha 0), as the
+    // clouds left the pixel (before the fog in front, if any); empty when the scene has no clouds.
+    std::vector<float> standardError;
+};
+
 class Renderer {
 public:
     static constexpr uint32_t kFramesInFlight = 2;  // render()'s command buffers; postfx is created with it
@@ -106,8 +115,10 @@ public:
     // Calls setScene(that state) first. `stride` > 1 evaluates the reference only at the pixels (x, y) with x
     // and y multiples of `stride` (CPU time / stride²): `out` is then ceil(W / stride) x ceil(H / stride),
     // its pixel (i, j) being the frame's pixel (i · stride, j · stride).
+    // `pathTracedClouds`, when given, has the clouds path-traced (postfx::reference::CloudInputs::pathTraced,
+    // docs/effects/clouds.md, "Path-traced truth") instead of marched, and receives their standard error.
     bool renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel = 4096,
-                         uint32_t stride = 1);
+                         uint32_t stride = 1, CloudsPathTracing* pathTracedClouds = nullptr);
 
     // Builds and uploads the scene's meshes (planes are centred under the camera as it is now).
     // Waits for the device to be idle first, so it may be called between frames of a window loop.

@@ -62,6 +62,13 @@ check illuminance-above-postfx-bound "sun.illuminance\[0\]: expected a number in
     "$(bad_scene sun 's/"illuminance": *\[[^]]*\]/"illuminance": [2e7, 2e7, 2e7]/')" -o "$dir/x.png" --size 8x8
 check ev100-overflows-exposure "camera.ev100: expected a number in \[-30, 30\]" \
     "$(bad_scene ev 's/"ev100": *[0-9.e-]*/"ev100": -3e38/')" -o "$dir/x.png" --size 8x8
+# --reference=path and --path-samples (docs/effects/clouds.md, "Path-traced truth").
+check path-samples-without-path "--path-samples needs --reference=path" "$scenes/clouds_noon.json" -o "$dir/x.exr" \
+    --size 8x8 --reference --path-samples 8
+check path-samples-one "--path-samples '1'" "$scenes/clouds_noon.json" -o "$dir/x.exr" --size 8x8 \
+    --reference=path --path-samples 1
+check reference-unknown-mode "--reference=march" "$scenes/clouds_noon.json" -o "$dir/x.exr" --size 8x8 \
+    --reference=march
 # An image over the memory budget is refused before anything is allocated: at once.
 start=$(date +%s)
 check size-over-memory-budget "--size 16384x16384: needs about 32 GiB" "$scenes/fog_default.json" -o "$dir/x.png" \

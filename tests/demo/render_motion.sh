@@ -1,7 +1,8 @@
 #!/bin/sh
 # postfx-render --frames N on a moving scene (docs/scene-format.md#motion): the last of N frames differs
 # from the same scene standing still (the camera walked and turned; PNG, whose files hold no time stamp);
-# --reference renders the last frame's reference; --print-plan runs. 32x18 pixels. That each frame is
+# --reference renders the last frame's reference; --reference=path path-traces a cloud scene's clouds and
+# writes their standard error beside the output; --print-plan runs. 32x18 pixels (16x9 path-traced). That each frame is
 # exactly its state is DemoRendererMotion's (gpu_tests).
 # usage: render_motion.sh POSTFX_RENDER SCENE_DIR
 set -u
@@ -42,6 +43,11 @@ cmp -s "$dir/moving-6.png" "$dir/still-6.png" && fail "frame 5 of the moving sce
 
 run reference "$moving" $size --frames 6 --reference --reference-steps 8 -o "$dir/reference.png"
 grep -q "frame 5 with the CPU references" "$dir/reference.out" || fail "reference: not of frame 5"
+
+run path "$scenes/clouds_noon.json" --size 16x9 --reference=path --reference-steps 8 --path-samples 2 \
+    -o "$dir/path.exr"
+grep -q "2 paths/pixel, mean relative standard error" "$dir/path.out" || fail "path: no standard error printed"
+[ -s "$dir/path.stderr.exr" ] || fail "path: no path.stderr.exr beside the output"
 
 run plan "$moving" $size --frames 2 --print-plan
 grep -q '"passes"' "$dir/plan.out" || fail "plan: no passes printed"

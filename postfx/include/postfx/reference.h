@@ -154,12 +154,33 @@ struct CloudInputs {
     uint32_t stepsPerPixel = 1024;  // midpoint samples along each view ray's part inside the clouds; >= 1
     uint32_t lightSteps = 256;      // midpoint samples of each sample's march toward the sun; >= 1
     uint32_t threads = 0;           // 0: all hardware threads
+
+    // Path-traced truth (docs/effects/clouds.md, "Path-traced truth"): the clouds' radiance from a Monte
+    // Carlo volumetric path tracer through the same density field, phase, sun and ambient (every scattering
+    // order, no light_distance cut, no octaves) instead of the model's march; the transmittance and the
+    // mean distance of the composite still come from the fine march (stepsPerPixel). Off by default.
+    bool pathTraced = false;
+    // Paths per pixel [1]; in [2, 16777216] (two at least for a standard error). The error falls as
+    // 1/sqrt(pathSamples).
+    uint32_t pathSamples = 256;
+    // Scattering orders kept [1]; 0: all (default), k in [1, 1000000]: the light of at most k events (1:
+    // single scattering, the model's first octave without its ambient approximation).
+    uint32_t maxScatteringOrders = 0;
+    // Seed of the paths' random numbers; any value. Pixel p's path s draws from (pathSeed, p, s): the image
+    // does not depend on `threads`.
+    uint64_t pathSeed = 1;
 };
 
 // Renders the clouds' model over `inputs.color` into `out` (RGBA, color's layout; alpha passes through),
 // in double, per pixel with fine steps and a fine march toward the sun (no jitter, no early exit). With
 // settings.enabled false `out` is the color. InvalidArgument naming the field for bad inputs.
 POSTFX_API Status renderClouds(const CloudInputs& inputs, std::vector<float>& out);
+// As above; with inputs.pathTraced and `standardError` not null, also writes the Monte Carlo standard error
+// of each pixel's added radiance (through the air in front of the clouds when the atmosphere is on) to
+// *standardError (RGBA, color's layout, alpha 0; 0 where no path was traced). Without pathTraced it is all
+// 0 (the march is deterministic).
+POSTFX_API Status renderClouds(const CloudInputs& inputs, std::vector<float>& out,
+                               std::vector<float>* standardError);
 
 // The local-light terms of the model (docs/effects/froxel-fog.md#local-lights), exposed for tests.
 // Illuminance [lx] at world position `x` from `light`, before the phase function:

@@ -1,10 +1,12 @@
 // The clouds' CPU reference (docs/effects/clouds.md, "Reference"): the model of clouds_model.h per pixel
-// with fine steps, in double; pixel rays and the composite as the fog references' (fog/reference_image.h),
-// the aerial perspective in front of the clouds from the atmosphere's reference (integrateViewRay).
+// with fine steps, in double, or with pathTraced the path tracer's radiance (clouds_path_tracer.h); pixel
+// rays and the composite as the fog references' (fog/reference_image.h), the aerial perspective in front of
+// the clouds from the atmosphere's reference (integrateViewRay).
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_reference.h"
 #include "clouds/clouds_effect.h"
 #include "clouds/clouds_model.h"
+#include "clouds/clouds_path_tracer.h"
 #include "core/checks.h"
 #include "fog/noise_cpu.h"
 #include "fog/reference_image.h"
@@ -23,6 +25,8 @@ using detail::checkCount;
 using glm::dvec3;
 
 constexpr uint32_t kMaxSteps = 1u << 20;
+constexpr uint32_t kMaxPathSamples = 1u << 24;
+constexpr uint32_t kMaxScatteringOrders = 1000000;
 
 Status validate(const CloudInputs& in) {
     if (in.width == 0 || in.height == 0)
@@ -48,6 +52,12 @@ Status validate(const CloudInputs& in) {
     if (in.lightSteps == 0 || in.lightSteps > kMaxSteps)
         return invalid("CloudInputs.lightSteps: " + std::to_string(in.lightSteps) + " is outside [1, " +
                        std::to_string(kMaxSteps) + "]");
+    if (in.pathTraced && (in.pathSamples < 2 || in.pathSamples > kMaxPathSamples))
+        return invalid("CloudInputs.pathSamples: " + std::to_string(in.pathSamples) + " is outside [2, " +
+                       std::to_string(kMaxPathSamples) + "]");
+    if (in.pathTraced && in.maxScatteringOrders > kMaxScatteringOrders)
+        return invalid("CloudInputs.maxScatteringOrders: " + std::to_string(in.maxScatteringOrders) +
+                       " is outside [0, " + std::to_string(kMaxScatteringOrders) + "] (0: all)");
     const CloudNoiseSettings& n = in.settings.noise;
     const uint64_t base = in.baseNoiseSize ? in.baseNoiseSize : n.baseSize;
     const uint64_t detailSize = in.detailNoiseSize ? in.detailNoiseSize : n.detailSize;
@@ -81,12 +91,17 @@ std::vector<float> unorm(const std::vector<uint8_t>& bytes) {
 }  // namespace
 
 Status renderClouds(const CloudInputs& in, std::vector<float>& out) {
+    return renderClouds(in, out, nullptr);
+}
+
+Status renderClouds(const CloudInputs& in, std::vector<float>& out, std::vector<float>* standardError) {
     if (Status s = validate(in); !s) return s;
     std::vector<float> result;  // not `out` directly: `in.color` may view it
     std::vector<float> baseTexels, detailTexels;
     const CloudNoiseSettings& n = in.settings.noise;
     try {
         result.assign(in.color.begin(), in.color.end());
+        if (standardError) standardError->assign(in.color.size(), 0.0f);
         if (n.enabled && in.baseNoise.empty()) baseTexels = unorm(fog::generateNoiseCpu(n.baseSize, n.seed));
         if (n.enabled && in.detailNoise.empty())
             detailTexels = unorm(fog::generateWorleyNoiseCpu(n.detailSize, clouds::detailSeed(n.seed)));
@@ -137,6 +152,10 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out) {
             atmosphere::clampAboveGround(air, atmosphere::planetCentred(air, dvec3(in.camera.position)));
     }
 
+    clouds::PathOptions paths;
+    paths.samples = in.pathSamples;
+    paths.maxScatteringOrders = in.maxScatteringOrders;
+    paths.seed = in.pathSeed;
     const glm::dmat4 clipToView = detail::clipToView(in.camera);
     const double farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
     detail::forEachRow(in.height, in.threads, [&](uint32_t j) {
@@ -145,8 +164,18 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out) {
             const detail::PixelRay ray =
                 detail::pixelRay(clipToView, farDepth, in.width, in.height, i, j, in.depth[p]);
             const double far = std::min(ray.distance, double(in.settings.maxDistance));
-            const clouds::MarchResult r =
-                clouds::march(model, ray.d, far, in.stepsPerPixel, 0.5, in.lightSteps);
+            clouds::MarchResult r;
+            dvec3 error(0.0);
+            if (in.pathTraced) {
+                const clouds::PixelTruth truth =
+                    clouds::tracePixel(model, ray.d, far, in.stepsPerPixel, paths, p);
+                r.luminance = truth.light.radiance;
+                r.transmittance = truth.transmittance;
+                r.meanDistance = truth.meanDistance;
+                error = truth.light.standardError;
+            } else {
+                r = clouds::march(model, ray.d, far, in.stepsPerPixel, 0.5, in.lightSteps);
+            }
             if (!(r.transmittance < 1.0)) continue;
             dvec3 L = r.luminance;
             if (in.atmosphere.enabled) {
@@ -155,8 +184,12 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out) {
                 const atmosphere::ViewRayResult front =
                     atmosphere::integrateViewRay(air, airOrigin, ray.d, sun, o);
                 L = front.transmittance * L + (1.0 - r.transmittance) * front.luminance;
+                error *= front.transmittance;
             }
             detail::composite(L, r.transmittance, &in.color[p * 4], &result[p * 4]);
+            if (standardError)
+                for (int c = 0; c < 3; ++c)
+                    (*standardError)[p * 4 + c] = float(error[c]);
         }
     });
     out.swap(result);
