@@ -47,7 +47,8 @@ struct CloudsPoint {
     postfx::CloudSettings settings;
 };
 
-// The knobs swept, in order: steps, light_steps, resolution_scale, base_size (noise.baseSize),
+// The knobs swept, in order: model (multiple_scattering: slab, or octaves with the demo scenes' former 4
+// octaves 0.6/0.6/0.5), steps, light_steps, resolution_scale, base_size (noise.baseSize),
 // detail_size (noise.detailSize), temporal (on/off), preset (low, medium, high, ultra: applyCloudQuality).
 const std::vector<std::string>& cloudsKnobs();
 struct CloudsSweepOptions {
@@ -86,6 +87,14 @@ struct CloudsError {
     double meanRelativeLuminance = NAN;
 };
 
+// Against the path-traced truth (reference::renderClouds' path-traced mode, every scattering order) at
+// every truth-stride-th pixel: the relative RMSE (the truth's own noise included: CloudsInfo's
+// truthStandardError) and the bias, (mean luminance / the truth's - 1) over the pixels the clouds change.
+struct CloudsTruthError {
+    double relativeRmse = NAN;
+    double bias = NAN;
+};
+
 struct CloudsRow {
     std::string view;
     CloudsPoint point;
@@ -95,6 +104,9 @@ struct CloudsRow {
     // last of motionFrames panning frames, against its own view's reference.
     CloudsError still, motion;
     uint32_t stillFrames = 0, motionFrames = 0;
+    // The still error split against the truth: the model (the row's CPU reference, no discretisation)
+    // and the GPU's (model + discretisation). NaN without --clouds-truth.
+    CloudsTruthError model, total;
 };
 
 struct CloudsInfo {
@@ -102,6 +114,10 @@ struct CloudsInfo {
     uint32_t referenceLightSteps = 0;
     uint32_t convergedFrames = 0, motionFrames = 0;
     std::vector<std::pair<std::string, double>> referenceSeconds;  // "view noise" -> seconds
+    // The path-traced truth: paths per pixel, stride, and per view its mean relative standard error (the
+    // luminance's, over the pixels the clouds change) and seconds. truthPaths 0: not run.
+    uint32_t truthPaths = 0, truthStride = 0;
+    std::vector<std::pair<std::string, double>> truthStandardError, truthSeconds;
 };
 
 double cloudsPassMs(const CloudsRow& row, const std::string& pass);  // NaN when not recorded

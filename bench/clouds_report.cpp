@@ -38,6 +38,12 @@ std::string status(const CloudsTarget& t) {
     return "**MISS** by " + percentOver(t.measured(), t.limit) + "% (" + text + " > " + limit + ")";
 }
 
+// "+1.23%" / "-1.23%"; "–" when not finite.
+std::string signedPercent(double fraction) {
+    if (!std::isfinite(fraction)) return "–";
+    return (fraction >= 0.0 ? "+" : "-") + percent(std::abs(fraction));
+}
+
 }  // namespace
 
 double cloudsPassMs(const CloudsRow& row, const std::string& pass) {
@@ -109,6 +115,11 @@ const std::vector<std::string>& cloudsCsvColumns() {
         "motion_mean_rel_luminance",
         "motion_max_abs",
         "non_finite",
+        "model",
+        "truth_model_bias",
+        "truth_model_rel_rmse",
+        "truth_gpu_bias",
+        "truth_gpu_rel_rmse",
     };
     return columns;
 }
@@ -144,6 +155,11 @@ bool writeCloudsCsv(const std::string& path, const CloudsInfo& info, const std::
             row.push_back(formatNumber(e->stats.maxAbsError, 6));
         }
         row.push_back(std::to_string(r.still.stats.nonFinite + r.motion.stats.nonFinite));
+        row.push_back(cloudsKnobValue(r.point.settings, "model"));
+        for (const CloudsTruthError* e : {&r.model, &r.total}) {
+            row.push_back(formatNumber(e->bias, 6));
+            row.push_back(formatNumber(e->relativeRmse, 6));
+        }
         writeCsvRow(out, row);
     }
     return writeTextFile(path, out.str(), error);
@@ -171,7 +187,21 @@ bool writeCloudsMarkdown(const std::string& path, const CloudsInfo& info, const 
         << "| error | relative RMSE over RGB and mean relative luminance error; still: the last of "
         << info.convergedFrames << " still frames with temporal on (1 frame without); motion: the last of "
         << info.motionFrames << " frames of the camera panning " << formatNumber(kCloudsPanDegPerFrame, 3)
-        << "°/frame, against its own view's reference |\n\n";
+        << "°/frame, against its own view's reference (the model's: discretisation error) |\n";
+    if (info.truthPaths) {
+        out << "| truth | postfx::reference::renderClouds' path-traced mode (every scattering order), "
+            << info.truthPaths << " paths per pixel at every " << info.truthStride
+            << "th pixel; its mean relative standard error:";
+        for (size_t i = 0; i < info.truthStandardError.size(); ++i)
+            out << (i ? "," : "") << " " << info.truthStandardError[i].first << " "
+                << percent(info.truthStandardError[i].second) << " ("
+                << formatNumber(info.truthSeconds[i].second, 3) << " s)";
+        out << ". vs truth: the bias (mean luminance / the truth's - 1 over the pixels the clouds change) "
+               "and "
+               "relative RMSE (the truth's noise included) of the model's reference (model error) and of the "
+               "GPU's still image (model + discretisation) |\n";
+    }
+    out << "\n";
     if (!info.referenceSeconds.empty()) {
         out << "CPU references:";
         for (size_t i = 0; i < info.referenceSeconds.size(); ++i)
@@ -203,8 +233,10 @@ bool writeCloudsMarkdown(const std::string& path, const CloudsInfo& info, const 
     for (const std::string& view : viewOrder(rows)) {
         out << "### " << view << "\n\n"
             << "| setting | settings | clouds.* ms median (p10–p90) | shadow | march | temporal | upsample | "
-               "still rel. RMSE | still mean rel. Y | motion rel. RMSE | motion mean rel. Y |\n"
-               "|---|---|---|---|---|---|---|---|---|---|---|\n";
+               "still rel. RMSE | still mean rel. Y | motion rel. RMSE | motion mean rel. Y | vs truth: "
+               "model "
+               "bias | GPU bias | GPU rel. RMSE |\n"
+               "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const CloudsRow& r : rows) {
             if (r.view != view) continue;
             out << "| " << settingText(r.point) << " | " << settingsText(r.point.settings) << " | "
@@ -214,7 +246,8 @@ bool writeCloudsMarkdown(const std::string& path, const CloudsInfo& info, const 
                 out << orDash(formatNumber(cloudsPassMs(r, pass), 3)) << " | ";
             out << percent(r.still.stats.relativeRmse) << " | " << percent(r.still.meanRelativeLuminance)
                 << " | " << percent(r.motion.stats.relativeRmse) << " | "
-                << percent(r.motion.meanRelativeLuminance) << " |\n";
+                << percent(r.motion.meanRelativeLuminance) << " | " << signedPercent(r.model.bias) << " | "
+                << signedPercent(r.total.bias) << " | " << percent(r.total.relativeRmse) << " |\n";
         }
         out << "\n";
     }

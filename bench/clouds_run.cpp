@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <tuple>
 
 namespace bench {
 namespace {
@@ -49,10 +50,12 @@ double panYaw(uint32_t frame) {
 
 // The reference of the frame's view at every stride-th pixel in x and y, over the GPU's atmosphere-only
 // image `sky` (full size), with the noise texels `base` and `detail`.
+// With `paths` > 0 the path-traced truth instead of the model, and its standard error in `standardError`.
 bool reference(const postfx::FrameInfo& frame, const CloudsRunArgs& args, const std::vector<float>& sky,
                const std::vector<float>& base, const std::vector<float>& detail, std::vector<float>& out,
-               std::string& error) {
-    const uint32_t W = args.runner.width, H = args.runner.height, s = args.errorStride;
+               std::string& error, uint32_t s, uint32_t paths = 0,
+               std::vector<float>* standardError = nullptr) {
+    const uint32_t W = args.runner.width, H = args.runner.height;
     const uint32_t w = (W + s - 1) / s, h = (H + s - 1) / s;
     std::vector<float> subColor(size_t(w) * h * 4), subDepth(size_t(w) * h, 0.0f);
     for (uint32_t j = 0; j < h; ++j)
@@ -87,7 +90,9 @@ bool reference(const postfx::FrameInfo& frame, const CloudsRunArgs& args, const 
     in.detailNoise = detail;
     in.stepsPerPixel = args.referenceSteps;
     in.lightSteps = args.referenceLightSteps;
-    if (const postfx::Status st = postfx::reference::renderClouds(in, out); !st.ok()) {
+    in.pathTraced = paths > 0;
+    in.pathSamples = std::max(paths, 2u);
+    if (const postfx::Status st = postfx::reference::renderClouds(in, out, standardError); !st.ok()) {
         error = "renderClouds: " + st.message;
         return false;
     }
@@ -117,6 +122,54 @@ CloudsError compare(const std::vector<float>& image, const std::vector<float>& r
     e.stats = ErrorStats{s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
     e.meanRelativeLuminance = relY / (double(w) * h);
     return e;
+}
+
+// Every k-th pixel in x and y of the w-wide `image` (k = 1: all of it).
+std::vector<float> subsample(const std::vector<float>& image, uint32_t width, uint32_t height, uint32_t k) {
+    const uint32_t w = (width + k - 1) / k, h = (height + k - 1) / k;
+    std::vector<float> out;
+    out.reserve(size_t(w) * h * 4);
+    for (uint32_t j = 0; j < h; ++j)
+        for (uint32_t i = 0; i < w; ++i) {
+            const size_t src = (size_t(j) * k * width + size_t(i) * k) * 4;
+            out.insert(out.end(), &image[src], &image[src] + 4);
+        }
+    return out;
+}
+
+// `image` against the truth, both w×h, over the pixels where the truth differs from the sky by more than
+// 1 % in luminance (the clouds' pixels).
+CloudsTruthError compareTruth(const std::vector<float>& image, const std::vector<float>& truth,
+                              const std::vector<float>& sky, uint32_t w, uint32_t h) {
+    double sumImage = 0.0, sumTruth = 0.0, sumSquares = 0.0, sumTruthSquares = 0.0;
+    for (size_t p = 0; p < size_t(w) * h; ++p) {
+        const double y = luminance(&image[p * 4]), yt = luminance(&truth[p * 4]), ys = luminance(&sky[p * 4]);
+        if (!(std::abs(yt - ys) > 0.01 * ys)) continue;
+        sumImage += y;
+        sumTruth += yt;
+        sumSquares += (y - yt) * (y - yt);
+        sumTruthSquares += yt * yt;
+    }
+    CloudsTruthError e;
+    if (sumTruth > 0.0) {
+        e.bias = sumImage / sumTruth - 1.0;
+        e.relativeRmse = std::sqrt(sumSquares / sumTruthSquares);
+    }
+    return e;
+}
+
+// The mean of the standard error's luminance relative to the truth's, over the clouds' pixels.
+double meanRelativeStandardError(const std::vector<float>& truth, const std::vector<float>& standardError,
+                                 const std::vector<float>& sky) {
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t p = 0; p < truth.size() / 4; ++p) {
+        const double yt = luminance(&truth[p * 4]), ys = luminance(&sky[p * 4]);
+        if (!(std::abs(yt - ys) > 0.01 * ys)) continue;
+        sum += luminance(&standardError[p * 4]) / yt;
+        ++n;
+    }
+    return n ? sum / double(n) : NAN;
 }
 
 // With POSTFX_BENCH_DUMP=DIR: `image` at every stride-th pixel (the error's pixels) as DIR/name.pfm (RGB
@@ -167,6 +220,10 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
                std::count(args.sweepViews.begin(), args.sweepViews.end(), view) > 0;
     };
 
+    const uint32_t truthStride = args.truthStride ? args.truthStride : 4 * args.errorStride;
+    if (truthStride % args.errorStride != 0)
+        return fail("--clouds-truth-stride " + std::to_string(truthStride) +
+                    " is not a multiple of --error-stride " + std::to_string(args.errorStride));
     FrameGpu gpu;
     if (!gpu.create(args.runner, error)) return fail(error);
     CloudsInfo info;
@@ -174,6 +231,8 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
     info.referenceLightSteps = args.referenceLightSteps;
     info.convergedFrames = args.convergedFrames;
     info.motionFrames = args.motionFrames;
+    info.truthPaths = args.truthPaths;
+    info.truthStride = truthStride;
 
     size_t total = 0;
     for (const CloudsView& v : views)
@@ -200,7 +259,12 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
             struct References {
                 std::vector<float> still, motion;
             };
-            std::map<std::pair<uint32_t, uint32_t>, References> references;  // by noise sizes
+            // The model's references by noise sizes and model; the truth by noise sizes.
+            std::map<std::tuple<uint32_t, uint32_t, uint32_t>, References> references;
+            std::map<std::pair<uint32_t, uint32_t>, std::vector<float>> truths;
+            const uint32_t truthFactor = truthStride / args.errorStride;
+            const uint32_t tw = (W + truthStride - 1) / truthStride, th = (H + truthStride - 1) / truthStride;
+            const std::vector<float> skyTruth = subsample(skyStill, W, H, truthStride);
             for (const CloudsPoint& point : points) {
                 if (point.knob != "default" && !sweeps(view.name)) continue;
                 const std::string label =
@@ -217,27 +281,55 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
                 for (uint32_t n = 0; n < row.stillFrames; ++n)
                     if (!gpu.render(frameOf(view, &s, 0.0, n == 0, W, H), image, error))
                         return fail(label + ": " + error);
-                const std::pair<uint32_t, uint32_t> key{s.noise.baseSize, s.noise.detailSize};
-                if (!references.count(key)) {
+                const std::pair<uint32_t, uint32_t> noiseKey{s.noise.baseSize, s.noise.detailSize};
+                const std::tuple<uint32_t, uint32_t, uint32_t> key{s.noise.baseSize, s.noise.detailSize,
+                                                                   uint32_t(s.multipleScattering.model)};
+                const std::string noise =
+                    std::to_string(noiseKey.first) + "/" + std::to_string(noiseKey.second);
+                if (!references.count(key) || (args.truthPaths && !truths.count(noiseKey))) {
                     std::vector<float> base, detail;
                     if (!readNoise(gpu, "clouds.base_noise", base, error) ||
                         !readNoise(gpu, "clouds.detail_noise", detail, error))
                         return fail(label + ": " + error);
-                    References& r = references[key];
-                    const std::string noise = std::to_string(key.first) + "/" + std::to_string(key.second);
-                    progress.show(view.name + " reference, noise " + noise + " (" +
-                                  std::to_string(args.referenceSteps) + " steps)");
-                    const auto start = std::chrono::steady_clock::now();
-                    if (!reference(frameOf(view, &s, 0.0, false, W, H), args, skyStill, base, detail, r.still,
-                                   error) ||
-                        !reference(frameOf(view, &s, panYaw(M - 1), false, W, H), args, skyMoved, base,
-                                   detail, r.motion, error))
-                        return fail(label + ": " + error);
-                    info.referenceSeconds.emplace_back(view.name + " noise " + noise, secondsSince(start));
+                    if (!references.count(key)) {
+                        References& r = references[key];
+                        progress.show(view.name + " reference, noise " + noise + " (" +
+                                      std::to_string(args.referenceSteps) + " steps)");
+                        const auto start = std::chrono::steady_clock::now();
+                        if (!reference(frameOf(view, &s, 0.0, false, W, H), args, skyStill, base, detail,
+                                       r.still, error, args.errorStride) ||
+                            !reference(frameOf(view, &s, panYaw(M - 1), false, W, H), args, skyMoved, base,
+                                       detail, r.motion, error, args.errorStride))
+                            return fail(label + ": " + error);
+                        info.referenceSeconds.emplace_back(
+                            view.name + " noise " + noise + " " + cloudsKnobValue(s, "model"),
+                            secondsSince(start));
+                    }
+                    if (args.truthPaths && !truths.count(noiseKey)) {
+                        progress.show(view.name + " path-traced truth, noise " + noise + " (" +
+                                      std::to_string(args.truthPaths) + " paths)");
+                        const auto start = std::chrono::steady_clock::now();
+                        std::vector<float> standardError;
+                        if (!reference(frameOf(view, &s, 0.0, false, W, H), args, skyStill, base, detail,
+                                       truths[noiseKey], error, truthStride, args.truthPaths, &standardError))
+                            return fail(label + " truth: " + error);
+                        info.truthSeconds.emplace_back(view.name + " noise " + noise, secondsSince(start));
+                        info.truthStandardError.emplace_back(
+                            view.name + " noise " + noise,
+                            meanRelativeStandardError(truths[noiseKey], standardError, skyTruth));
+                    }
                     gpu.idle = true;
                 }
                 const References& ref = references[key];
                 row.still = compare(image, ref.still, W, H, args.errorStride);
+                if (args.truthPaths) {
+                    const std::vector<float>& truth = truths[noiseKey];
+                    const uint32_t rw = (W + args.errorStride - 1) / args.errorStride;
+                    const uint32_t rh = (H + args.errorStride - 1) / args.errorStride;
+                    row.model =
+                        compareTruth(subsample(ref.still, rw, rh, truthFactor), truth, skyTruth, tw, th);
+                    row.total = compareTruth(subsample(image, W, H, truthStride), truth, skyTruth, tw, th);
+                }
                 const std::string dumpName =
                     view.name + "_" + (point.knob == "default" ? "default" : point.knob + "_" + point.value);
                 dump(dumpName + "_still_gpu", image, W, H, args.errorStride);

@@ -21,6 +21,10 @@ struct CloudsRunArgs {
     uint32_t convergedFrames = 32;  // still frames before the still error (temporal rows)
     uint32_t motionFrames = 32;     // panning frames before the motion error
     uint32_t shadowMapSize = 0;     // every row's shadow_map.size; 0: postfx's default (--quick: 64)
+    // The path-traced truth (CloudsTruthError): paths per pixel (0: none) at every truthStride-th pixel (a
+    // multiple of errorStride; 0: 4 × errorStride).
+    uint32_t truthPaths = 256;
+    uint32_t truthStride = 0;
     std::string out;
     std::vector<std::string> views;       // cloudsViews() names; empty: all
     std::vector<std::string> sweepViews;  // the views the sweep runs on; empty: every measured view

@@ -73,18 +73,23 @@ postfx::Vec3 cloudsToSun(const CloudsView& view) {
 
 const std::vector<std::string>& cloudsKnobs() {
     static const std::vector<std::string> knobs = {
-        "steps", "light_steps", "resolution_scale", "base_size", "detail_size", "temporal", "preset"};
+        "model",     "steps",       "light_steps", "resolution_scale",
+        "base_size", "detail_size", "temporal",    "preset"};
     return knobs;
 }
 
 CloudsSweepOptions defaultCloudsSweep(bool quick) {
     CloudsSweepOptions o;
     if (quick) {
-        o.values = {
-            {"steps", {"16"}}, {"resolution_scale", {"1"}}, {"base_size", {"32"}}, {"preset", {"low"}}};
+        o.values = {{"model", {"octaves"}},
+                    {"steps", {"16"}},
+                    {"resolution_scale", {"1"}},
+                    {"base_size", {"32"}},
+                    {"preset", {"low"}}};
         return o;
     }
-    o.values = {{"steps", {"16", "32", "64", "96", "128", "192"}},
+    o.values = {{"model", {"slab", "octaves"}},
+                {"steps", {"16", "32", "64", "96", "128", "192"}},
                 {"light_steps", {"2", "4", "6", "12", "16", "32"}},
                 {"resolution_scale", {"1", "0.5", "0.25"}},
                 {"base_size", {"32", "64", "128", "256"}},
@@ -116,6 +121,16 @@ bool applyCloudsKnob(postfx::CloudSettings& s, const std::string& knob, const st
                                                       : s.noise.detailSize;
             field = n;
         }
+    } else if (knob == "model") {
+        // octaves: the demo scenes' former four octaves (0.6, 0.6, 0.5), the octave model at its brightest
+        // art-directed setting in postfx's scenes.
+        expected = "slab or octaves";
+        ok = value == "slab" || value == "octaves";
+        if (value == "octaves") {
+            s.multipleScattering = {postfx::CloudScatteringModel::Octaves, 4, 0.6f, 0.6f, 0.5f};
+        } else if (ok) {
+            s.multipleScattering.model = postfx::CloudScatteringModel::Slab;
+        }
     } else if (knob == "resolution_scale") {
         expected = "a number";
         ok = parseFloat(value, f);
@@ -143,6 +158,8 @@ bool applyCloudsKnob(postfx::CloudSettings& s, const std::string& knob, const st
 }
 
 std::string cloudsKnobValue(const postfx::CloudSettings& s, const std::string& knob) {
+    if (knob == "model")
+        return s.multipleScattering.model == postfx::CloudScatteringModel::Octaves ? "octaves" : "slab";
     if (knob == "steps") return std::to_string(s.steps);
     if (knob == "light_steps") return std::to_string(s.lightSteps);
     if (knob == "resolution_scale") return floatText(s.resolutionScale);

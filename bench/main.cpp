@@ -7,6 +7,7 @@
 // (bench/froxel_run.h).
 #include "atmosphere_run.h"
 #include "clouds_run.h"
+#include "clouds_slabs.h"
 #include "conclusions.h"
 #include "frame_run.h"
 #include "froxel_run.h"
@@ -154,7 +155,9 @@ const char* kUsage =
     "  --clouds               this mode\n"
     "  --clouds-views LIST    ground_noon, ground_sunset, above [all]\n"
     "  --clouds-sweep-views LIST  the views the sweep runs on [all measured; quick: ground_noon]\n"
-    "  --clouds-sweep KNOB=a,b,...  a knob's values (repeatable; 'none' sweeps nothing): steps\n"
+    "  --clouds-sweep KNOB=a,b,...  a knob's values (repeatable; 'none' sweeps nothing): model "
+    "[slab,octaves],\n"
+    "                         steps\n"
     "                         [16,32,64,96,128,192], light_steps [2,4,6,12,16,32], resolution_scale "
     "[1,0.5,0.25],\n"
     "                         base_size [32,64,128,256], detail_size [16,32,64], temporal [off], preset\n"
@@ -162,6 +165,14 @@ const char* kUsage =
     "  --clouds-reference-light-steps N  the reference's light steps [128; quick: 16]\n"
     "  --clouds-converged-frames N  still frames before the still error of a temporal row [32; quick: 4]\n"
     "  --clouds-motion-frames N  panning frames before the motion error [32; quick: 4]\n"
+    "  --clouds-truth-paths N  paths per pixel of the path-traced truth the model and GPU errors are also\n"
+    "                         measured against (0: none) [256; quick: 8]\n"
+    "  --clouds-truth-stride K  the truth at every K-th pixel, a multiple of --error-stride [4 x it]\n"
+    "\n"
+    "clouds against the path tracer (--clouds-slabs; CPU only): the multiple-scattering models on\n"
+    "homogeneous layers (optical depth 0.5-50, albedo 0.9-1, g 0.2-0.8, three suns, three views) against\n"
+    "the path-traced truth; --out [docs/accuracy-cost/clouds-slabs], --quick.\n"
+    "  --clouds-slab-paths N  paths per case [20000; quick: 200]\n"
     "                         quick also shrinks the shadow map to 64x64\n"
     "\n"
     "whole frame (--frame; docs/accuracy-cost/README.md, \"Whole frame (--frame)\"): the showcase scene\n"
@@ -219,6 +230,10 @@ struct Args {
     std::vector<std::pair<std::string, std::vector<std::string>>> cloudsSweep;  // --clouds-sweep
     bool cloudsSweepNone = false;
     uint32_t cloudsLightSteps = 0, cloudsConvergedFrames = 0, cloudsMotionFrames = 0;  // 0: the default
+    int64_t cloudsTruthPaths = -1;                                                     // < 0: the default
+    bool cloudsSlabs = false;                                                          // --clouds-slabs
+    uint32_t cloudsSlabPaths = 0;                                                      // 0: the default
+    uint32_t cloudsTruthStride = 0;  // 0: 4 × the error stride
     // --frame
     bool frame = false;
     bool pipelineStats = false;  // --pipeline-stats: the fog march pipelines' driver statistics
@@ -396,6 +411,10 @@ Args parseArgs(int argc, char** argv) {
             if (args.framePresets.empty()) throw cli::UsageError{"--frame-presets is empty"};
         } else if (a == "--clouds") {
             args.clouds = true;
+        } else if (a == "--clouds-slabs") {
+            args.cloudsSlabs = true;
+        } else if (a == "--clouds-slab-paths") {
+            cli::uintOption(a, value(), 2, 1u << 24, args.cloudsSlabPaths);
         } else if (a == "--clouds-views") {
             args.cloudsViews = cli::splitList(value());
             if (args.cloudsViews.empty()) throw cli::UsageError{"--clouds-views is empty"};
@@ -421,6 +440,12 @@ Args parseArgs(int argc, char** argv) {
             cli::uintOption(a, value(), 1, 100000, args.cloudsConvergedFrames);
         } else if (a == "--clouds-motion-frames") {
             cli::uintOption(a, value(), 1, 100000, args.cloudsMotionFrames);
+        } else if (a == "--clouds-truth-paths") {
+            uint32_t n = 0;
+            cli::uintOption(a, value(), 0, 1u << 24, n);
+            args.cloudsTruthPaths = n;
+        } else if (a == "--clouds-truth-stride") {
+            cli::uintOption(a, value(), 1, 4096, args.cloudsTruthStride);
         } else if (a == "--froxel-grids") {
             const std::string text = value();
             args.froxelSweep.grids.clear();
@@ -508,8 +533,14 @@ Args parseArgs(int argc, char** argv) {
             throw cli::UsageError{"--froxel-target-scene '" + args.froxelTargetScene +
                                   "' is not in --scenes"};
     }
-    if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) + int(args.frame) > 1)
-        throw cli::UsageError{"--froxel, --atmosphere, --clouds and --frame: one mode at a time"};
+    if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) + int(args.frame) + int(args.cloudsSlabs) >
+        1)
+        throw cli::UsageError{
+            "--froxel, --atmosphere, --clouds, --clouds-slabs and --frame: one mode at a time"};
+    if (args.cloudsSlabs) {
+        if (!outGiven) args.out = "docs/accuracy-cost/clouds-slabs";
+        if (args.cloudsSlabPaths == 0) args.cloudsSlabPaths = quick ? 200 : 20000;
+    }
     if (args.frame) {
         if (!outGiven) args.out = "docs/accuracy-cost/frame";
         if (!refGiven) args.referenceSteps = quick ? 64 : 512;
@@ -529,6 +560,7 @@ Args parseArgs(int argc, char** argv) {
         if (args.cloudsLightSteps == 0) args.cloudsLightSteps = quick ? 16 : 128;
         if (args.cloudsConvergedFrames == 0) args.cloudsConvergedFrames = quick ? 4 : 32;
         if (args.cloudsMotionFrames == 0) args.cloudsMotionFrames = quick ? 4 : 32;
+        if (args.cloudsTruthPaths < 0) args.cloudsTruthPaths = quick ? 8 : 256;
         if (quick && args.cloudsSweepViews.empty()) args.cloudsSweepViews = {"ground_noon"};
     }
     if (args.atmosphere) {
@@ -686,6 +718,8 @@ int runClouds(const Args& args, const std::string& command) {
     a.errorStride = args.errorStride;
     a.convergedFrames = args.cloudsConvergedFrames;
     a.motionFrames = args.cloudsMotionFrames;
+    a.truthPaths = uint32_t(args.cloudsTruthPaths);
+    a.truthStride = args.cloudsTruthStride;
     if (args.quick) a.shadowMapSize = 64;  // lavapipe: the default 512² map would take most of the time
     a.out = args.out;
     a.views = args.cloudsViews;
@@ -720,6 +754,12 @@ int run(const Args& args, const std::string& command) {
     if (args.frame) return runFrame(args, command);
     if (args.froxel) return runFroxel(args, command);
     if (args.clouds) return runClouds(args, command);
+    if (args.cloudsSlabs) {
+        bench::CloudsSlabsArgs a;
+        a.paths = args.cloudsSlabPaths;
+        a.out = args.out;
+        return bench::runCloudsSlabs(a, command, utcNow());
+    }
     if (args.atmosphere) return runAtmosphere(args, command);
     std::string error;
     // Plan everything first: a bad scene name fails before the GPU work.

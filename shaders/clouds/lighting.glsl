@@ -90,7 +90,10 @@ vec2 cloudSlabDiffuse(float tt, float tb, float mu0, float beam, float farBeam) 
     float both = p / (p + q) * sum / pMinusQ;
     float a = both - r2 / (p + q), b = both - r1 / (p + q);
     float U = a * u1 + b * u2 + A * beam;
-    float F = (B * beam - (a * u1d + b * u2d - A / mu0 * beam)) / D;
+    // U' = a·u1' + b·u2' - A/μ0·beam with u1' ≈ -u2' ~ 1/τ0: summed as both·(u1' + u2'), u1' + u2' =
+    // k(e^{-k·tb} - e^{-k·tt})/(1 + e^{-kτ0}), so that the thin slab's large derivatives do not cancel.
+    float slope = both * k * (eb - et) / (1.0 + e0) - (r2 * u1d + r1 * u2d) / (p + q) - A / mu0 * beam;
+    float F = (B * beam - slope) / D;
     return vec2(max(U, 0.0), F);
 }
 

@@ -387,6 +387,39 @@ TEST_F(CloudsStability, DensityThousandIsOpaqueAndFinite) {
                            1e-3);
 }
 
+// The slab model's extremes (docs/effects/clouds.md, "Multiple scattering"): a layer of optical depth 10⁴
+// (density 10 /m over 1 km) at albedo 1 exactly, seen from below, inside and above, where the δ-Eddington
+// closed form has k -> 0 and slabs 10⁴ deep (it is written with decaying exponentials only); and the phase
+// at g = 0.99 and -0.99 (one lobe each, δ-scaling's f -> 1) through a layer of optical depth 2. Finite,
+// within range and against the reference in double.
+TEST_F(CloudsStability, SlabModelExtremesMatchReference) {
+    postfx::FrameInfo frame = litHomogeneousFrame();
+    frame.clouds.albedo = 1.0f;
+    frame.clouds.density = 10.0f;
+    frame.clouds.steps = 256;
+    const FogHarnessImages im = images(0.5f);
+    for (double y : {500.0, 1500.0, 2500.0}) {
+        frame.camera = lookCamera({0.0, y, 0.0},
+                                  {1.0,
+                                   y < 1000.0   ? 1.0
+                                   : y > 2000.0 ? -1.0
+                                                : 0.2,
+                                   0.3},
+                                  kUp, 60.0f, kAspect);
+        expectMatchesReference(frame, im,
+                               "optical depth 1e4, albedo 1, camera at " + std::to_string(int(y)) + " m",
+                               2e-2, 1e-3, alongPlane(frame.camera, kUp, frame.clouds.maxDistance));
+    }
+    frame.clouds.density = 0.002f;
+    frame.camera = lookCamera({0.0, 10.0, 0.0}, {1.0, 1.0, 0.3}, kUp, 60.0f, kAspect);
+    for (float g : {0.99f, -0.99f}) {
+        frame.clouds.anisotropyForward = std::max(g, 0.0f);
+        frame.clouds.anisotropyBack = std::min(g, 0.0f);
+        frame.clouds.lobeMix = g < 0.0f ? 1.0f : 0.0f;
+        expectMatchesReference(frame, im, "g " + std::to_string(g) + ", albedo 1", 1e-2, 1e-3);
+    }
+}
+
 // Density 1e-9 /m: T = e^{-τ} with τ ~ 1e-6 (1 km up) to 1e-4 (100 km along the layer), where float keeps
 // 1 - T only to ~6e-8: T within 2 ulps of 1 - τ (closed form); the radiance (black sky: L alone, ~1e-7
 // of the sun) tiny, not negative, and within 1e-3 of the reference relatively (oneMinusExp keeps 1 - e^{-x}).

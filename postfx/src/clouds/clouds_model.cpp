@@ -247,7 +247,9 @@ glm::dvec2 slabDiffuse(const SlabMedium& medium, double tt, double tb, double mu
     const double common = p / (p + q) * (r1 + r2) / pMinusQ;
     const double a = common - r2 / (p + q), b = common - r1 / (p + q);
     const double U = a * u1 + b * u2 + A * beam;
-    const double F = (B * beam - (a * u1d + b * u2d - A / mu0 * beam)) / D;
+    const double slope =
+        common * k * (eb - et) / (1.0 + e0) - (r2 * u1d + r1 * u2d) / (p + q) - A / mu0 * beam;
+    const double F = (B * beam - slope) / D;
     return {std::max(U, 0.0), F};
 }
 
