@@ -110,7 +110,7 @@ float cloudSlabSunTerm(vec3 x, vec3 d, float sigma, float h, float tau) {
     float thickness = (cl.flags.x & kCloudFlagBox) != 0u ? 2.0 * cl.boxHalf.y : 1.0 / cl.layer.w;
     float hc = clamp(h, 0.0, 1.0);
     float beyond = sigma * thickness * (cosSun >= 0.0 ? hc : 1.0 - hc);  // to the far face
-    if (cosSun < 0.0) n = -n;                                           // toward the sunlit face
+    if (cosSun < 0.0) n = -n;                                            // toward the sunlit face
     float mu0 = max(abs(cosSun), kCloudSlabMinCosine);
     float scale = cl.slab.z;
     float direct = exp(-tau), beam = exp(-scale * tau);
