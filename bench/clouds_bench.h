@@ -47,9 +47,9 @@ struct CloudsPoint {
     postfx::CloudSettings settings;
 };
 
-// The knobs swept, in order: model (multiple_scattering: slab, or octaves with the demo scenes' former 4
-// octaves 0.6/0.6/0.5), steps, light_steps, resolution_scale, base_size (noise.baseSize),
-// detail_size (noise.detailSize), temporal (on/off), preset (low, medium, high, ultra: applyCloudQuality).
+// The knobs swept, in order: model (multiple_scattering.model: slab, or octaves at their defaults), steps,
+// light_steps, resolution_scale, base_size (noise.baseSize), detail_size (noise.detailSize), temporal
+// (on/off), preset (low, medium, high, ultra: applyCloudQuality).
 const std::vector<std::string>& cloudsKnobs();
 struct CloudsSweepOptions {
     std::vector<std::pair<std::string, std::vector<std::string>>> values;

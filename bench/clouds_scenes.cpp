@@ -122,15 +122,12 @@ bool applyCloudsKnob(postfx::CloudSettings& s, const std::string& knob, const st
             field = n;
         }
     } else if (knob == "model") {
-        // octaves: the demo scenes' former four octaves (0.6, 0.6, 0.5), the octave model at its brightest
-        // art-directed setting in postfx's scenes.
+        // octaves: Wrenninge's octaves at their defaults (2 octaves, 0.5/0.5/0.5), the model postfx had.
         expected = "slab or octaves";
         ok = value == "slab" || value == "octaves";
-        if (value == "octaves") {
-            s.multipleScattering = {postfx::CloudScatteringModel::Octaves, 4, 0.6f, 0.6f, 0.5f};
-        } else if (ok) {
-            s.multipleScattering.model = postfx::CloudScatteringModel::Slab;
-        }
+        if (ok)
+            s.multipleScattering.model = value == "octaves" ? postfx::CloudScatteringModel::Octaves
+                                                            : postfx::CloudScatteringModel::Slab;
     } else if (knob == "resolution_scale") {
         expected = "a number";
         ok = parseFloat(value, f);
