@@ -120,6 +120,25 @@ float cloudSlabSunTerm(vec3 x, vec3 d, float sigma, float h, float tau) {
     return cloudPhase(d, 1.0) * direct + cloudPhase(d, cl.slab.w) * (beam - direct) + diffuse;
 }
 
+// The slab model's ambient term per unit ambient radiance toward the eye (docs/effects/clouds.md, "Multiple
+// scattering"): the δ-Eddington slab lit on both faces by the uniform radiance A, with nothing else:
+// U'' = k²U, F = -U'/D, πA entering each face (U/4 ± F/2 = πA), symmetric: U = πA(e^{-k·tt} +
+// e^{-k·tb})/((1 + e^{-kτ0})/4 + k(1 - e^{-kτ0})/(2D)), which is 4πA throughout at albedo 1 (a
+// conservative cloud under a uniform sky is as bright as it). tt and tb: the scaled optical depths to the
+// top and bottom from the sample's extinction.
+float cloudSlabAmbient(vec3 x, vec3 d, float sigma, float h, float thickness) {
+    float w = cl.slab.x, g = cl.slab.y;
+    float k = max(sqrt(max(3.0 * (1.0 - w) * (1.0 - w * g), 0.0)), 1e-6);
+    float D = 3.0 * (1.0 - w * g);
+    float hc = clamp(h, 0.0, 1.0);
+    float tt = cl.slab.z * sigma * (1.0 - hc) * thickness, tb = cl.slab.z * sigma * hc * thickness;
+    float et = exp(-k * tt), eb = exp(-k * tb), e0 = et * eb;
+    float den = 0.25 * (1.0 + e0) + k / (2.0 * D) * oneMinusExp(k * (tt + tb));
+    // U/4π and F/4π per unit A; F away from the top.
+    float u = 0.25 * (et + eb) / den, f = -0.25 * k * (eb - et) / (D * den);
+    return max(u + 3.0 * cl.slab.w * f * dot(d, cloudSlabNormal(x)), 0.0);
+}
+
 // The radiance a unit of scattering coefficient sends toward the eye from x, σt = `sigma` there, height
 // fraction h: E·T_atm·(the slab's sun term, or Wrenninge's Σ_i b^i·p(c^i·g)·e^{-a^i·τ_sun}) +
 // A·(e^{-1.66·σ·up} + e^{-1.66·σ·down})/2.
@@ -143,9 +162,14 @@ vec3 cloudInScattered(vec3 x, vec3 d, float sigma, float h) {
 #endif
     float thickness = 1.0 / cl.layer.w;
     if ((cl.flags.x & kCloudFlagBox) != 0u) thickness = 2.0 * cl.boxHalf.y;
-    float hc = clamp(h, 0.0, 1.0);
-    float ambient = 0.5 * (exp(-kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +
-                           exp(-kCloudDiffusivity * sigma * hc * thickness));
+    float ambient;
+    if ((cl.flags.x & kCloudFlagSlabScattering) != 0u) {
+        ambient = cloudSlabAmbient(x, d, sigma, h, thickness);
+    } else {
+        float hc = clamp(h, 0.0, 1.0);
+        ambient = 0.5 * (exp(-kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +
+                         exp(-kCloudDiffusivity * sigma * hc * thickness));
+    }
     return sun * sunTerm + cl.ambient.rgb * ambient;
 }
 

@@ -64,12 +64,19 @@ TEST(CloudsBench, QuickSweepIsTiny) {
     std::vector<CloudsPoint> points;
     std::string error;
     ASSERT_TRUE(cloudsSweep(defaultCloudsSweep(true), points, error)) << error;
-    EXPECT_EQ(points.size(), 5u);  // default, steps=16, resolution_scale=1, base_size=32, preset=low
+    // default, model=octaves, steps=16, resolution_scale=1, base_size=32, preset=low
+    EXPECT_EQ(points.size(), 6u);
 }
 
 TEST(CloudsBench, KnobsParseAndRejectBadValues) {
     postfx::CloudSettings s = cloudsBaseSettings();
     std::string error;
+    EXPECT_TRUE(applyCloudsKnob(s, "model", "octaves", error));
+    EXPECT_EQ(s.multipleScattering.model, postfx::CloudScatteringModel::Octaves);
+    EXPECT_EQ(cloudsKnobValue(s, "model"), "octaves");
+    EXPECT_FALSE(applyCloudsKnob(s, "model", "diffusion", error));
+    EXPECT_TRUE(applyCloudsKnob(s, "model", "slab", error));
+    EXPECT_EQ(s.multipleScattering.model, postfx::CloudScatteringModel::Slab);
     EXPECT_TRUE(applyCloudsKnob(s, "steps", "96", error));
     EXPECT_EQ(s.steps, 96u);
     EXPECT_TRUE(applyCloudsKnob(s, "light_steps", "16", error));

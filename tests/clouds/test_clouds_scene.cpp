@@ -26,7 +26,8 @@ TEST(CloudsScene, EveryKeyRoundTrips) {
       "box": {"center": [10.5, 2000, -3], "half_size": [1000, 400, 2000], "yaw_deg": 30, "pitch_deg": -5},
       "coverage": 0.7, "cloud_type": 0.8, "density": 0.03, "albedo": 0.95,
       "anisotropy_forward": 0.7, "anisotropy_back": -0.2, "lobe_mix": 0.3,
-      "multiple_scattering": {"octaves": 3, "attenuation": 0.6, "contribution": 0.4, "eccentricity": 0.3},
+      "multiple_scattering": {"model": "octaves", "octaves": 3, "attenuation": 0.6, "contribution": 0.4,
+                              "eccentricity": 0.3},
       "steps": 96, "light_steps": 8, "light_distance": 5000, "max_distance": 80000, "wind": [5, 0, 2],
       "jitter": false, "quality": "high", "resolution_scale": 0.25,
       "temporal": {"enabled": false, "blend_weight": 0.2}, "cast_shadows": false,
@@ -41,6 +42,7 @@ TEST(CloudsScene, EveryKeyRoundTrips) {
     EXPECT_EQ(s.shape, postfx::CloudShape::Box);
     EXPECT_EQ(s.box.center.x, 10.5);
     EXPECT_FLOAT_EQ(s.box.yawDeg, 30.0f);
+    EXPECT_EQ(s.multipleScattering.model, postfx::CloudScatteringModel::Octaves);
     EXPECT_EQ(s.multipleScattering.octaves, 3u);
     EXPECT_FLOAT_EQ(s.multipleScattering.contribution, 0.4f);
     EXPECT_EQ(s.steps, 96u);
@@ -69,6 +71,8 @@ TEST(CloudsScene, BadValuesNameTheirKeyPath) {
         {R"({"noise": {"base_size": 100}})", "effects.clouds.noise.base_size: 100 is not a power of two"},
         {R"({"multiple_scattering": {"contribution": 0.9}})",
          "effects.clouds.multiple_scattering.contribution"},
+        {R"({"multiple_scattering": {"model": "diffusion"}})",
+         "effects.clouds.multiple_scattering.model: expected \"slab\" or \"octaves\""},
         {R"({"box": {"yaw": 3}})", "effects.clouds.box.yaw: unknown key"},
         {R"({"coverage": 2})", "effects.clouds.coverage: 2 is outside [0, 1]"},
         {R"({"cast": true})", "effects.clouds.cast: unknown key"},

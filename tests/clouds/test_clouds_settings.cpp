@@ -57,6 +57,8 @@ TEST(CloudsSettings, BadValuesNameTheirKey) {
          [](CloudSettings& s) { s.multipleScattering.attenuation = 0; }},
         {"clouds.multiple_scattering.contribution",
          [](CloudSettings& s) { s.multipleScattering.contribution = 0.8f; }},
+        {"clouds.multiple_scattering.model",
+         [](CloudSettings& s) { s.multipleScattering.model = postfx::CloudScatteringModel(7); }},
         {"clouds.multiple_scattering.eccentricity",
          [](CloudSettings& s) { s.multipleScattering.eccentricity = 1.5f; }},
         {"clouds.steps", [](CloudSettings& s) { s.steps = 0; }},

@@ -253,12 +253,35 @@ glm::dvec2 slabDiffuse(const SlabMedium& medium, double tt, double tb, double mu
     return {std::max(U, 0.0), F};
 }
 
+namespace {
+
+// The slab's unit normal at x: up (flat layer), the planet's radial direction (curved), the box's y.
+dvec3 slabNormal(const Model& m, const dvec3& x) {
+    if (m.s.shape == CloudShape::Box) return glm::transpose(m.worldToBox)[1];
+    if (m.curved) return glm::normalize(m.camera + x + dvec3(0.0, m.groundRadius, 0.0));
+    return {0.0, 1.0, 0.0};
+}
+
+}  // namespace
+
+double slabAmbientTerm(const Model& m, const dvec3& x, const dvec3& d, double sigma, double h) {
+    // As lighting.glsl's cloudSlabAmbient, which says why.
+    const SlabMedium medium = slabMedium(m.s);
+    const double w = medium.albedo, g = medium.asymmetry;
+    const double k = std::max(std::sqrt(std::max(3.0 * (1.0 - w) * (1.0 - w * g), 0.0)), 1e-6);
+    const double D = 3.0 * (1.0 - w * g);
+    const double hc = clamp01(h), thickness = m.top - m.bottom;
+    const double tt = medium.depthScale * sigma * (1.0 - hc) * thickness;
+    const double tb = medium.depthScale * sigma * hc * thickness;
+    const double et = std::exp(-k * tt), eb = std::exp(-k * tb), e0 = et * eb;
+    const double den = 0.25 * (1.0 + e0) + k / (2.0 * D) * -std::expm1(-k * (tt + tb));
+    const double U = kPi * (et + eb) / den;
+    const double F = -kPi * k * (eb - et) / (D * den);
+    return std::max(U + 3.0 * medium.g * F * glm::dot(d, slabNormal(m, x)), 0.0) / (4.0 * kPi);
+}
+
 double slabSunTerm(const Model& m, const dvec3& x, const dvec3& d, double sigma, double h, double tau) {
-    dvec3 n(0.0, 1.0, 0.0);
-    if (m.s.shape == CloudShape::Box)
-        n = glm::transpose(m.worldToBox)[1];
-    else if (m.curved)
-        n = glm::normalize(m.camera + x + dvec3(0.0, m.groundRadius, 0.0));
+    dvec3 n = slabNormal(m, x);
     const double cosSun = glm::dot(n, m.toSun);
     const double hc = clamp01(h);
     const double beyond = sigma * (m.top - m.bottom) * (cosSun >= 0.0 ? hc : 1.0 - hc);
@@ -294,8 +317,10 @@ dvec3 inScattered(const Model& m, const dvec3& x, const dvec3& d, double sigma, 
     }
     const double thickness = m.top - m.bottom;
     const double hc = clamp01(h);
-    const double ambient = 0.5 * (std::exp(-gpu::kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +
-                                  std::exp(-gpu::kCloudDiffusivity * sigma * hc * thickness));
+    const double ambient = ms.model == CloudScatteringModel::Slab
+                               ? slabAmbientTerm(m, x, d, sigma, h)
+                               : 0.5 * (std::exp(-gpu::kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +
+                                        std::exp(-gpu::kCloudDiffusivity * sigma * hc * thickness));
     return sun * sunTerm + m.ambient * ambient;
 }
 

@@ -86,6 +86,10 @@ SlabMedium slabMedium(const CloudSettings& settings);
 // scaled beam `beam` at the point and `farBeam` at the far face (lighting.glsl, cloudSlabDiffuse).
 glm::dvec2 slabDiffuse(const SlabMedium& medium, double tt, double tb, double mu0, double beam,
                        double farBeam);
+// The slab model's ambient term per unit ambient radiance toward -d at x (lighting.glsl,
+// cloudSlabAmbient): the δ-Eddington slab lit by uniform diffuse radiance on both faces, optical depths
+// σ·(1 - h)·H above x and σ·h·H below.
+double slabAmbientTerm(const Model& m, const glm::dvec3& x, const glm::dvec3& d, double sigma, double h);
 // The slab model's sun term per unit illuminance toward -d at x (lighting.glsl, cloudSlabSunTerm): τ
 // the sun's optical depth, σ the extinction and h the height fraction at x.
 double slabSunTerm(const Model& m, const glm::dvec3& x, const glm::dvec3& d, double sigma, double h,
