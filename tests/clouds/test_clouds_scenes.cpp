@@ -29,7 +29,7 @@ namespace {
 constexpr uint32_t kWidth = 96, kHeight = 54;
 // The atmosphere reference's samples per view ray (the clouds' reference takes its own 1024).
 constexpr uint32_t kAtmosphereReferenceSteps = 256;
-// The largest |Σ(gpu - ref)| / Σ ref per channel (measured: at most 2.5%, clouds_above's red).
+// The largest |Σ(gpu - ref)| / Σ ref per channel (measured: at most 3.0%, clouds_sunset's red).
 constexpr double kMaxBias = 0.05;
 
 class CloudsScenes : public GpuTest {
@@ -152,8 +152,8 @@ TEST_F(CloudsScenes, AboveSceneMatchesGolden) {
     expectSceneMatchesGolden("clouds_above");
 }
 
-// Measured (blocks, R G B): noon 4.0 3.3 2.2%, sunset 19.1 11.8 3.6% (the low sun's bright edges in one
-// jittered half-resolution frame, two frames into the accumulation), above 4.4 3.1 2.3%.
+// Measured (blocks, R G B): noon 2.4 1.7 1.1%, sunset 15.8 8.5 2.2% (the low sun's bright edges in one
+// jittered half-resolution frame, two frames into the accumulation), above 4.4 3.3 2.5%.
 TEST_F(CloudsScenes, NoonSceneMatchesReference) {
     expectNearReference("clouds_noon", 0.07);
 }
