@@ -32,10 +32,10 @@ struct QualityPreset {
     double error;
 };
 inline constexpr QualityPreset kQualityPresets[] = {
-    {CloudQuality::Low, 32, 4, 0.25f, true, 0.06378},
-    {CloudQuality::Medium, 80, 8, 0.5f, true, 0.009811},
-    {CloudQuality::High, 128, 12, 0.5f, true, 0.008677},
-    {CloudQuality::Ultra, 128, 12, 1.0f, true, 0.005661},
+    {CloudQuality::Low, 32, 4, 0.25f, true, 0.06593},
+    {CloudQuality::Medium, 80, 8, 0.5f, true, 0.006867},
+    {CloudQuality::High, 128, 12, 0.5f, true, 0.007172},
+    {CloudQuality::Ultra, 128, 12, 1.0f, true, 0.004081},
 };
 
 Status validateSettings(const CloudSettings& settings);
