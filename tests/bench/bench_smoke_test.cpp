@@ -756,9 +756,15 @@ const std::vector<std::string> kCloudsColumns = {"view",
                                                  "motion_rel_rmse",
                                                  "motion_mean_rel_luminance",
                                                  "motion_max_abs",
-                                                 "non_finite"};
+                                                 "non_finite",
+                                                 "model",
+                                                 "truth_model_bias",
+                                                 "truth_model_rel_rmse",
+                                                 "truth_gpu_bias",
+                                                 "truth_gpu_rel_rmse"};
 const std::vector<std::string> kCloudsViews = {"ground_noon", "ground_sunset", "above"};
-const size_t kCloudsSweepRows = 4;  // --quick: steps=16, resolution_scale=1, base_size=32, preset=low
+// --quick: model=octaves, steps=16, resolution_scale=1, base_size=32, preset=low
+const size_t kCloudsSweepRows = 5;
 
 class BenchCloudsSmoke : public ::testing::Test {
 protected:
@@ -793,8 +799,10 @@ TEST_F(BenchCloudsSmoke, CsvHasEveryRowWithStillPassesAndFiniteErrors) {
         EXPECT_EQ(row.at("non_finite"), "0") << what;
         EXPECT_GT(number(row.at("gpu_ms_median")), 0.0) << what;  // lavapipe has timestamps
         for (const char* column :
-             {"still_rel_rmse", "still_mean_rel_luminance", "motion_rel_rmse", "motion_mean_rel_luminance"})
+             {"still_rel_rmse", "still_mean_rel_luminance", "motion_rel_rmse", "motion_mean_rel_luminance",
+              "truth_model_bias", "truth_gpu_bias", "truth_gpu_rel_rmse"})
             EXPECT_TRUE(std::isfinite(number(row.at(column)))) << what << " " << column;
+        EXPECT_EQ(row.at("model"), row.at("knob") == "model" ? "octaves" : "slab") << what;
         const bool temporal = row.at("temporal") == "on";
         EXPECT_EQ(row.at("still_frames"), temporal ? "4" : "1") << what;
         EXPECT_EQ(row.at("motion_frames"), "4") << what;
@@ -819,13 +827,33 @@ TEST_F(BenchCloudsSmoke, CsvHasEveryRowWithStillPassesAndFiniteErrors) {
     EXPECT_LT(still["resolution_scale"], still["default"]);
 }
 
+// postfx-bench --clouds-slabs --quick (CPU only, 200 paths a case): every case written, the truth positive
+// where the sun lights the layer, the published case near its value.
+TEST(BenchCloudsSlabsSmoke, EveryCaseHasATruthAndTheModels) {
+    const std::string out = gOut + "/clouds-slabs";
+    std::filesystem::remove_all(out);
+    const std::string command = "'" + gBench + "' --clouds-slabs --quick --out '" + out + "'";
+    std::printf("running: %s\n", command.c_str());
+    std::fflush(stdout);
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    const std::string csv = readFile(out + "/results.csv");
+    size_t lines = 0;
+    for (char c : csv)
+        lines += c == '\n';
+    EXPECT_EQ(lines, 2u + 1u + 2u + 405u);  // comment, header, the published case, the fog slab, the grid
+    const std::string md = readFile(out + "/results.md");
+    for (const char* section :
+         {"## Summary", "| slab | ", "| octaves 2 | ", "## Every case", "| published |"})
+        EXPECT_NE(md.find(section), std::string::npos) << section;
+}
+
 TEST_F(BenchCloudsSmoke, MarkdownHasTheTargetsAndSweep) {
     ASSERT_EQ(status_, 0);
     const std::string md = readFile(out_ + "/results.md");
     for (const char* section :
          {"| device | ", "| command | ", "## Targets", "Not 1920×1080", "Medium, temporal on, still ≤ 0.5 ms",
           "Medium, converged still error ≤ 1.5", "## Sweep", "### ground_noon", "### above", "| steps=16 |",
-          "| preset=low |", "RTX 4080"})
+          "| preset=low |", "| model=octaves |", "| truth | ", "vs truth: model bias", "RTX 4080"})
         EXPECT_NE(md.find(section), std::string::npos) << section;
 }
 }  // namespace
