@@ -104,10 +104,8 @@ vec2 cloudSlabDiffuse(float tt, float tb, float mu0, float beam, float farBeam) 
 // of the local slab: (U + 3g·F·(d·n))/4π (the source function of the Eddington field, Toon et al. 1989).
 // The slab: its sunlit face where the sun's optical depth τ puts it (τ·μ0 above x), the far face the
 // sample's own extinction times its height fraction's distance to it.
-float cloudSlabSunTerm(vec3 x, vec3 d, float sigma, float h, float tau) {
-    vec3 n = cloudSlabNormal(x);
+float cloudSlabSunTerm(vec3 n, vec3 d, float sigma, float h, float tau, float thickness) {
     float cosSun = dot(n, cl.toSun.xyz);
-    float thickness = (cl.flags.x & kCloudFlagBox) != 0u ? 2.0 * cl.boxHalf.y : 1.0 / cl.layer.w;
     float hc = clamp(h, 0.0, 1.0);
     float beyond = sigma * thickness * (cosSun >= 0.0 ? hc : 1.0 - hc);  // to the far face
     if (cosSun < 0.0) n = -n;                                            // toward the sunlit face
@@ -126,7 +124,7 @@ float cloudSlabSunTerm(vec3 x, vec3 d, float sigma, float h, float tau) {
 // e^{-k·tb})/((1 + e^{-kτ0})/4 + k(1 - e^{-kτ0})/(2D)), which is 4πA throughout at albedo 1 (a
 // conservative cloud under a uniform sky is as bright as it). tt and tb: the scaled optical depths to the
 // top and bottom from the sample's extinction.
-float cloudSlabAmbient(vec3 x, vec3 d, float sigma, float h, float thickness) {
+float cloudSlabAmbient(vec3 n, vec3 d, float sigma, float h, float thickness) {
     float w = cl.slab.x, g = cl.slab.y;
     float k = max(sqrt(max(3.0 * (1.0 - w) * (1.0 - w * g), 0.0)), 1e-6);
     float D = 3.0 * (1.0 - w * g);
@@ -136,7 +134,7 @@ float cloudSlabAmbient(vec3 x, vec3 d, float sigma, float h, float thickness) {
     float den = 0.25 * (1.0 + e0) + k / (2.0 * D) * oneMinusExp(k * (tt + tb));
     // U/4π and F/4π per unit A; F away from the top.
     float u = 0.25 * (et + eb) / den, f = -0.25 * k * (eb - et) / (D * den);
-    return max(u + 3.0 * cl.slab.w * f * dot(d, cloudSlabNormal(x)), 0.0);
+    return max(u + 3.0 * cl.slab.w * f * dot(d, n), 0.0);
 }
 
 // The radiance a unit of scattering coefficient sends toward the eye from x, σt = `sigma` there, height
@@ -144,9 +142,12 @@ float cloudSlabAmbient(vec3 x, vec3 d, float sigma, float h, float thickness) {
 // A·(e^{-1.66·σ·up} + e^{-1.66·σ·down})/2.
 vec3 cloudInScattered(vec3 x, vec3 d, float sigma, float h) {
     float tau = cloudSunOpticalDepth(x);
+    bool slab = (cl.flags.x & kCloudFlagSlabScattering) != 0u;
+    float thickness = (cl.flags.x & kCloudFlagBox) != 0u ? 2.0 * cl.boxHalf.y : 1.0 / cl.layer.w;
+    vec3 n = slab ? cloudSlabNormal(x) : vec3(0.0);
     float sunTerm = 0.0;
-    if ((cl.flags.x & kCloudFlagSlabScattering) != 0u) {
-        sunTerm = cloudSlabSunTerm(x, d, sigma, h, tau);
+    if (slab) {
+        sunTerm = cloudSlabSunTerm(n, d, sigma, h, tau, thickness);
     } else {
         float a = 1.0, b = 1.0, c = 1.0;
         for (uint i = 0u; i < cl.counts.z; ++i) {
@@ -160,11 +161,9 @@ vec3 cloudInScattered(vec3 x, vec3 d, float sigma, float h) {
 #ifdef ATMOSPHERE
     sun *= cloudAtmosphereTransmittance(x);
 #endif
-    float thickness = 1.0 / cl.layer.w;
-    if ((cl.flags.x & kCloudFlagBox) != 0u) thickness = 2.0 * cl.boxHalf.y;
     float ambient;
-    if ((cl.flags.x & kCloudFlagSlabScattering) != 0u) {
-        ambient = cloudSlabAmbient(x, d, sigma, h, thickness);
+    if (slab) {
+        ambient = cloudSlabAmbient(n, d, sigma, h, thickness);
     } else {
         float hc = clamp(h, 0.0, 1.0);
         ambient = 0.5 * (exp(-kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +

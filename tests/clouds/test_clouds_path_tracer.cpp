@@ -6,6 +6,7 @@
 #include "clouds/clouds_path_tracer.h"
 #include "clouds_flux.h"
 #include "clouds_frames.h"
+#include "host/camera_math.h"
 
 #include <postfx/reference.h>
 
@@ -169,18 +170,6 @@ TEST(CloudsPathTracer, ConservativeSlabConservesEnergy) {
                 down.flux.x, direct, total, sigma, mu0);
 }
 
-// Vulkan perspective projection (clip y down), reversed Z.
-glm::mat4 perspective(float fovY, float aspect, float n, float f) {
-    const float s = 1.0f / std::tan(0.5f * fovY);
-    glm::mat4 m(0.0f);
-    m[0][0] = s / aspect;
-    m[1][1] = -s;
-    m[2][3] = -1.0f;
-    m[2][2] = n / (f - n);
-    m[3][2] = f * n / (f - n);
-    return m;
-}
-
 // renderClouds' path-traced mode on noisy clouds: the same seed gives the same image and standard error
 // on 1 and 2 threads; another seed another image.
 TEST(CloudsPathTracer, SameSeedSameImageOnAnyThreadCount) {
@@ -193,7 +182,7 @@ TEST(CloudsPathTracer, SameSeedSameImageOnAnyThreadCount) {
     in.depth = depth;
     in.depthConvention.reversedZ = true;
     in.camera.view = glm::lookAt(glm::vec3(0.0f), glm::vec3(0.3f, 1.0f, -1.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-    in.camera.projection = perspective(1.0f, float(w) / float(h), 0.1f, 1000.0f);
+    in.camera.projection = demo::perspectiveProjection(1.0f, float(w) / float(h), 0.1f, 1000.0f, true, false);
     in.sun.toSun = {0.3f, 0.8f, -0.2f};
     in.sun.illuminance = {3.0f, 2.0f, 1.0f};
     in.ambient = {0.2f, 0.3f, 0.5f};

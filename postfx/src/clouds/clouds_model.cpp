@@ -108,6 +108,7 @@ Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail, Co
     m.toSun = glm::normalize(dvec3(frame.sun.toSun));
     m.sunIlluminance = dvec3(frame.sun.illuminance);
     m.ambient = dvec3(frame.ambient);
+    m.slab = slabMedium(s);
     if (frame.atmosphere.enabled)
         m.atmosphere = atmosphere::sharedTransmittanceTable(atmosphere::modelFrom(frame.atmosphere));
     return m;
@@ -253,20 +254,15 @@ glm::dvec2 slabDiffuse(const SlabMedium& medium, double tt, double tb, double mu
     return {std::max(U, 0.0), F};
 }
 
-namespace {
-
-// The slab's unit normal at x: up (flat layer), the planet's radial direction (curved), the box's y.
 dvec3 slabNormal(const Model& m, const dvec3& x) {
     if (m.s.shape == CloudShape::Box) return glm::transpose(m.worldToBox)[1];
     if (m.curved) return glm::normalize(m.camera + x + dvec3(0.0, m.groundRadius, 0.0));
     return {0.0, 1.0, 0.0};
 }
 
-}  // namespace
-
-double slabAmbientTerm(const Model& m, const dvec3& x, const dvec3& d, double sigma, double h) {
+double slabAmbientTerm(const Model& m, const dvec3& n, const dvec3& d, double sigma, double h) {
     // As lighting.glsl's cloudSlabAmbient, which says why.
-    const SlabMedium medium = slabMedium(m.s);
+    const SlabMedium& medium = m.slab;
     const double w = medium.albedo, g = medium.asymmetry;
     const double k = std::max(std::sqrt(std::max(3.0 * (1.0 - w) * (1.0 - w * g), 0.0)), 1e-6);
     const double D = 3.0 * (1.0 - w * g);
@@ -277,17 +273,16 @@ double slabAmbientTerm(const Model& m, const dvec3& x, const dvec3& d, double si
     const double den = 0.25 * (1.0 + e0) + k / (2.0 * D) * -std::expm1(-k * (tt + tb));
     const double U = kPi * (et + eb) / den;
     const double F = -kPi * k * (eb - et) / (D * den);
-    return std::max(U + 3.0 * medium.g * F * glm::dot(d, slabNormal(m, x)), 0.0) / (4.0 * kPi);
+    return std::max(U + 3.0 * medium.g * F * glm::dot(d, n), 0.0) / (4.0 * kPi);
 }
 
-double slabSunTerm(const Model& m, const dvec3& x, const dvec3& d, double sigma, double h, double tau) {
-    dvec3 n = slabNormal(m, x);
+double slabSunTerm(const Model& m, dvec3 n, const dvec3& d, double sigma, double h, double tau) {
     const double cosSun = glm::dot(n, m.toSun);
     const double hc = clamp01(h);
     const double beyond = sigma * (m.top - m.bottom) * (cosSun >= 0.0 ? hc : 1.0 - hc);
     if (cosSun < 0.0) n = -n;
     const double mu0 = std::max(std::abs(cosSun), double(gpu::kCloudSlabMinCosine));
-    const SlabMedium medium = slabMedium(m.s);
+    const SlabMedium& medium = m.slab;
     const double direct = std::exp(-tau), beam = std::exp(-medium.depthScale * tau);
     const double tt = medium.depthScale * tau * mu0, tb = medium.depthScale * beyond;
     const glm::dvec2 UF = slabDiffuse(medium, tt, tb, mu0, beam, beam * std::exp(-tb / mu0));
@@ -299,9 +294,11 @@ dvec3 inScattered(const Model& m, const dvec3& x, const dvec3& d, double sigma, 
                   uint32_t lightSteps) {
     const double tau = sunOpticalDepth(m, x, lightSteps);
     const CloudMultipleScattering& ms = m.s.multipleScattering;
+    const bool slab = ms.model == CloudScatteringModel::Slab;
+    const dvec3 n = slab ? slabNormal(m, x) : dvec3(0.0);
     double sunTerm = 0.0, a = 1.0, b = 1.0, c = 1.0;
-    if (ms.model == CloudScatteringModel::Slab) {
-        sunTerm = slabSunTerm(m, x, d, sigma, h, tau);
+    if (slab) {
+        sunTerm = slabSunTerm(m, n, d, sigma, h, tau);
     } else {
         for (uint32_t i = 0; i < ms.octaves; ++i) {
             sunTerm += b * phase(m, d, c) * std::exp(-a * tau);
@@ -317,10 +314,9 @@ dvec3 inScattered(const Model& m, const dvec3& x, const dvec3& d, double sigma, 
     }
     const double thickness = m.top - m.bottom;
     const double hc = clamp01(h);
-    const double ambient = ms.model == CloudScatteringModel::Slab
-                               ? slabAmbientTerm(m, x, d, sigma, h)
-                               : 0.5 * (std::exp(-gpu::kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +
-                                        std::exp(-gpu::kCloudDiffusivity * sigma * hc * thickness));
+    const double ambient = slab ? slabAmbientTerm(m, n, d, sigma, h)
+                                : 0.5 * (std::exp(-gpu::kCloudDiffusivity * sigma * (1.0 - hc) * thickness) +
+                                         std::exp(-gpu::kCloudDiffusivity * sigma * hc * thickness));
     return sun * sunTerm + m.ambient * ambient;
 }
 

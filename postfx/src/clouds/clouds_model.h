@@ -31,6 +31,14 @@ struct CoverageMapTexels {
     double sample(const glm::dvec2& uv) const;
 };
 
+// The slab model's δ-scaled medium (Joseph, Wiscombe and Weinman 1976): the phase's first and second
+// moments g and f of the dual lobe, ω' = ω(1 - f)/(1 - ωf), g' = (g - f)/(1 - f), τ' = (1 - ωf)·τ.
+struct SlabMedium {
+    double g = 0.0, f = 0.0;
+    double albedo = 0.0, asymmetry = 0.0, depthScale = 1.0;  // ω', g', 1 - ωf
+};
+SlabMedium slabMedium(const CloudSettings& settings);
+
 struct Model {
     CloudSettings s;
     glm::dvec3 camera{0.0};  // world [m]
@@ -44,6 +52,7 @@ struct Model {
     NoiseVolume base, detail;
     CoverageMapTexels coverageMap;  // the host's coverage map; empty: none
     glm::dvec3 toSun{0.0, 1.0, 0.0}, sunIlluminance{0.0}, ambient{0.0};
+    SlabMedium slab;  // slabMedium(s), for the slab model
     // The atmosphere's transmittance toward the sun, null with the atmosphere off.
     std::shared_ptr<const atmosphere::TransmittanceTable> atmosphere;
 };
@@ -74,26 +83,21 @@ double extinction(const Model& m, const glm::dvec3& x);       // σt [1/m]
 // Optical depth toward the sun from x over the light path (the shape's exit, at most light_distance),
 // with `steps` midpoint samples, step k spanning [(k/n)², ((k+1)/n)²] of the path (lighting.glsl).
 double sunOpticalDepth(const Model& m, const glm::dvec3& x, uint32_t steps);
-// The slab model's δ-scaled medium (Joseph, Wiscombe and Weinman 1976): the phase's first and second
-// moments g and f of the dual lobe, ω' = ω(1 - f)/(1 - ωf), g' = (g - f)/(1 - f), τ' = (1 - ωf)·τ.
-struct SlabMedium {
-    double g = 0.0, f = 0.0;
-    double albedo = 0.0, asymmetry = 0.0, depthScale = 1.0;  // ω', g', 1 - ωf
-};
-SlabMedium slabMedium(const CloudSettings& settings);
 // The δ-Eddington diffuse fluence U and net flux F away from the sunlit face, per unit sun illuminance, at
 // scaled optical depth tt from the sunlit face of a slab with tb beyond, the sun at cosine mu0, the
 // scaled beam `beam` at the point and `farBeam` at the far face (lighting.glsl, cloudSlabDiffuse).
 glm::dvec2 slabDiffuse(const SlabMedium& medium, double tt, double tb, double mu0, double beam,
                        double farBeam);
-// The slab model's ambient term per unit ambient radiance toward -d at x (lighting.glsl,
-// cloudSlabAmbient): the δ-Eddington slab lit by uniform diffuse radiance on both faces, optical depths
-// σ·(1 - h)·H above x and σ·h·H below.
-double slabAmbientTerm(const Model& m, const glm::dvec3& x, const glm::dvec3& d, double sigma, double h);
-// The slab model's sun term per unit illuminance toward -d at x (lighting.glsl, cloudSlabSunTerm): τ
-// the sun's optical depth, σ the extinction and h the height fraction at x.
-double slabSunTerm(const Model& m, const glm::dvec3& x, const glm::dvec3& d, double sigma, double h,
-                   double tau);
+// The slab model's ambient term per unit ambient radiance toward -d at a sample whose slab normal is n
+// (lighting.glsl, cloudSlabAmbient): the δ-Eddington slab lit by uniform diffuse radiance on both faces,
+// optical depths σ·(1 - h)·H above the sample and σ·h·H below.
+double slabAmbientTerm(const Model& m, const glm::dvec3& n, const glm::dvec3& d, double sigma, double h);
+// The slab model's sun term per unit illuminance toward -d at a sample whose slab normal is n
+// (lighting.glsl, cloudSlabSunTerm): τ the sun's optical depth, σ the extinction and h the height
+// fraction there.
+double slabSunTerm(const Model& m, glm::dvec3 n, const glm::dvec3& d, double sigma, double h, double tau);
+// The slab's unit normal at x: up (flat layer), the planet's radial direction (curved), the box's y.
+glm::dvec3 slabNormal(const Model& m, const glm::dvec3& x);
 // The dual-lobe phase for view direction d, asymmetries times `scale` [1/sr].
 double phase(const Model& m, const glm::dvec3& d, double scale);
 // The radiance per unit scattering coefficient at x toward -d (lighting.glsl, cloudInScattered), the sun's
