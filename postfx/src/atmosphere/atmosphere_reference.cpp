@@ -1,6 +1,9 @@
 // The atmosphere's reference integrals (atmosphere_reference.h; docs/effects/atmosphere.md, "Reference").
 #include "atmosphere/atmosphere_reference.h"
 
+#include "atmosphere/atmosphere_orders.h"
+#include "atmosphere/atmosphere_parallel.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -122,27 +125,6 @@ void psiForSuns(const Model& m, double r, std::span<const double> muS, const Psi
     fms /= count;
     for (size_t k = 0; k < suns; ++k)
         out[k] = (l2[k] / count) / (glm::dvec3(1.0) - fms);  // Σ_k f_ms^k = 1/(1 - f_ms), f_ms < 1 (eq. 9)
-}
-
-// Runs task(i) for i in [0, count) on `threads` threads (0: all hardware threads).
-template <class Task>
-void parallelFor(uint32_t count, uint32_t threads, const Task& task) {
-    std::atomic<uint32_t> next{0};
-    auto work = [&] {
-        for (uint32_t i; (i = next.fetch_add(1)) < count;)
-            task(i);
-    };
-    threads = std::min(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), count);
-    std::vector<std::thread> pool;
-    try {
-        for (uint32_t t = 1; t < threads; ++t)
-            pool.emplace_back(work);
-    } catch (const std::exception&) {
-        // Fewer threads than asked for: the ones running (and this one) do all the work.
-    }
-    work();
-    for (std::thread& t : pool)
-        t.join();
 }
 
 double clamp01(double x) {
@@ -283,7 +265,9 @@ ViewRayResult integrateViewRay(const Model& m, const glm::dvec3& origin, const g
                                     : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
         // In-scattered radiance per unit length at p, per unit illuminance.
         glm::dvec3 S = tSun * (md.rayleighScattering * phaseR + md.mieScattering * phaseM);
-        if (o.multipleScattering) {
+        if (o.multipleScattering && o.ordersTable) {
+            S += o.ordersTable->source(p, dir, sun.toSun);
+        } else if (o.multipleScattering) {
             const double muS = glm::dot(p / r, sun.toSun);
             S += md.scattering *
                  (o.psiTable ? o.psiTable->at(r, muS) : multipleScatteringPsi(m, r, muS, o.psi));
@@ -297,7 +281,10 @@ ViewRayResult integrateViewRay(const Model& m, const glm::dvec3& origin, const g
         const glm::dvec3 tSun = o.transmittanceTable
                                     ? o.transmittanceTable->sun(p, sun.toSun)
                                     : sunTransmittance(m, p, sun.toSun, o.transmittanceSteps);
-        L += T * tSun * nDotL * m.groundAlbedo / kPi;
+        glm::dvec3 E = tSun * nDotL;
+        if (o.multipleScattering && o.ordersTable)
+            E += o.ordersTable->groundIrradiance(glm::dot(glm::normalize(p), sun.toSun));
+        L += T * E * m.groundAlbedo / kPi;
     }
     res.luminance = L * sun.illuminance;
     res.transmittance = T;

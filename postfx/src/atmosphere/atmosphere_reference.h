@@ -17,6 +17,8 @@
 
 namespace postfx::atmosphere {
 
+class OrdersTable;  // atmosphere_orders.h
+
 // τ = ∫ σt dt from `origin` along `dir` to where the ray leaves the atmosphere or meets the ground, `steps`
 // midpoint steps over that segment [1]; 0 when the ray misses the atmosphere.
 glm::dvec3 opticalDepth(const Model& m, const glm::dvec3& origin, const glm::dvec3& dir, uint32_t steps);
@@ -150,6 +152,9 @@ struct ViewRayOptions {
     // `transmittanceTable` (transmittanceSteps unused), Ψ from `psiTable` (psi unused). Not owned.
     const TransmittanceTable* transmittanceTable = nullptr;
     const PsiTable* psiTable = nullptr;
+    // The "orders" model instead of Ψ (multipleScattering on): J≥2 from `ordersTable` at each sample, and
+    // the ground lit by the sky (its E≥2) where the ray ends on it. Not owned.
+    const OrdersTable* ordersTable = nullptr;
 };
 
 // Luminance reaching `origin` along `dir` [cd/m² for illuminance in lux] and the transmittance of the
