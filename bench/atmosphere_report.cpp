@@ -85,6 +85,12 @@ const std::vector<std::string>& atmosphereCsvColumns() {
         "value",
         "transmittance_size",
         "transmittance_steps",
+        "multiple_scattering",
+        "orders_size",
+        "orders_azimuths",
+        "orders_directions",
+        "orders_steps",
+        "orders",
         "ms_size",
         "ms_directions",
         "ms_steps",
@@ -103,6 +109,7 @@ const std::vector<std::string>& atmosphereCsvColumns() {
         "gpu_ms_max",
         "transmittance_ms",
         "multiple_scattering_ms",
+        "scattering_orders_ms",
         "sky_view_ms",
         "aerial_perspective_ms",
         "apply_ms",
@@ -180,7 +187,7 @@ bool writeAtmosphereMarkdown(const std::string& path, const AtmosphereInfo& info
         out << ".\n\n";
     }
 
-    out << "## Targets\n\nIssue 19 on the H100 at 1920×1080: each the slowest view's row at postfx's default "
+    out << "## Targets\n\nOn the H100 at 1920×1080: each the slowest view's row at postfx's default "
            "settings; this run: "
         << run.device << ", " << run.width << "×" << run.height << ".";
     if (run.width != 1920 || run.height != 1080)

@@ -116,24 +116,40 @@ const char* situationName(AtmosphereSituation situation) {
 }
 
 const std::vector<std::string>& atmosphereKnobs() {
-    static const std::vector<std::string> knobs = {
-        "transmittance_size", "transmittance_steps", "ms_size", "ms_directions",     "ms_steps",
-        "sky_view_size",      "sky_view_steps",      "ap_size", "ap_steps_per_slice"};
+    static const std::vector<std::string> knobs = {"transmittance_size",
+                                                   "transmittance_steps",
+                                                   "multiple_scattering",
+                                                   "orders_size",
+                                                   "orders_azimuths",
+                                                   "orders_directions",
+                                                   "orders_steps",
+                                                   "orders",
+                                                   "ms_size",
+                                                   "ms_directions",
+                                                   "ms_steps",
+                                                   "sky_view_size",
+                                                   "sky_view_steps",
+                                                   "ap_size",
+                                                   "ap_steps_per_slice"};
     return knobs;
 }
 
 AtmosphereSweepOptions defaultAtmosphereSweep(bool quick) {
     AtmosphereSweepOptions o;
     if (quick) {
-        o.values = {{"transmittance_size", {"64x16"}},
-                    {"transmittance_steps", {"10"}},
-                    {"ms_directions", {"16"}},
-                    {"sky_view_size", {"96x54"}},
-                    {"ap_size", {"16"}}};
+        o.values = {{"transmittance_size", {"64x16"}},     {"transmittance_steps", {"10"}},
+                    {"multiple_scattering", {"hillaire"}}, {"ms_directions", {"16"}},
+                    {"sky_view_size", {"96x54"}},          {"ap_size", {"16"}}};
         return o;
     }
     o.values = {{"transmittance_size", {"64x16", "128x32", "256x64", "512x128"}},
                 {"transmittance_steps", {"10", "20", "40", "80"}},
+                {"multiple_scattering", {"off", "hillaire", "orders"}},
+                {"orders_size", {"16", "32", "64"}},
+                {"orders_azimuths", {"4", "8", "16"}},
+                {"orders_directions", {"144", "256", "576"}},
+                {"orders_steps", {"16", "32", "64"}},
+                {"orders", {"4", "8", "16"}},
                 {"ms_size", {"16", "32", "64"}},
                 {"ms_directions", {"16", "64", "256"}},
                 {"ms_steps", {"10", "20", "40"}},
@@ -155,9 +171,28 @@ bool applyAtmosphereKnob(postfx::AtmosphereSettings& s, const std::string& knob,
     } else if (knob == "sky_view_size") {
         ok = parseSize2(value, size);
         if (ok) s.skyViewLutSize = size;
-    } else if (knob == "ms_size") {
+    } else if (knob == "multiple_scattering") {
+        using M = postfx::AtmosphereMultipleScattering;
+        ok = value == "off" || value == "hillaire" || value == "orders";
+        if (ok)
+            s.multipleScattering = value == "off" ? M::Off : value == "hillaire" ? M::Hillaire : M::Orders;
+    } else if (knob == "orders_size") {
+        ok = parseUint(value, n);
+        if (ok) s.scatteringOrdersLutSize = postfx::UVec3(n, n, n / 2);
+    } else if (knob == "orders" || knob == "orders_azimuths" || knob == "orders_directions" ||
+               knob == "orders_steps") {
+        ok = parseUint(value, n);
+        if (ok) {
+            uint32_t& field = knob == "orders"              ? s.scatteringOrders
+                              : knob == "orders_azimuths"   ? s.scatteringOrdersAzimuthSize
+                              : knob == "orders_directions" ? s.scatteringOrdersDirections
+                                                            : s.scatteringOrdersSteps;
+            field = n;
+        }
+    } else if (knob == "ms_size") {  // the ms_* knobs set Hillaire's model, whose LUT they size
         ok = parseUint(value, n);
         if (ok) s.multipleScatteringLutSize = postfx::UVec2(n);
+        s.multipleScattering = postfx::AtmosphereMultipleScattering::Hillaire;
     } else if (knob == "ap_size") {
         ok = parseUint(value, n);
         if (ok) s.aerialPerspectiveLutSize = postfx::UVec3(n);
@@ -165,6 +200,8 @@ bool applyAtmosphereKnob(postfx::AtmosphereSettings& s, const std::string& knob,
                knob == "sky_view_steps" || knob == "ap_steps_per_slice") {
         ok = parseUint(value, n);
         if (ok) {
+            if (knob == "ms_directions" || knob == "ms_steps")
+                s.multipleScattering = postfx::AtmosphereMultipleScattering::Hillaire;
             uint32_t& field = knob == "transmittance_steps" ? s.transmittanceSteps
                               : knob == "ms_directions"     ? s.multipleScatteringDirections
                               : knob == "ms_steps"          ? s.multipleScatteringSteps
@@ -187,6 +224,17 @@ bool applyAtmosphereKnob(postfx::AtmosphereSettings& s, const std::string& knob,
 std::string atmosphereKnobValue(const postfx::AtmosphereSettings& s, const std::string& knob) {
     if (knob == "transmittance_size") return size2(s.transmittanceLutSize);
     if (knob == "sky_view_size") return size2(s.skyViewLutSize);
+    if (knob == "multiple_scattering") {
+        using M = postfx::AtmosphereMultipleScattering;
+        return s.multipleScattering == M::Off        ? "off"
+               : s.multipleScattering == M::Hillaire ? "hillaire"
+                                                     : "orders";
+    }
+    if (knob == "orders_size") return std::to_string(s.scatteringOrdersLutSize.x);
+    if (knob == "orders") return std::to_string(s.scatteringOrders);
+    if (knob == "orders_azimuths") return std::to_string(s.scatteringOrdersAzimuthSize);
+    if (knob == "orders_directions") return std::to_string(s.scatteringOrdersDirections);
+    if (knob == "orders_steps") return std::to_string(s.scatteringOrdersSteps);
     if (knob == "ms_size") return std::to_string(s.multipleScatteringLutSize.x);
     if (knob == "ap_size") return std::to_string(s.aerialPerspectiveLutSize.x);
     if (knob == "transmittance_steps") return std::to_string(s.transmittanceSteps);

@@ -158,14 +158,22 @@ public:
                 error = "readPassTimings(" + std::to_string(frameIndex) + "): " + s.message;
                 return false;
             }
+            // A pass recorded several times in a frame (one per scattering order) counts once, summed.
             double total = 0.0;
+            std::vector<std::pair<std::string, double>> frameSums;
             for (const postfx::PassTiming& t : timings) {
                 if (include && !include(t.name)) continue;
-                auto it = std::find_if(passes.begin(), passes.end(),
+                auto it = std::find_if(frameSums.begin(), frameSums.end(),
                                        [&](const auto& p) { return p.first == t.name; });
-                if (it == passes.end()) it = passes.insert(passes.end(), {t.name, {}});
-                it->second.push_back(t.milliseconds);
+                if (it == frameSums.end()) it = frameSums.insert(frameSums.end(), {t.name, 0.0});
+                it->second += t.milliseconds;
                 total += t.milliseconds;
+            }
+            for (const auto& [name, ms] : frameSums) {
+                auto it = std::find_if(passes.begin(), passes.end(),
+                                       [&](const auto& p) { return p.first == name; });
+                if (it == passes.end()) it = passes.insert(passes.end(), {name, {}});
+                it->second.push_back(ms);
             }
             totals.push_back(total);
             return true;

@@ -6,6 +6,7 @@
 // results.md and plot.svg. With --froxel: the froxel fog's sweep beside the ray-marched fog instead
 // (bench/froxel_run.h).
 #include "atmosphere_run.h"
+#include "atmosphere_truth.h"
 #include "clouds_run.h"
 #include "clouds_slabs.h"
 #include "conclusions.h"
@@ -173,6 +174,13 @@ const char* kUsage =
     "homogeneous layers (optical depth 0.5-50, albedo 0.9-1, g 0.2-0.8, three suns, three views) against\n"
     "the path-traced truth; --out [docs/accuracy-cost/clouds-slabs], --quick.\n"
     "  --clouds-slab-paths N  paths per case [20000; quick: 200]\n"
+    "\n"
+    "the sky against the path tracer (--atmosphere-truth; CPU only): the path-traced sky of every view of\n"
+    "the atmosphere's truth table (five altitudes, five suns, seven view zeniths, three azimuths, ground\n"
+    "albedo 0 and 0.3, Earth's media and a hazy one), each until its standard error is below the target;\n"
+    "--out [tests/atmosphere/data/path_traced_sky.csv].\n"
+    "  --truth-target E      relative standard error per channel [0.0025; quick: 0.05]\n"
+    "  --truth-max-paths N   paths per channel at most [4000000; quick: 20000]\n"
     "                         quick also shrinks the shadow map to 64x64\n"
     "\n"
     "whole frame (--frame; docs/accuracy-cost/README.md, \"Whole frame (--frame)\"): the showcase scene\n"
@@ -233,6 +241,9 @@ struct Args {
     int64_t cloudsTruthPaths = -1;                                                     // < 0: the default
     bool cloudsSlabs = false;                                                          // --clouds-slabs
     uint32_t cloudsSlabPaths = 0;                                                      // 0: the default
+    bool atmosphereTruth = false;                                                      // --atmosphere-truth
+    double truthTarget = 0.0;                                                          // 0: the default
+    uint32_t truthMaxPaths = 0;                                                        // 0: the default
     uint32_t cloudsTruthStride = 0;  // 0: 4 × the error stride
     // --frame
     bool frame = false;
@@ -413,6 +424,16 @@ Args parseArgs(int argc, char** argv) {
             args.clouds = true;
         } else if (a == "--clouds-slabs") {
             args.cloudsSlabs = true;
+        } else if (a == "--atmosphere-truth") {
+            args.atmosphereTruth = true;
+        } else if (a == "--truth-target") {
+            const std::string v = value();
+            char* end = nullptr;
+            args.truthTarget = std::strtod(v.c_str(), &end);
+            if (end == v.c_str() || *end || !(args.truthTarget > 0.0 && args.truthTarget < 1.0))
+                throw cli::UsageError{"--truth-target '" + v + "': expected a number in (0, 1)"};
+        } else if (a == "--truth-max-paths") {
+            cli::uintOption(a, value(), 1000, 1u << 30, args.truthMaxPaths);
         } else if (a == "--clouds-slab-paths") {
             cli::uintOption(a, value(), 2, 1u << 24, args.cloudsSlabPaths);
         } else if (a == "--clouds-views") {
@@ -533,10 +554,17 @@ Args parseArgs(int argc, char** argv) {
             throw cli::UsageError{"--froxel-target-scene '" + args.froxelTargetScene +
                                   "' is not in --scenes"};
     }
-    if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) + int(args.frame) + int(args.cloudsSlabs) >
+    if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) + int(args.frame) + int(args.cloudsSlabs) +
+            int(args.atmosphereTruth) >
         1)
         throw cli::UsageError{
-            "--froxel, --atmosphere, --clouds, --clouds-slabs and --frame: one mode at a time"};
+            "--froxel, --atmosphere, --atmosphere-truth, --clouds, --clouds-slabs and --frame: "
+            "one mode at a time"};
+    if (args.atmosphereTruth) {
+        if (!outGiven) args.out = "tests/atmosphere/data/path_traced_sky.csv";
+        if (args.truthTarget == 0.0) args.truthTarget = quick ? 0.05 : 0.0025;
+        if (args.truthMaxPaths == 0) args.truthMaxPaths = quick ? 20000 : 4000000;
+    }
     if (args.cloudsSlabs) {
         if (!outGiven) args.out = "docs/accuracy-cost/clouds-slabs";
         if (args.cloudsSlabPaths == 0) args.cloudsSlabPaths = quick ? 200 : 20000;
@@ -754,6 +782,14 @@ int run(const Args& args, const std::string& command) {
     if (args.frame) return runFrame(args, command);
     if (args.froxel) return runFroxel(args, command);
     if (args.clouds) return runClouds(args, command);
+    if (args.atmosphereTruth) {
+        bench::AtmosphereTruthArgs a;
+        a.targetError = args.truthTarget;
+        a.maxPaths = args.truthMaxPaths;
+        a.batchPaths = std::min<uint64_t>(a.batchPaths, a.maxPaths);
+        a.out = args.out;
+        return bench::runAtmosphereTruth(a, command, utcNow());
+    }
     if (args.cloudsSlabs) {
         bench::CloudsSlabsArgs a;
         a.paths = args.cloudsSlabPaths;

@@ -31,6 +31,11 @@ constexpr const char* kAtmosphereKeys[] = {"enabled",
                                            "multiple_scattering_lut_size",
                                            "multiple_scattering_directions",
                                            "multiple_scattering_steps",
+                                           "scattering_orders_lut_size",
+                                           "scattering_orders_azimuth_size",
+                                           "scattering_orders_directions",
+                                           "scattering_orders_steps",
+                                           "scattering_orders",
                                            "sky_view_lut_size",
                                            "sky_view_steps",
                                            "aerial_perspective_lut_size",
@@ -39,6 +44,20 @@ constexpr const char* kAtmosphereKeys[] = {"enabled",
 
 json rgb(const postfx::Vec3& v) {
     return vec3(glm::vec3(v));
+}
+
+// "off", "hillaire" or "orders"; true and false (older scene files) read as "orders" and "off".
+postfx::AtmosphereMultipleScattering readModel(const json& j, const std::string& path) {
+    using M = postfx::AtmosphereMultipleScattering;
+    if (j == "off" || j == false) return M::Off;
+    if (j == "hillaire") return M::Hillaire;
+    if (j == "orders" || j == true) return M::Orders;
+    fail(path, "expected \"off\", \"hillaire\" or \"orders\"" + got(j));
+}
+
+const char* modelName(postfx::AtmosphereMultipleScattering m) {
+    using M = postfx::AtmosphereMultipleScattering;
+    return m == M::Off ? "off" : m == M::Hillaire ? "hillaire" : "orders";
 }
 
 }  // namespace
@@ -61,7 +80,8 @@ postfx::AtmosphereSettings readAtmosphere(const json& j, const std::string& path
     readOptional(j, path, "ozone_center_height", s.ozoneCenterHeight);
     readOptional(j, path, "ozone_half_width", s.ozoneHalfWidth);
     readOptional(j, path, "ground_albedo", s.groundAlbedo);
-    readOptional(j, path, "multiple_scattering", s.multipleScattering);
+    if (const json* v = find(j, "multiple_scattering"))
+        s.multipleScattering = readModel(*v, child(path, "multiple_scattering"));
     readOptional(j, path, "sun_angular_radius_deg", s.sunAngularRadiusDeg);
     readOptional(j, path, "ambient_from_sky", s.ambientFromSky);
     readOptional(j, path, "transmittance_lut_size", s.transmittanceLutSize);
@@ -69,6 +89,11 @@ postfx::AtmosphereSettings readAtmosphere(const json& j, const std::string& path
     readOptional(j, path, "multiple_scattering_lut_size", s.multipleScatteringLutSize);
     readOptional(j, path, "multiple_scattering_directions", s.multipleScatteringDirections);
     readOptional(j, path, "multiple_scattering_steps", s.multipleScatteringSteps);
+    readOptional(j, path, "scattering_orders_lut_size", s.scatteringOrdersLutSize);
+    readOptional(j, path, "scattering_orders_azimuth_size", s.scatteringOrdersAzimuthSize);
+    readOptional(j, path, "scattering_orders_directions", s.scatteringOrdersDirections);
+    readOptional(j, path, "scattering_orders_steps", s.scatteringOrdersSteps);
+    readOptional(j, path, "scattering_orders", s.scatteringOrders);
     readOptional(j, path, "sky_view_lut_size", s.skyViewLutSize);
     readOptional(j, path, "sky_view_steps", s.skyViewSteps);
     readOptional(j, path, "aerial_perspective_lut_size", s.aerialPerspectiveLutSize);
@@ -95,7 +120,7 @@ json atmosphereToJson(const postfx::AtmosphereSettings& s) {
         {"ozone_center_height", number(s.ozoneCenterHeight)},
         {"ozone_half_width", number(s.ozoneHalfWidth)},
         {"ground_albedo", rgb(s.groundAlbedo)},
-        {"multiple_scattering", s.multipleScattering},
+        {"multiple_scattering", modelName(s.multipleScattering)},
         {"sun_angular_radius_deg", number(s.sunAngularRadiusDeg)},
         {"ambient_from_sky", s.ambientFromSky},
         {"transmittance_lut_size", {s.transmittanceLutSize.x, s.transmittanceLutSize.y}},
@@ -103,6 +128,12 @@ json atmosphereToJson(const postfx::AtmosphereSettings& s) {
         {"multiple_scattering_lut_size", {s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y}},
         {"multiple_scattering_directions", s.multipleScatteringDirections},
         {"multiple_scattering_steps", s.multipleScatteringSteps},
+        {"scattering_orders_lut_size",
+         {s.scatteringOrdersLutSize.x, s.scatteringOrdersLutSize.y, s.scatteringOrdersLutSize.z}},
+        {"scattering_orders_azimuth_size", s.scatteringOrdersAzimuthSize},
+        {"scattering_orders_directions", s.scatteringOrdersDirections},
+        {"scattering_orders_steps", s.scatteringOrdersSteps},
+        {"scattering_orders", s.scatteringOrders},
         {"sky_view_lut_size", {s.skyViewLutSize.x, s.skyViewLutSize.y}},
         {"sky_view_steps", s.skyViewSteps},
         {"aerial_perspective_lut_size",

@@ -64,8 +64,14 @@ bool buildMedia(postfx::AtmosphereSettings& a, const postfx::AtmosphereSettings&
     tooltip("ozone's absorption, times the scene file's: the blue of the sky at twilight");
     changed |= ImGui::ColorEdit3("ground albedo", &a.groundAlbedo.x, ImGuiColorEditFlags_Float);
     tooltip("the planet's ground as the atmosphere's multiple scattering sees it (not the scene's objects)");
-    changed |= ImGui::Checkbox("multiple scattering", &a.multipleScattering);
-    ImGui::SameLine();
+    int model = int(a.multipleScattering);
+    if (ImGui::Combo("multiple scattering", &model, "off\0hillaire\0orders\0")) {
+        a.multipleScattering = postfx::AtmosphereMultipleScattering(model);
+        changed = true;
+    }
+    tooltip(
+        "orders: every order of scattering, within 2% of a path tracer (its LUT rebuilt when the media "
+        "change); hillaire: the paper's isotropic approximation, too dark at the horizon");
     changed |= ImGui::Checkbox("ambient from sky", &a.ambientFromSky);
     tooltip(
         "the surfaces' ambient is the sky's irradiance / pi instead of the scene's (recomputed on the CPU, "

@@ -18,7 +18,7 @@ layout(local_size_x = kAtmosphereApGroupSize) in;
 
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
-layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
+layout(binding = kAtmosphereBindingMultiScattering) uniform sampler3D multiScatteringLut;
 layout(binding = kAtmosphereBindingApScattering, rgba16f) uniform writeonly image3D apScatteringOut;
 layout(binding = kAtmosphereBindingApTransmittance,
        rgba16f) uniform writeonly image2DArray apTransmittanceOut;

@@ -14,7 +14,7 @@ layout(local_size_x = kAtmosphereApplyGroupX, local_size_y = kAtmosphereApplyGro
 
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
-layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
+layout(binding = kAtmosphereBindingMultiScattering) uniform sampler3D multiScatteringLut;
 layout(binding = kAtmosphereBindingSkyView) uniform sampler2D skyViewLut;
 layout(binding = kAtmosphereBindingApScattering) uniform sampler3D apScattering;
 layout(binding = kAtmosphereBindingApTransmittance) uniform sampler2DArray apTransmittance;

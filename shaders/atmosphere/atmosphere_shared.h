@@ -20,10 +20,16 @@ PFX_CONST(uint, kAtmosphereApGroupSize, 32);
 PFX_CONST(uint, kAtmosphereSkyViewSplit, 4);
 // The multiple-scattering LUT: one workgroup per texel, one invocation per direction (at most 1024).
 PFX_CONST(uint, kAtmosphereMsGroupSize, 64);
+// The scattering-orders LUT: one workgroup per (sun, height) node, its invocations sharing the directions.
+PFX_CONST(uint, kAtmosphereOrdersGroupSize, 64);
+PFX_CONST(uint, kAtmosphereOrdersMaxDirections, 576);  // 24×24: the shared memory of lavapipe
 
-PFX_CONST(uint, kAtmosphereBindingUniforms, 0);         // uniform buffer: AtmosphereUniforms
-PFX_CONST(uint, kAtmosphereBindingTransmittance, 1);    // rgba16f 2D: T to the top (r, μ)
-PFX_CONST(uint, kAtmosphereBindingMultiScattering, 2);  // rgba16f 2D: Ψ per unit illuminance (μs, r)
+PFX_CONST(uint, kAtmosphereBindingUniforms, 0);       // uniform buffer: AtmosphereUniforms
+PFX_CONST(uint, kAtmosphereBindingTransmittance, 1);  // rgba16f 2D: T to the top (r, μ)
+// rgba16f 3D: the multiple-scattering LUT, "hillaire": Ψ per unit illuminance at (μs, r, 0); "orders": the
+// scattering-orders LUT (orders_lookup.glsl): ΨR, ΨM at (μ + azimuth·μ nodes, μs, height + {0, height
+// nodes}) and the ground's E≥2 at (any, μs, 2·height nodes)
+PFX_CONST(uint, kAtmosphereBindingMultiScattering, 2);
 // rgba16f 2D: sky luminance per unit illuminance, one mapping for every altitude (model.glsl,
 // skyViewParams; atmosphere.md#high-up-and-in-space)
 PFX_CONST(uint, kAtmosphereBindingSkyView, 3);
@@ -32,12 +38,16 @@ PFX_CONST(uint, kAtmosphereBindingApTransmittance, 5);  // rgba16f 2D array, lay
 PFX_CONST(uint, kAtmosphereBindingColorIn, 6);          // storage image: host color (read)
 PFX_CONST(uint, kAtmosphereBindingColorOut, 7);         // storage image: output
 PFX_CONST(uint, kAtmosphereBindingDepth, 8);            // sampler2D: host depth (texelFetch)
+PFX_CONST(uint, kAtmosphereBindingOrdersIn, 9);         // sampler3D: order n of the orders LUT's layout
+PFX_CONST(uint, kAtmosphereBindingOrdersOut, 10);       // rgba16f 3D: order n + 1
 
 // Flags in AtmosphereUniforms.flags.x
 PFX_CONST(uint, kAtmosphereFlagMultipleScattering, 1u);  // add σs·Ψ (Hillaire eq. 10)
 PFX_CONST(uint, kAtmosphereFlagDepthReversedZ, 2u);
 // The apply pass's depth binding holds postfx.view_distance's surface distances, not the host's depth.
 PFX_CONST(uint, kAtmosphereFlagViewDistance, 4u);
+// Orders >= 2 from the scattering-orders LUT (J = σR·ΨR + σM·ΨM, the ground lit by E≥2) instead of σs·Ψ.
+PFX_CONST(uint, kAtmosphereFlagScatteringOrders, 8u);
 
 // The sky-view LUT's mapping above the top (atmosphere.md#high-up-and-in-space): the span D of its sky
 // half's zenith angles falls from Z = π - β at the top to αt - β at this fraction of the atmosphere's
@@ -87,14 +97,23 @@ struct AtmosphereUniforms {
     vec4 applyAp;  // x: 1 / the AP distance, y: the AP's slices, z: 0.5 / slices, w: slice length [m]
     uvec4 transmittanceLut;  // xy: size, z: steps
     uvec4 msLut;             // xy: size, z: directions per side (n of n×n), w: steps
+    uvec4 ordersLut;         // nodes of x: cos view zenith, y: cos sun zenith, z: height, w: azimuth
+    uvec4 ordersMarch;       // x: directions per side (n of n×n), y: steps per direction
     uvec4 skyViewLut;        // xy: size, z: steps
     uvec4 apLut;             // xyz: size, w: steps per slice
     uvec4 extent;            // xy: color extent [px]
     uvec4 flags;             // x: kAtmosphereFlag* bits
 };
 
+// The orders pass's push constants: which order it computes (1: from single scattering) and whether it is
+// the last (it adds the geometric tail).
+struct AtmosphereOrderConstants {
+    uint order;
+    uint last;
+};
+
 #ifdef __cplusplus
-static_assert(sizeof(AtmosphereUniforms) == 3 * 64 + 24 * 16, "AtmosphereUniforms must match std140");
+static_assert(sizeof(AtmosphereUniforms) == 3 * 64 + 26 * 16, "AtmosphereUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

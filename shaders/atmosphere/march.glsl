@@ -1,6 +1,7 @@
 // The atmosphere's march along a view ray (docs/effects/atmosphere.md, "Passes"): single scattering with
-// the exact phase functions and the sun's transmittance from the transmittance LUT, plus σs·Ψ from the
-// multiple-scattering LUT (Hillaire eq. 11), each step integrated in closed form (energy-conserving:
+// the exact phase functions and the sun's transmittance from the transmittance LUT, plus the orders >= 2
+// from the multiple-scattering LUT (the orders' J≥2, or Hillaire's σs·Ψ, eq. 11), each step integrated in
+// closed form (energy-conserving:
 // T·S·(1 - e^{-σt·Δ})/σt). Expects `atmo`, model.glsl, common/integrate.glsl and the samplers
 // `transmittanceLut` and (ATMOSPHERE_MS) `multiScatteringLut`. Luminance per unit sun illuminance.
 #ifndef POSTFX_ATMOSPHERE_MARCH_GLSL
@@ -20,6 +21,27 @@ vec3 atmosphereStepIntegral(vec3 extinction, float dt) {
     return dt * vec3(oneMinusExpOverX(extinction.r * dt), oneMinusExpOverX(extinction.g * dt),
                      oneMinusExpOverX(extinction.b * dt));
 }
+
+#ifdef ATMOSPHERE_MS
+#include "atmosphere/orders_lookup.glsl"
+
+// Orders >= 2 in-scattered at p (radius r) into view direction d, per unit length and illuminance: the
+// scattering-orders LUT's J≥2, Hillaire's σs·Ψ, or none (AtmosphereUniforms flags).
+vec3 multipleScatteringSource(vec3 p, float r, vec3 d, vec3 toSun, AtmosphereMedium m) {
+    if ((atmo.flags.x & kAtmosphereFlagScatteringOrders) != 0u)
+        return ordersSource(multiScatteringLut, p, r, d, toSun, m);
+    if ((atmo.flags.x & kAtmosphereFlagMultipleScattering) == 0u) return vec3(0.0);
+    vec2 uv = multipleScatteringUv(dot(p, toSun) / r, r);
+    return m.scattering * textureLod(multiScatteringLut, vec3(uv, 0.5), 0.0).rgb / atmo.skyView.w;
+}
+
+// The ground's irradiance from the sky per unit sun illuminance (the orders' E≥2; 0 otherwise) at a
+// ground point whose zenith makes cosine muS with the sun.
+vec3 skyGroundIrradiance(float muS) {
+    if ((atmo.flags.x & kAtmosphereFlagScatteringOrders) == 0u) return vec3(0.0);
+    return ordersGroundIrradiance(multiScatteringLut, muS);
+}
+#endif
 
 struct AtmosphereMarch {
     vec3 luminance;      // per unit illuminance [cd/m² per lux]
@@ -51,10 +73,7 @@ AtmosphereMarch atmosphereMarchPart(vec3 o, vec3 d, float tBegin, float tEnd, ui
         AtmosphereMedium m = atmosphereMedium(r - atmo.radii.x);
         vec3 S = sunTransmittanceAt(p, toSun) * (m.rayleighScattering * phaseR + m.mieScattering * phaseM);
 #ifdef ATMOSPHERE_MS
-        if ((atmo.flags.x & kAtmosphereFlagMultipleScattering) != 0u)
-            S += m.scattering *
-                 textureLod(multiScatteringLut, multipleScatteringUv(dot(p, toSun) / r, r), 0.0).rgb /
-                 atmo.skyView.w;
+        S += multipleScatteringSource(p, r, d, toSun, m);
 #endif
         result.luminance += result.transmittance * S * atmosphereStepIntegral(m.extinction, dt);
         result.transmittance *= exp(-m.extinction * dt);

@@ -13,7 +13,7 @@ layout(local_size_x = kAtmosphereMsGroupSize) in;
 
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
-layout(binding = kAtmosphereBindingMultiScattering, rgba16f) uniform writeonly image2D multiScatteringOut;
+layout(binding = kAtmosphereBindingMultiScattering, rgba16f) uniform writeonly image3D multiScatteringOut;
 
 #include "common/integrate.glsl"
 #include "atmosphere/model.glsl"
@@ -74,6 +74,6 @@ void main() {
         vec3 meanL2 = sharedL2[0] / count, meanFms = sharedFms[0] / count;
         // Σ_k f_ms^k = 1 / (1 - f_ms) (eq. 9); f_ms < 1 in any medium that absorbs or lets light escape.
         vec3 psi = meanL2 / max(vec3(1.0) - meanFms, vec3(1e-6));
-        imageStore(multiScatteringOut, ivec2(texel), vec4(min(psi * atmo.skyView.w, vec3(65504.0)), 1.0));
+        imageStore(multiScatteringOut, ivec3(texel, 0), vec4(min(psi * atmo.skyView.w, vec3(65504.0)), 1.0));
     }
 }

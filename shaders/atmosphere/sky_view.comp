@@ -15,7 +15,7 @@ layout(local_size_x = kAtmosphereGroupSize, local_size_y = kAtmosphereGroupSize,
 
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanceLut;
-layout(binding = kAtmosphereBindingMultiScattering) uniform sampler2D multiScatteringLut;
+layout(binding = kAtmosphereBindingMultiScattering) uniform sampler3D multiScatteringLut;
 layout(binding = kAtmosphereBindingSkyView, rgba16f) uniform writeonly image2D skyViewOut;
 
 #define ATMOSPHERE_MS
@@ -58,13 +58,14 @@ void main() {
         L += T * partL[i][slot];
         T *= partT[i][slot];
     }
-    // A ray that ends on the ground adds the ground's Lambertian reflection of the sun seen through the air:
-    // T·Tsun·max(0, n·s)·albedo/π (the apply pass reads it with the sky; the ground lit by the sky is not
-    // modelled, as in the paper).
+    // A ray that ends on the ground adds the ground's Lambertian reflection seen through the air:
+    // T·(Tsun·max(0, n·s) + E≥2)·albedo/π (the apply pass reads it with the sky). E≥2, the ground lit by
+    // the sky, comes with the scattering orders; Hillaire's model leaves it out, as the paper does.
     if (seg.z != 0.0) {
         vec3 q = origin + seg.y * dir;
-        float nDotL = max(0.0, dot(normalize(q), toSun));
-        L += T * sunTransmittanceAt(q, toSun) * nDotL * atmo.albedo.rgb / kAtmospherePi;
+        float muG = dot(normalize(q), toSun);
+        vec3 E = sunTransmittanceAt(q, toSun) * max(0.0, muG) + skyGroundIrradiance(muG);
+        L += T * E * atmo.albedo.rgb / kAtmospherePi;
     }
     imageStore(skyViewOut, ivec2(texel), vec4(min(L * atmo.skyView.w, vec3(65504.0)), 1.0));
 }

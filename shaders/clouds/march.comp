@@ -42,7 +42,7 @@ layout(binding = kCloudBindingAtmosphere, std140) uniform Atmosphere {
 layout(binding = kCloudBindingTransmittanceLut) uniform sampler2D transmittanceLut;
 layout(binding = kCloudBindingApScattering) uniform sampler3D apScattering;
 layout(binding = kCloudBindingApTransmittance) uniform sampler2DArray apTransmittance;
-layout(binding = kCloudBindingMultiScattering) uniform sampler2D multiScatteringLut;
+layout(binding = kCloudBindingMultiScattering) uniform sampler3D multiScatteringLut;
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
 #include "atmosphere/model.glsl"

@@ -4,6 +4,8 @@
 // model per pixel, and the camera crossing the atmosphere's top. Small images on lavapipe.
 #include "atmosphere/atmosphere_effect.h"
 #include "atmosphere/atmosphere_model.h"
+#include "atmosphere/atmosphere_orders.h"
+#include "atmosphere/atmosphere_path_tracer.h"
 #include "atmosphere/atmosphere_reference.h"
 #include "atmosphere_reference_image.h"
 #include "core/barriers.h"
@@ -18,6 +20,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -64,6 +67,16 @@ protected:
 
     LutImage readLut(const char* name) { return {readLutTexels(*host, gpu, *context, name)}; }
 
+    // A scattering-orders LUT small enough for lavapipe (the reference's table is as small:
+    // atmosphere_reference_image.h).
+    static void smallOrders(postfx::AtmosphereSettings& s) {
+        s.scatteringOrdersLutSize = {16, 16, 8};
+        s.scatteringOrdersAzimuthSize = 4;
+        s.scatteringOrdersDirections = 144;
+        s.scatteringOrdersSteps = 24;
+        s.scatteringOrders = 4;
+    }
+
     postfx::FrameInfo skyFrame(double sunElevationDeg) const {
         postfx::FrameInfo frame;
         frame.atmosphere.enabled = true;
@@ -75,18 +88,56 @@ protected:
     }
 };
 
-// Each transmittance texel against exp(-τ) of its (r, μ) marched with 4096 steps in double: the LUT's
-// 40 midpoint steps and its half-float storage.
+// The transmittance LUT as its readers sample it (bilinear at transmittanceUvFromParams) against exp(-τ)
+// marched with 4096 steps in double, from the ground, 1 km and 10 km, at zenith angles from 0 to the
+// horizon (95° from 10 km): within 0.5 % wherever T > 1e-4 (the default size and steps).
+TEST_F(AtmosphereGpuTest, TransmittanceLookupsWithinHalfAPercentToTheHorizon) {
+    postfx::FrameInfo frame = skyFrame(30.0);
+    render(frame, images(frame.camera, 8, 4));
+    const LutImage lut = readLut("atmosphere.transmittance");
+    const atm::Model m = atm::modelFrom(frame.atmosphere);
+    const auto texel = [&](int x, int y) {
+        x = std::clamp(x, 0, int(lut.width) - 1);
+        y = std::clamp(y, 0, int(lut.height) - 1);
+        return glm::dvec3(lut.at(uint32_t(x), uint32_t(y)));
+    };
+    double worst = 0.0;
+    for (const double altitude : {0.0, 1000.0, 10000.0})
+        for (double zenith = 0.0; zenith <= 95.0; zenith += 0.5) {
+            const double r = m.groundRadius + altitude, mu = std::cos(glm::radians(zenith));
+            if (atm::rayIntersectsGround(m, r, mu)) continue;
+            const glm::dvec2 uv = atm::transmittanceUvFromParams(m, r, mu, {lut.width, lut.height});
+            const glm::dvec2 f = uv * glm::dvec2(lut.width, lut.height) - 0.5;
+            const glm::ivec2 i0(glm::floor(f));
+            const glm::dvec2 a = f - glm::dvec2(i0);
+            const glm::dvec3 lookup =
+                glm::mix(glm::mix(texel(i0.x, i0.y), texel(i0.x + 1, i0.y), a.x),
+                         glm::mix(texel(i0.x, i0.y + 1), texel(i0.x + 1, i0.y + 1), a.x), a.y);
+            const glm::dvec3 dir(std::sqrt(std::max(0.0, 1.0 - mu * mu)), mu, 0.0);
+            const glm::dvec3 ref = atm::transmittanceToEdge(m, {0.0, r, 0.0}, dir, 4096);
+            for (int c = 0; c < 3; ++c) {
+                if (ref[c] < 1e-4) continue;
+                const double rel = std::abs(lookup[c] / ref[c] - 1.0);
+                worst = std::max(worst, rel);
+                EXPECT_LT(rel, 0.005) << altitude << " m, zenith " << zenith << "°, channel " << c;
+            }
+        }
+    std::printf("[ atmosphere ] transmittance lookups, zenith 0-95 deg: largest relative error %.2e\n",
+                worst);
+}
+
+// Transmittance texels against exp(-τ) of their (r, μ) marched with 4096 steps in double: the LUT's
+// midpoint steps and its half-float storage.
 TEST_F(AtmosphereGpuTest, TransmittanceLutMatchesReference) {
     postfx::FrameInfo frame = skyFrame(30.0);
     render(frame, images(frame.camera, 8, 4));
     const LutImage lut = readLut("atmosphere.transmittance");
-    ASSERT_EQ(lut.width, 256u);
-    ASSERT_EQ(lut.height, 64u);
+    ASSERT_EQ(lut.width, 512u);
+    ASSERT_EQ(lut.height, 128u);
     const atm::Model m = atm::modelFrom(frame.atmosphere);
     double worst = 0.0;
-    for (uint32_t y : {0u, 7u, 31u, 63u})
-        for (uint32_t x : {0u, 50u, 128u, 200u, 250u, 254u}) {
+    for (uint32_t y : {0u, 14u, 62u, 127u})
+        for (uint32_t x : {0u, 100u, 256u, 400u, 500u, 509u}) {
             const glm::dvec2 uv((x + 0.5) / lut.width, (y + 0.5) / lut.height);
             const atm::RadiusCosine p = atm::transmittanceParamsFromUv(m, uv, {lut.width, lut.height});
             const glm::dvec3 dir(std::sqrt(std::max(0.0, 1.0 - p.mu * p.mu)), p.mu, 0.0);
@@ -120,6 +171,7 @@ TEST_F(AtmosphereGpuTest, PureRayleighZenithTransmittanceMatchesClosedForm) {
 // Multiple-scattering texels against Ψ (eq. 10) with the same directions and 10× the steps.
 TEST_F(AtmosphereGpuTest, MultipleScatteringLutMatchesReference) {
     postfx::FrameInfo frame = skyFrame(30.0);
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Hillaire;
     render(frame, images(frame.camera, 8, 4));
     const LutImage lut = readLut("atmosphere.multiple_scattering");
     ASSERT_EQ(lut.width, 32u);
@@ -145,13 +197,79 @@ TEST_F(AtmosphereGpuTest, MultipleScatteringLutMatchesReference) {
     std::printf("[ atmosphere ] multiple-scattering LUT: largest relative error %.2e\n", worst);
 }
 
+// Scattering-orders LUT texels (a small LUT) against the CPU table of the same nodes, directions, steps and
+// orders in double (atmosphere_orders.h): what the GPU adds is float arithmetic, the transmittance LUT
+// and half floats. Each node: ΨR and ΨM per channel, and the ground's E≥2.
+TEST_F(AtmosphereGpuTest, ScatteringOrdersLutMatchesReference) {
+    postfx::FrameInfo frame = skyFrame(30.0);
+    smallOrders(frame.atmosphere);
+    render(frame, images(frame.camera, 8, 4));
+    const LutImage lut = readLut("atmosphere.multiple_scattering");
+    const postfx::UVec3 n = frame.atmosphere.scatteringOrdersLutSize;
+    const uint32_t azimuths = frame.atmosphere.scatteringOrdersAzimuthSize;
+    ASSERT_EQ(lut.width, n.x * azimuths);
+    ASSERT_EQ(lut.depth, 2 * n.z + 1);
+    const double scale = atm::lutStorageScale(frame.atmosphere);
+    const atm::Model m = atm::modelFrom(frame.atmosphere);
+    atm::OrdersTableOptions o;
+    o.viewSize = n.x;
+    o.sunSize = n.y;
+    o.radiusSize = n.z;
+    o.azimuthSize = azimuths;
+    o.directions = frame.atmosphere.scatteringOrdersDirections;
+    o.steps = frame.atmosphere.scatteringOrdersSteps;
+    o.orders = frame.atmosphere.scatteringOrders;
+    const atm::OrdersTable table(m, *atm::sharedTransmittanceTable(m), o);
+    const auto cosine = [](uint32_t i, uint32_t size) {
+        const double u = 2.0 * i / (size - 1) - 1.0;
+        return u * std::abs(u);
+    };
+    // Relative errors against the largest value of the channel (Ψ spans decades; the sky is their sum).
+    glm::dvec3 largest(0.0);
+    for (uint32_t z = 0; z < 2 * n.z; ++z)
+        for (uint32_t y = 0; y < n.y; ++y)
+            for (uint32_t x = 0; x < lut.width; ++x)
+                largest = glm::max(largest, glm::dvec3(lut.at(x, y, z)) / scale);
+    double worst = 0.0, worstGround = 0.0;
+    for (uint32_t h = 0; h < n.z; ++h)
+        for (uint32_t s = 0; s < n.y; ++s)
+            for (uint32_t v = 0; v < n.x; ++v)
+                for (uint32_t a = 0; a < azimuths; ++a) {
+                    const double y = double(h) / (n.z - 1);
+                    const double r = m.groundRadius + y * y * (m.topRadius - m.groundRadius);
+                    const double phi = M_PI * a / (azimuths - 1);
+                    const atm::OrdersTable::Psi cpu =
+                        table.at(r, cosine(v, n.x), cosine(s, n.y), std::cos(phi));
+                    const glm::dvec3 gpuR = glm::dvec3(lut.at(v + n.x * a, s, h)) / scale;
+                    const glm::dvec3 gpuM = glm::dvec3(lut.at(v + n.x * a, s, h + n.z)) / scale;
+                    for (int c = 0; c < 3; ++c) {
+                        const double errR = std::abs(gpuR[c] - cpu.rayleigh[c]) /
+                                            std::max(std::abs(cpu.rayleigh[c]), 0.01 * largest[c]);
+                        const double errM = std::abs(gpuM[c] - cpu.mie[c]) /
+                                            std::max(std::abs(cpu.mie[c]), 0.01 * largest[c]);
+                        worst = std::max({worst, errR, errM});
+                    }
+                }
+    for (uint32_t s = 0; s < n.y; ++s) {
+        const glm::dvec3 cpu = table.groundIrradiance(cosine(s, n.y));
+        const glm::dvec3 gpu = glm::dvec3(lut.at(0, s, 2 * n.z)) / scale;
+        for (int c = 0; c < 3; ++c)
+            worstGround = std::max(worstGround, std::abs(gpu[c] - cpu[c]) /
+                                                    std::max(cpu[c], 1e-3 * table.groundIrradiance(1.0)[c]));
+    }
+    std::printf("[ atmosphere ] scattering-orders LUT: largest relative error %.2e (the ground's E %.2e)\n",
+                worst, worstGround);
+    EXPECT_LT(worst, 0.02);
+    EXPECT_LT(worstGround, 0.02);
+}
+
 // Sky-view texels (single scattering, the lit ground) against the view ray marched finely in double, for
 // a camera near the ground, just above the top (the sky half's span between Z and αt - β) and in orbit
 // (αt - β: only the directions that meet the air).
 TEST_F(AtmosphereGpuTest, SkyViewLutMatchesReference) {
     for (double altitude : {100.0, 105e3, 400e3}) {
         postfx::FrameInfo frame = skyFrame(10.0);
-        frame.atmosphere.multipleScattering = false;
+        frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
         // From above the top, rays to the planet's limb cross hundreds of km of air: the paper's 30 steps
         // leave 6.5 % on the sunward limb texel (0, 60) at 105 km, 60 steps 1.7 %. There the test checks
         // the mapping and where the march starts, at 60 steps.
@@ -199,7 +317,7 @@ TEST_F(AtmosphereGpuTest, SkyViewLutMatchesReference) {
 // finely in double to its slice's end (through the planet's sphere, as the LUT's and reference (a)'s).
 TEST_F(AtmosphereGpuTest, AerialPerspectiveLutMatchesReference) {
     postfx::FrameInfo frame = skyFrame(15.0);
-    frame.atmosphere.multipleScattering = false;
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
     frame.camera = lookCamera({0.0, 800.0, 0.0}, {1.0, -0.05, 0.3}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
     render(frame, images(frame.camera, 8, 4));
     const LutImage scattering = readLut("atmosphere.aerial_perspective");
@@ -282,7 +400,7 @@ std::vector<float> referenceImage(const postfx::FrameInfo& frame, const FogHarne
 TEST_F(AtmosphereGpuTest, SkyPixelsMatchReferenceAtSunElevations) {
     for (double elevation : {60.0, 10.0, 2.0, 0.0, -2.0}) {
         postfx::FrameInfo frame = skyFrame(elevation);
-        frame.atmosphere.multipleScattering = false;
+        frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
         frame.atmosphere.sunAngularRadiusDeg = 0.0f;
         frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.1, 0.3}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
         const FogHarnessImages im = images(frame.camera, 16, 8);
@@ -296,29 +414,170 @@ TEST_F(AtmosphereGpuTest, SkyPixelsMatchReferenceAtSunElevations) {
     }
 }
 
-// The same with multiple scattering: the LUTs' Ψ (32×32, 64 directions) against the reference's fine
-// table, noon and sunset.
+// The same with multiple scattering, each model: Hillaire's LUT Ψ (32×32, 64 directions) and a small
+// scattering-orders LUT against the reference's tables, noon and sunset.
 TEST_F(AtmosphereGpuTest, SkyWithMultipleScatteringMatchesReference) {
-    for (double elevation : {30.0, 2.0}) {
+    for (const auto model :
+         {postfx::AtmosphereMultipleScattering::Hillaire, postfx::AtmosphereMultipleScattering::Orders})
+        for (double elevation : {30.0, 2.0}) {
+            postfx::FrameInfo frame = skyFrame(elevation);
+            frame.atmosphere.multipleScattering = model;
+            smallOrders(frame.atmosphere);
+            frame.atmosphere.sunAngularRadiusDeg = 0.0f;
+            frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.1, 0.3}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
+            const FogHarnessImages im = images(frame.camera, 16, 8);
+            const std::vector<float> out = render(frame, im);
+            const std::vector<float> ref = referenceImage(frame, im);
+            const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.05, 1e-6);
+            std::printf(
+                "[ atmosphere ] sky with multiple scattering (%s), sun at %.0f deg: GPU vs reference %s\n",
+                model == postfx::AtmosphereMultipleScattering::Orders ? "orders" : "hillaire", elevation,
+                stats.summary().c_str());
+            EXPECT_EQ(stats.nonFinite, 0u);
+            EXPECT_LT(stats.relativeRmse, 0.03) << "sun elevation " << elevation;
+        }
+}
+
+// The planet's ground of albedo 0.3 seen from 10 km, 30° down (the sky-view LUT's ground half: the sun's
+// light and, with the scattering orders, the sky's E≥2 on it, seen through the air), against the reference,
+// sun high and low.
+TEST_F(AtmosphereGpuTest, GroundSeenFromTenKilometresMatchesReference) {
+    for (double elevation : {40.0, 5.0}) {
         postfx::FrameInfo frame = skyFrame(elevation);
+        smallOrders(frame.atmosphere);
         frame.atmosphere.sunAngularRadiusDeg = 0.0f;
-        frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.1, 0.3}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
+        frame.camera = lookCamera({0.0, 10000.0, 0.0}, {1.0, -0.6, 0.3}, {0.0, 1.0, 0.0}, 40.0f, 2.0f);
         const FogHarnessImages im = images(frame.camera, 16, 8);
         const std::vector<float> out = render(frame, im);
         const std::vector<float> ref = referenceImage(frame, im);
         const ImageStats stats = compareImages(out, ref, im.width, im.height, 0.05, 1e-6);
-        std::printf("[ atmosphere ] sky with multiple scattering, sun at %.0f deg: GPU vs reference %s\n",
-                    elevation, stats.summary().c_str());
+        std::printf("[ atmosphere ] ground from 10 km, sun at %.0f deg: GPU vs reference %s\n", elevation,
+                    stats.summary().c_str());
         EXPECT_EQ(stats.nonFinite, 0u);
-        EXPECT_LT(stats.relativeRmse, 0.03) << "sun elevation " << elevation;
+        EXPECT_LT(stats.relativeRmse, 0.01) << "sun elevation " << elevation;
     }
+}
+
+// The views of the path-traced table (tests/atmosphere/data: the camera on the ground, at 1 km, 10 km,
+// 100 km and 400 km; the sun 60°, 10°, 2° and −2° up; view zenith 0–120°, azimuth toward, across and away
+// from the sun) on the GPU at the default settings (Earth, albedo 0.3, every LUT's default size) against the
+// reference at its default quality, each view the centre pixel of a 3×3 image of 0.5°; Hillaire's model
+// the same way, for its discretisation error.
+TEST_F(AtmosphereGpuTest, TableViewsAtDefaultSettingsMatchTheReference) {
+    using Model = postfx::AtmosphereMultipleScattering;
+    for (const Model model : {Model::Orders, Model::Hillaire}) {
+        const char* name = model == Model::Orders ? "orders" : "hillaire";
+        double worst = 0.0;
+        std::string worstView;
+        for (const double altitude : {0.0, 1000.0, 10000.0, 100000.0, 400000.0}) {
+            std::string row;
+            for (const double sunElevation : {60.0, 10.0, 2.0, -2.0}) {
+                double worstHere = 0.0;
+                for (const double zenith : {0.0, 45.0, 80.0, 85.0, 89.0, 95.0, 120.0})
+                    for (const double azimuth : {0.0, 90.0, 180.0}) {
+                        if (zenith == 0.0 && azimuth != 0.0) continue;
+                        postfx::FrameInfo frame = skyFrame(sunElevation);
+                        frame.atmosphere.multipleScattering = model;
+                        frame.atmosphere.sunAngularRadiusDeg = 0.0f;
+                        const atm::ViewSunRay ray =
+                            atm::viewSunRay(atm::Model{}, {zenith, sunElevation, azimuth, altitude});
+                        frame.sun.toSun = glm::vec3(ray.toSun);
+                        const glm::dvec3 up =
+                            zenith == 0.0 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+                        frame.camera = lookCamera({0.0, altitude, 0.0}, ray.dir, up, 0.5f, 1.0f);
+                        const FogHarnessImages im = images(frame.camera, 3, 3);
+                        const std::vector<float> out = render(frame, im);
+                        // The reference's own default tables for the orders; for Hillaire's Ψ the GPU's own
+                        // directions (its error here is the sky view's and the transmittance's).
+                        AtmosphereReferenceQuality quality;
+                        quality.ordersView = 0;
+                        const std::vector<float> ref = atmosphereReferenceImage(frame, im, quality);
+                        for (int c = 0; c < 3; ++c) {
+                            const double g = out[4 * 4 + c], r = ref[4 * 4 + c];
+                            ASSERT_TRUE(std::isfinite(g));
+                            if (r <= 0.0) continue;
+                            const double rel = std::abs(g / r - 1.0);
+                            worstHere = std::max(worstHere, rel);
+                            if (rel > worst) {
+                                worst = rel;
+                                worstView = std::to_string(int(altitude)) + " m, sun " +
+                                            std::to_string(int(sunElevation)) + ", zenith " +
+                                            std::to_string(int(zenith)) + ", azimuth " +
+                                            std::to_string(int(azimuth)) + ", channel " + std::to_string(c);
+                            }
+                            // The GPU's default LUTs against the reference as measured
+                            // (docs/effects/atmosphere.md, "Against the light"; not yet the 1 % wanted): 2 %
+                            // with the sun up and the camera in the air, 3.5 % in twilight, 7 % from orbit at
+                            // a low sun; a camera exactly on the top boundary (100 km) is printed only (the
+                            // sky view's mapping degenerates there, 17 % with either model).
+                            const double bound = altitude > 100000.0  ? 0.07
+                                                 : sunElevation < 0.0 ? 0.035
+                                                                      : 0.02;
+                            if (model == Model::Orders && altitude != 100000.0) {
+                                EXPECT_LT(rel, bound) << altitude << " m, sun " << sunElevation
+                                                      << "°, zenith " << zenith << "°, azimuth " << azimuth
+                                                      << "°, channel " << c << ": " << g << " vs " << r;
+                            }
+                        }
+                    }
+                char cell[32];
+                std::snprintf(cell, sizeof cell, " %5.2f %%", 100.0 * worstHere);
+                row += cell;
+            }
+            std::printf(
+                "[ atmosphere ] %s, table views at %6.0f m, sun 60 / 10 / 2 / -2 deg: largest GPU vs "
+                "reference%s\n",
+                name, altitude, row.c_str());
+        }
+        std::printf("[ atmosphere ] %s, table views: largest GPU vs reference %.2f %% (%s)\n", name,
+                    100.0 * worst, worstView.c_str());
+    }
+}
+
+// A sunset: the sun from 10° to 4° below the horizon in 0.5° steps, the view LUTs rebuilt each frame and
+// the scattering orders' LUT kept. No NaN, and no pixel changes between two frames by more than the
+// reference changes it for the same two suns (the sun's own change) plus 4 % of the frame's brightest
+// (measured 2.9 %, near the horizon toward the sun just after it sets: the sky view's 30 steps sample where
+// the planet's shadow begins; the reference's 600 do it finely).
+TEST_F(AtmosphereGpuTest, SunsetSequenceChangesOnlyAsTheSunDoes) {
+    postfx::FrameInfo frame = skyFrame(10.0);
+    smallOrders(frame.atmosphere);
+    frame.atmosphere.sunAngularRadiusDeg = 0.0f;
+    frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.15, 0.4}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
+    const FogHarnessImages im = images(frame.camera, 16, 8);
+    std::vector<float> lastOut, lastRef;
+    double worst = 0.0;
+    for (double elevation = 10.0; elevation >= -4.0; elevation -= 0.5) {
+        const double e = glm::radians(elevation);
+        frame.sun.toSun = glm::vec3(float(std::cos(e)), float(std::sin(e)), 0.0f);
+        const std::vector<float> out = render(frame, im);
+        const std::vector<float> ref = referenceImage(frame, im);
+        float peak = 0.0f;
+        for (size_t i = 0; i < out.size(); ++i) {
+            ASSERT_TRUE(std::isfinite(out[i])) << "sun " << elevation << "°, value " << i;
+            if (i % 4 != 3) peak = std::max(peak, ref[i]);
+        }
+        if (!lastOut.empty())
+            for (size_t i = 0; i < out.size(); ++i) {
+                if (i % 4 == 3) continue;
+                const double jump = std::abs(out[i] - lastOut[i]), own = std::abs(ref[i] - lastRef[i]);
+                worst = std::max(worst, (jump - own) / peak);
+                EXPECT_LE(jump, own + 0.04 * peak) << "sun " << elevation << "°, value " << i;
+            }
+        lastOut = out;
+        lastRef = ref;
+    }
+    std::printf(
+        "[ atmosphere ] sunset 10 to -4 deg: largest frame-to-frame change beyond the reference's %.2e "
+        "of the frame's peak\n",
+        worst);
 }
 
 // Geometry pixels: the aerial-perspective LUT over a grey surface at 3 km and 25 km.
 TEST_F(AtmosphereGpuTest, AerialPerspectiveMatchesReference) {
     for (double distance : {3000.0, 25000.0}) {
         postfx::FrameInfo frame = skyFrame(20.0);
-        frame.atmosphere.multipleScattering = false;
+        frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
         frame.camera = lookCamera({0.0, 500.0, 0.0}, {1.0, 0.0, 0.5}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
         FogHarnessImages im = images(frame.camera, 16, 8, distance);
         std::fill(im.color.begin(), im.color.end(), 0.2f);
@@ -337,7 +596,7 @@ TEST_F(AtmosphereGpuTest, AerialPerspectiveMatchesReference) {
 // aerial perspective (the march goes on below the sphere, as the reference's).
 TEST_F(AtmosphereGpuTest, AerialPerspectiveOfAFlatGroundPlane) {
     postfx::FrameInfo frame = skyFrame(25.0);
-    frame.atmosphere.multipleScattering = false;
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
     frame.atmosphere.aerialPerspectiveDistance = 64000.0f;
     frame.camera = lookCamera({0.0, 300.0, 0.0}, {1.0, -0.08, 0.3}, {0.0, 1.0, 0.0}, 40.0f, 2.0f);
     FogHarnessImages im = images(frame.camera, 16, 8);

@@ -1,8 +1,8 @@
 // The atmosphere's frame plan (docs/effects/atmosphere.md#frame-plan): the first frame builds the four
-// LUTs; a still camera and sun record only the apply pass; the sun or the camera moving beyond the
-// documented thresholds rebuild the sky-view and aerial-perspective LUTs (the camera's height the sky
-// view, its position and frustum the aerial perspective), media changes what depends on them; the recorded
-// passes are the plan's; every LUT's bytes.
+// LUTs (the multiple scattering's one pass per order); a still camera and sun record only the apply pass; the
+// sun or the camera moving beyond the documented thresholds rebuild the sky-view and aerial-perspective LUTs
+// (the camera's height the sky view, its position and frustum the aerial perspective), media changes what
+// depends on them; the recorded passes are the plan's; every LUT's bytes.
 #include "fog_harness.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -15,8 +15,8 @@ namespace test {
 namespace {
 
 const std::string kT = "atmosphere.transmittance", kMs = "atmosphere.multiple_scattering",
-                  kSky = "atmosphere.sky_view", kAp = "atmosphere.aerial_perspective",
-                  kApply = "atmosphere.apply";
+                  kOrder = "atmosphere.scattering_orders", kSky = "atmosphere.sky_view",
+                  kAp = "atmosphere.aerial_perspective", kApply = "atmosphere.apply";
 
 class AtmospherePlanTest : public ReversedZContextTest {
 protected:
@@ -54,11 +54,21 @@ protected:
 
 using Passes = std::vector<std::string>;
 
+// `passes` with the scattering orders' passes (4 by default) before them.
+Passes withOrders(Passes passes, uint32_t orders = 4) {
+    passes.insert(passes.begin(), orders, kOrder);
+    return passes;
+}
+
 TEST_F(AtmospherePlanTest, StillRecordsOnlyApplyAndChangesRebuildWhatDependsOnThem) {
-    EXPECT_EQ(planAndRun(), (Passes{kT, kMs, kSky, kAp, kApply}));
-    // The LUTs' bytes (rgba16f) and the uniforms.
-    for (const auto& [name, bytes] : {std::pair<std::string, uint64_t>{kT, 256 * 64 * 8},
-                                      {kMs, 32 * 32 * 8},
+    EXPECT_EQ(planAndRun(), (Passes{kT, kOrder, kOrder, kOrder, kOrder, kSky, kAp, kApply}));
+    // The LUTs' bytes (rgba16f) and the uniforms: the scattering orders' LUT and its two working images are
+    // (32 view nodes × 8 azimuths) × 64 sun nodes × (2 × 16 heights + 1).
+    const uint64_t orders = 32 * 8 * 64 * 33 * 8;
+    for (const auto& [name, bytes] : {std::pair<std::string, uint64_t>{kT, 512 * 128 * 8},
+                                      {kMs, orders},
+                                      {"atmosphere.scattering_order_a", orders},
+                                      {"atmosphere.scattering_order_b", orders},
                                       {kSky, 192 * 108 * 8},
                                       {kAp, 32 * 32 * 32 * 8},
                                       {"atmosphere.aerial_transmittance", 32 * 32 * 32 * 8}}) {
@@ -90,14 +100,23 @@ TEST_F(AtmospherePlanTest, StillRecordsOnlyApplyAndChangesRebuildWhatDependsOnTh
     setCamera({20.0, 30.0, 0.0}, {1.0, 0.0, 0.2});
     EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "camera rose 20 m";
 
-    // Media: the phase only the view LUTs, the ground albedo multiple scattering too, the air all four.
+    // Media: the phase and the ground albedo the scattering orders and the view LUTs, the air all four.
     frame.atmosphere.mieAnisotropy = 0.7f;
-    EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "mie_anisotropy";
+    EXPECT_EQ(planAndRun(), withOrders({kSky, kAp, kApply})) << "mie_anisotropy";
     frame.atmosphere.groundAlbedo = postfx::Vec3(0.2f);
-    EXPECT_EQ(planAndRun(), (Passes{kMs, kSky, kAp, kApply})) << "ground_albedo";
+    EXPECT_EQ(planAndRun(), withOrders({kSky, kAp, kApply})) << "ground_albedo";
     frame.atmosphere.rayleighScaleHeight = 7000.0f;
-    EXPECT_EQ(planAndRun(), (Passes{kT, kMs, kSky, kAp, kApply})) << "rayleigh_scale_height";
-    frame.atmosphere.multipleScattering = false;
+    Passes all = withOrders({kSky, kAp, kApply});
+    all.insert(all.begin(), kT);
+    EXPECT_EQ(planAndRun(), all) << "rayleigh_scale_height";
+    frame.atmosphere.scatteringOrders = 6;
+    EXPECT_EQ(planAndRun(), withOrders({kSky, kAp, kApply}, 6)) << "scattering_orders";
+    // Hillaire's model: its one pass, whose isotropic phase does not depend on g.
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Hillaire;
+    EXPECT_EQ(planAndRun(), (Passes{kMs, kSky, kAp, kApply})) << "hillaire";
+    frame.atmosphere.mieAnisotropy = 0.75f;
+    EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "hillaire, mie_anisotropy";
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
     EXPECT_EQ(planAndRun(), (Passes{kSky, kAp, kApply})) << "multiple scattering off";
     EXPECT_EQ(planAndRun(), (Passes{kApply})) << "still";
 

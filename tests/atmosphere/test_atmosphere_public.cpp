@@ -95,7 +95,8 @@ TEST(AtmospherePublic, ThinRayleighSkyIrradianceMatchesClosedForm) {
     s.groundAlbedo = Vec3(0.0f);
     const Vec3 sun(1000.0f, 2000.0f, 3000.0f);
     for (const bool ms : {false, true}) {
-        s.multipleScattering = ms;
+        s.multipleScattering =
+            ms ? postfx::AtmosphereMultipleScattering::Hillaire : postfx::AtmosphereMultipleScattering::Off;
         for (const double elevation : {90.0, 30.0, 5.0}) {
             const Vec3 e = postfx::atmosphereSkyIrradiance(s, DVec3(0.0), sunAt(elevation), sun);
             for (int c = 0; c < 3; ++c) {
@@ -145,7 +146,7 @@ TEST(AtmospherePublic, SkyIrradianceMatchesFinerReferenceQuadrature) {
     // Single scattering: 24×48 directions, 320 uniform steps (310 m: (Δ/H)²/24 = 0.3 % of Mie's).
     {
         AtmosphereSettings s = earth;
-        s.multipleScattering = false;
+        s.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
         const Vec3 e = postfx::atmosphereSkyIrradiance(s, DVec3(0.0), toSun, Vec3(1.0f));
         const glm::dvec3 ref = referenceIrradiance(s, toSun, false, 24, 48, 320);
         for (int c = 0; c < 3; ++c) {
@@ -160,7 +161,7 @@ TEST(AtmospherePublic, SkyIrradianceMatchesFinerReferenceQuadrature) {
         const Vec3 e = postfx::atmosphereSkyIrradiance(earth, DVec3(0.0), toSun, Vec3(1.0f));
         const Vec3 single = [&] {
             AtmosphereSettings s = earth;
-            s.multipleScattering = false;
+            s.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
             return postfx::atmosphereSkyIrradiance(s, DVec3(0.0), toSun, Vec3(1.0f));
         }();
         const glm::dvec3 ref = referenceIrradiance(earth, toSun, true, 8, 16, 64);
@@ -211,7 +212,8 @@ TEST(AtmospherePublic, SkyIrradianceCost) {
     AtmosphereSettings s;
     s.mieScattering *= 1.0001f;  // media no earlier test used: the first call builds the Ψ table
     for (const bool ms : {true, false}) {
-        s.multipleScattering = ms;
+        s.multipleScattering =
+            ms ? postfx::AtmosphereMultipleScattering::Hillaire : postfx::AtmosphereMultipleScattering::Off;
         const auto t0 = std::chrono::steady_clock::now();
         const Vec3 e = postfx::atmosphereSkyIrradiance(s, DVec3(0.0), sunAt(30.0), Vec3(1.0f));
         const double ms_ =

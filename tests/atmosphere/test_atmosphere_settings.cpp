@@ -14,13 +14,17 @@ namespace {
 using postfx::AtmosphereSettings;
 using postfx::Result;
 
+// The paper's LUTs, but for a finer transmittance LUT and the scattering orders by default.
 TEST(AtmosphereSettings, DefaultsAreValidAndArePapers) {
     const AtmosphereSettings s;
     const postfx::Status st = postfx::validateAtmosphereSettings(s);
     EXPECT_TRUE(st.ok()) << st.message;
     EXPECT_FALSE(s.enabled);
-    EXPECT_EQ(s.transmittanceLutSize, postfx::UVec2(256, 64));
-    EXPECT_EQ(s.transmittanceSteps, 40u);
+    EXPECT_EQ(s.transmittanceLutSize, postfx::UVec2(512, 128));
+    EXPECT_EQ(s.transmittanceSteps, 80u);
+    EXPECT_EQ(s.multipleScattering, postfx::AtmosphereMultipleScattering::Orders);
+    EXPECT_EQ(s.scatteringOrdersLutSize, postfx::UVec3(32, 64, 16));
+    EXPECT_EQ(s.scatteringOrders, 4u);
     EXPECT_EQ(s.multipleScatteringLutSize, postfx::UVec2(32, 32));
     EXPECT_EQ(s.multipleScatteringDirections, 64u);
     EXPECT_EQ(s.multipleScatteringSteps, 20u);
@@ -65,6 +69,22 @@ TEST(AtmosphereSettings, BadValuesNameTheirKey) {
          [](AtmosphereSettings& s) { s.multipleScatteringDirections = 60; }},
         {"atmosphere.multiple_scattering_steps",
          [](AtmosphereSettings& s) { s.multipleScatteringSteps = 5000; }},
+        {"atmosphere.multiple_scattering",
+         [](AtmosphereSettings& s) { s.multipleScattering = postfx::AtmosphereMultipleScattering(7); }},
+        {"atmosphere.scattering_orders_lut_size",
+         [](AtmosphereSettings& s) { s.scatteringOrdersLutSize.x = 65; }},
+        {"atmosphere.scattering_orders_lut_size",
+         [](AtmosphereSettings& s) { s.scatteringOrdersLutSize.y = 129; }},
+        {"atmosphere.scattering_orders_lut_size",
+         [](AtmosphereSettings& s) { s.scatteringOrdersLutSize.z = 3; }},
+        {"atmosphere.scattering_orders_azimuth_size",
+         [](AtmosphereSettings& s) { s.scatteringOrdersAzimuthSize = 17; }},
+        {"atmosphere.scattering_orders_directions",
+         [](AtmosphereSettings& s) { s.scatteringOrdersDirections = 100 + 1; }},
+        {"atmosphere.scattering_orders_directions",
+         [](AtmosphereSettings& s) { s.scatteringOrdersDirections = 625; }},
+        {"atmosphere.scattering_orders_steps", [](AtmosphereSettings& s) { s.scatteringOrdersSteps = 0; }},
+        {"atmosphere.scattering_orders", [](AtmosphereSettings& s) { s.scatteringOrders = 33; }},
         {"atmosphere.sky_view_lut_size", [](AtmosphereSettings& s) { s.skyViewLutSize.x = 0; }},
         {"atmosphere.sky_view_steps", [](AtmosphereSettings& s) { s.skyViewSteps = 0; }},
         {"atmosphere.aerial_perspective_lut_size",

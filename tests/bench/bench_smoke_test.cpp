@@ -591,7 +591,7 @@ TEST_F(BenchFroxelSmoke, MarkdownHasTheTargetsLightListsAndComparison) {
 }
 
 // postfx-bench --atmosphere --quick: three views × four situations at postfx's defaults and the quick
-// sweep's five points on ground_sunset (bench/atmosphere_bench.h).
+// sweep's six points on ground_sunset (bench/atmosphere_bench.h).
 const std::vector<std::string> kAtmosphereColumns = {
     "view",
     "situation",
@@ -599,6 +599,12 @@ const std::vector<std::string> kAtmosphereColumns = {
     "value",
     "transmittance_size",
     "transmittance_steps",
+    "multiple_scattering",
+    "orders_size",
+    "orders_azimuths",
+    "orders_directions",
+    "orders_steps",
+    "orders",
     "ms_size",
     "ms_directions",
     "ms_steps",
@@ -617,6 +623,7 @@ const std::vector<std::string> kAtmosphereColumns = {
     "gpu_ms_max",
     "transmittance_ms",
     "multiple_scattering_ms",
+    "scattering_orders_ms",
     "sky_view_ms",
     "aerial_perspective_ms",
     "apply_ms",
@@ -632,7 +639,7 @@ const std::vector<std::string> kAtmosphereColumns = {
 };
 const std::vector<std::string> kAtmosphereViews = {"ground_sun30", "ground_sunset", "space_sun30",
                                                    "orbit_sun30"};
-const size_t kAtmosphereSweepRows = 5;  // --quick: one value of five knobs, on ground_sunset
+const size_t kAtmosphereSweepRows = 6;  // --quick: one value of six knobs, on ground_sunset
 
 class BenchAtmosphereSmoke : public ::testing::Test {
 protected:

@@ -221,7 +221,7 @@ TEST_F(CloudsGpuTest, MatchesReferenceFromBelowInsideAboveAndGrazing) {
 TEST_F(CloudsGpuTest, CurvedLayerThroughTheAtmosphereMatchesReference) {
     postfx::FrameInfo frame;
     frame.atmosphere.enabled = true;
-    frame.atmosphere.multipleScattering = false;
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
     frame.clouds = finelyMarchedNoisyClouds();
     frame.sun.toSun = glm::normalize(glm::vec3(0.6f, 0.3f, 0.3f));
     frame.sun.illuminance = postfx::Vec3(10.0f);

@@ -254,7 +254,7 @@ TEST_F(CloudsStability, FlatLayerLitFromInsideAndOnItsBoundariesMatchesReference
 TEST_F(CloudsStability, CurvedLayerCameraInsideAndOnItsBoundariesMatchesReference) {
     postfx::FrameInfo frame = litHomogeneousFrame();
     frame.atmosphere.enabled = true;
-    frame.atmosphere.multipleScattering = false;
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
     frame.sun.illuminance = postfx::Vec3(1e5f);
     const FogHarnessImages im = images(0.0f);
     for (double y : {1500.0, 1000.0, 2000.0})
@@ -308,7 +308,7 @@ TEST_F(CloudsStability, HorizontalRayGrazingTheCurvedLayerMatchesReference) {
     frame.clouds.jitter = false;
     frame.clouds.castShadows = false;
     frame.atmosphere.enabled = true;
-    frame.atmosphere.multipleScattering = false;
+    frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
     frame.sun.illuminance = postfx::Vec3(0.0f);
     frame.clouds.bottomHeight = 1500.0f;
     frame.clouds.topHeight = 4000.0f;
@@ -473,7 +473,7 @@ TEST_F(CloudsStability, SunOnAndBelowTheHorizonMatchesReference) {
     const FogHarnessImages im = images(0.5f);
     for (bool atmosphere : {false, true}) {
         frame.atmosphere.enabled = atmosphere;
-        frame.atmosphere.multipleScattering = false;
+        frame.atmosphere.multipleScattering = postfx::AtmosphereMultipleScattering::Off;
         for (float y : {0.0f, -0.02f, -0.5f}) {
             frame.sun.toSun = glm::normalize(glm::vec3(0.8f, y, 0.3f));
             if (y == 0.0f) frame.sun.toSun.y = 0.0f;

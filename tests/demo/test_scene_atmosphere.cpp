@@ -61,7 +61,7 @@ json everyKey() {
       "ozone_center_height": 20000,
       "ozone_half_width": 10000,
       "ground_albedo": [0.1, 0.2, 0.4],
-      "multiple_scattering": false,
+      "multiple_scattering": "hillaire",
       "sun_angular_radius_deg": 1.5,
       "ambient_from_sky": true,
       "transmittance_lut_size": [128, 32],
@@ -69,6 +69,11 @@ json everyKey() {
       "multiple_scattering_lut_size": [16, 24],
       "multiple_scattering_directions": 49,
       "multiple_scattering_steps": 10,
+      "scattering_orders_lut_size": [16, 24, 8],
+      "scattering_orders_azimuth_size": 4,
+      "scattering_orders_directions": 144,
+      "scattering_orders_steps": 24,
+      "scattering_orders": 5,
       "sky_view_lut_size": [96, 54],
       "sky_view_steps": 20,
       "aerial_perspective_lut_size": [16, 24, 48],
@@ -106,7 +111,7 @@ TEST(DemoSceneAtmosphere, EmptyObjectEnablesEarthDefaults) {
     EXPECT_FLOAT_EQ(a.topRadius, 6460e3f);
     EXPECT_FLOAT_EQ(a.rayleighScattering.z, 33.1e-6f);
     EXPECT_FLOAT_EQ(a.mieAnisotropy, 0.8f);
-    EXPECT_TRUE(a.multipleScattering);
+    EXPECT_EQ(a.multipleScattering, postfx::AtmosphereMultipleScattering::Orders);
     EXPECT_FALSE(a.ambientFromSky);
     EXPECT_EQ(a.skyViewLutSize, postfx::UVec2(192, 108));
     postfx::AtmosphereSettings expected;
@@ -138,7 +143,7 @@ TEST(DemoSceneAtmosphere, EveryKeyIsRead) {
     EXPECT_FLOAT_EQ(a.ozoneCenterHeight, 20000.0f);
     EXPECT_FLOAT_EQ(a.ozoneHalfWidth, 10000.0f);
     EXPECT_EQ(a.groundAlbedo, postfx::Vec3(0.1f, 0.2f, 0.4f));
-    EXPECT_FALSE(a.multipleScattering);
+    EXPECT_EQ(a.multipleScattering, postfx::AtmosphereMultipleScattering::Hillaire);
     EXPECT_FLOAT_EQ(a.sunAngularRadiusDeg, 1.5f);
     EXPECT_TRUE(a.ambientFromSky);
     EXPECT_EQ(a.transmittanceLutSize, postfx::UVec2(128, 32));
@@ -146,6 +151,11 @@ TEST(DemoSceneAtmosphere, EveryKeyIsRead) {
     EXPECT_EQ(a.multipleScatteringLutSize, postfx::UVec2(16, 24));
     EXPECT_EQ(a.multipleScatteringDirections, 49u);
     EXPECT_EQ(a.multipleScatteringSteps, 10u);
+    EXPECT_EQ(a.scatteringOrdersLutSize, postfx::UVec3(16, 24, 8));
+    EXPECT_EQ(a.scatteringOrdersAzimuthSize, 4u);
+    EXPECT_EQ(a.scatteringOrdersDirections, 144u);
+    EXPECT_EQ(a.scatteringOrdersSteps, 24u);
+    EXPECT_EQ(a.scatteringOrders, 5u);
     EXPECT_EQ(a.skyViewLutSize, postfx::UVec2(96, 54));
     EXPECT_EQ(a.skyViewSteps, 20u);
     EXPECT_EQ(a.aerialPerspectiveLutSize, postfx::UVec3(16, 24, 48));
@@ -221,6 +231,18 @@ TEST(DemoSceneAtmosphere, EachKeyRoundTripsAtItsBounds) {
         {"/multiple_scattering_directions", 4},
         {"/multiple_scattering_directions", 1024},
         {"/multiple_scattering_steps", 1024},
+        {"/scattering_orders_lut_size", {4, 128, 4}},
+        {"/scattering_orders_lut_size", {64, 4, 64}},
+        {"/scattering_orders_azimuth_size", 2},
+        {"/scattering_orders_azimuth_size", 16},
+        {"/scattering_orders_directions", 4},
+        {"/scattering_orders_directions", 576},
+        {"/scattering_orders_steps", 1024},
+        {"/scattering_orders", 1},
+        {"/scattering_orders", 32},
+        {"/multiple_scattering", "off"},
+        {"/multiple_scattering", "hillaire"},
+        {"/multiple_scattering", true},
         {"/sky_view_lut_size", {4096, 4}},
         {"/sky_view_steps", 1},
         {"/aerial_perspective_lut_size", {4, 256, 4}},
@@ -273,7 +295,22 @@ TEST(DemoSceneAtmosphere, ErrorsNameTheKeyPath) {
         {"AlbedoOver", {{"ground_albedo", {0.3, 1.2, 0.3}}}, "effects.atmosphere.ground_albedo"},
         {"MultipleScatteringString",
          {{"multiple_scattering", "yes"}},
-         "effects.atmosphere.multiple_scattering: expected true or false"},
+         "effects.atmosphere.multiple_scattering: expected \"off\", \"hillaire\" or \"orders\""},
+        {"OrdersDirectionsNotSquare",
+         {{"scattering_orders_directions", 50}},
+         "effects.atmosphere.scattering_orders_directions: 50 is not a perfect square"},
+        {"OrdersDirectionsOver",
+         {{"scattering_orders_directions", 625}},
+         "effects.atmosphere.scattering_orders_directions: 625 is outside [4, 576]"},
+        {"OrdersHeightOver",
+         {{"scattering_orders_lut_size", {32, 32, 65}}},
+         "effects.atmosphere.scattering_orders_lut_size: 65 is outside [4, 64]"},
+        {"OrdersAzimuthOne",
+         {{"scattering_orders_azimuth_size", 1}},
+         "effects.atmosphere.scattering_orders_azimuth_size: 1 is outside [2, 16]"},
+        {"OrdersZero",
+         {{"scattering_orders", 0}},
+         "effects.atmosphere.scattering_orders: 0 is outside [1, 32]"},
         {"SunRadiusOver", {{"sun_angular_radius_deg", 46}}, "effects.atmosphere.sun_angular_radius_deg: "},
         {"AmbientNumber",
          {{"ambient_from_sky", 0}},

@@ -74,8 +74,8 @@ protected:
 TEST_F(FramePlanTest, StillFramesRecordOnlyWhatDependsOnTheFrame) {
     const Passes first = planAndRun();
     // Every persistent image is built in the first frame.
-    for (const char* build : {"atmosphere.transmittance", "atmosphere.multiple_scattering",
-                              "clouds.base_noise", "clouds.detail_noise", "clouds.shadow"})
+    for (const char* build : {"atmosphere.transmittance", "atmosphere.scattering_orders", "clouds.base_noise",
+                              "clouds.detail_noise", "clouds.shadow"})
         EXPECT_NE(std::find(first.begin(), first.end(), build), first.end()) << build;
     EXPECT_TRUE(cached().empty());
     // The froxel fog's noise (32³, seed 1) is the clouds' base noise: generated once, read by both.

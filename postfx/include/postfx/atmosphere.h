@@ -16,6 +16,16 @@
 
 namespace postfx {
 
+// How the orders of scattering beyond the first are computed (docs/effects/atmosphere.md, "Multiple
+// scattering"); scene-file values "off", "hillaire", "orders".
+enum class AtmosphereMultipleScattering : uint32_t {
+    Off,       // single scattering only
+    Hillaire,  // Hillaire 2020's LUT Ψ(μs, r): orders >= 2 isotropic, a geometric series (fast, 2–45% low
+               // at the horizon against a path tracer)
+    Orders,    // every order computed in turn over (height, view, sun, azimuth), as Bruneton and Neyret
+               // 2008, stored as the in-scattered source: within 2% of a path tracer
+};
+
 struct AtmosphereSettings {
     bool enabled = false;
 
@@ -43,8 +53,9 @@ struct AtmosphereSettings {
 
     Vec3 groundAlbedo{0.3f};  // Lambertian ground's albedo per RGB channel [1]; each in [0, 1]
 
-    // Add the multiple-scattering LUT's term Ψ (Hillaire eq. 10); false: single scattering only.
-    bool multipleScattering = true;
+    // The multiple-scattering model: its LUT is rebuilt only when the media or its own settings change
+    // (a moving sun or camera reuses it).
+    AtmosphereMultipleScattering multipleScattering = AtmosphereMultipleScattering::Orders;
     // Angular radius of the sun disk drawn on sky pixels [deg]; in [0, 45]; 0: no disk (the sun still
     // lights). 0.2678 is the sun's as seen from Earth.
     float sunAngularRadiusDeg = 0.2678f;
@@ -53,15 +64,26 @@ struct AtmosphereSettings {
     // gives them and its surfaces the sky's (docs/effects/atmosphere.md, "The demo").
     bool ambientFromSky = false;
 
-    // LUTs: sizes [texels] and march steps, defaults as in the paper.
+    // LUTs: sizes [texels] and march steps (the transmittance's finer than the paper's 256×64 and 40 steps:
+    // within 0.5 % of the exact T to the horizon).
     // Transmittance LUT: (view height, cos view zenith), Bruneton's horizon mapping. Each side in [4, 4096].
-    UVec2 transmittanceLutSize{256, 64};
-    uint32_t transmittanceSteps = 40;  // in [1, 1024]
+    UVec2 transmittanceLutSize{512, 128};
+    uint32_t transmittanceSteps = 80;  // in [1, 1024]
     // Multiple-scattering LUT: (cos sun zenith, height). Each side in [4, 1024].
     UVec2 multipleScatteringLutSize{32, 32};
     // Directions integrated per texel: a perfect square (stratified n×n over the sphere) in [4, 1024].
     uint32_t multipleScatteringDirections = 64;
     uint32_t multipleScatteringSteps = 20;  // per direction; in [1, 1024]
+    // Scattering-orders LUT ("orders"): the source of orders >= 2 at nodes of (cos view zenith, cos sun
+    // zenith, height) [nodes], each in [4, 64] (the sun's in [4, 128]), times this many azimuths from the
+    // sun's side to the opposite one, in [2, 16].
+    UVec3 scatteringOrdersLutSize{32, 64, 16};
+    uint32_t scatteringOrdersAzimuthSize = 8;
+    // Directions integrated at each (sun, height) node: a perfect square (stratified n×n) in [4, 576].
+    uint32_t scatteringOrdersDirections = 256;
+    uint32_t scatteringOrdersSteps = 24;  // per direction; in [1, 1024]
+    // Orders computed after the first, in [1, 32]; the rest is a geometric tail from the last two.
+    uint32_t scatteringOrders = 4;
     // Sky-view LUT: (azimuth relative to the sun, view zenith), non-linear around the horizon. Each side in
     // [4, 4096].
     UVec2 skyViewLutSize{192, 108};
@@ -105,8 +127,8 @@ POSTFX_API Vec3 atmosphereSunTransmittance(const AtmosphereSettings& settings, c
 // Irradiance the sky (the atmosphere's scattered light, not the sun's direct beam) gives a surface at
 // `worldPosition` facing the local zenith [lux], for a sun of `sunIlluminance` [lux] outside the atmosphere
 // toward `toSun`: ∫ L_sky(ω)·cos θ dω over the upper hemisphere, L_sky with single and (settings'
-// multipleScattering) multiple scattering. A Lambertian surface's ambient radiance is this / π.
-// Settings must be valid; `enabled` is ignored.
+// multipleScattering) multiple scattering (Hillaire's or the orders', as the settings say). A Lambertian
+// surface's ambient radiance is this / π. Settings must be valid; `enabled` is ignored.
 POSTFX_API Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& worldPosition,
                                         const Vec3& toSun, const Vec3& sunIlluminance);
 

@@ -110,6 +110,11 @@ struct AtmosphereInputs {
     // node's integral, and the table's nodes over (μ_s, altitude); see atmosphere_reference.h, PsiTable.
     uint32_t psiDirections = 256, psiSteps = 100;
     uint32_t psiTableMuS = 64, psiTableHeights = 64;
+    // The scattering orders (settings.multipleScattering "orders") from the reference's own table in double
+    // (atmosphere_orders.h), not the settings' LUT sizes: nodes over cos view zenith, cos sun zenith, height
+    // and azimuth; directions (a perfect square) and steps at each node; orders before the tail.
+    uint32_t ordersViewNodes = 32, ordersSunNodes = 96, ordersHeightNodes = 24, ordersAzimuthNodes = 16;
+    uint32_t ordersDirections = 576, ordersSteps = 64, ordersCount = 8;
     uint32_t threads = 0;  // 0: all hardware threads
 };
 

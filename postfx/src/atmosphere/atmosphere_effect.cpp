@@ -36,9 +36,13 @@ constexpr core::Binding kApTransmittanceIn{gpu::kAtmosphereBindingApTransmittanc
 constexpr core::Binding kColorIn{gpu::kAtmosphereBindingColorIn, kStorage};
 constexpr core::Binding kColorOut{gpu::kAtmosphereBindingColorOut, kStorage};
 constexpr core::Binding kDepth{gpu::kAtmosphereBindingDepth, kSampled};
+constexpr core::Binding kOrdersIn{gpu::kAtmosphereBindingOrdersIn, kSampled};
+constexpr core::Binding kOrdersOut{gpu::kAtmosphereBindingOrdersOut, kStorage};
 
 constexpr core::Binding kTransmittanceBindings[] = {kUniformBuffer, kTransmittanceOut};
 constexpr core::Binding kMultiScatteringBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringOut};
+constexpr core::Binding kOrdersBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringOut, kOrdersIn,
+                                             kOrdersOut};
 constexpr core::Binding kSkyViewBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringIn,
                                               kSkyViewOut};
 constexpr core::Binding kApBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringIn,
@@ -51,6 +55,9 @@ const core::ComputePipelineDesc kTransmittancePass{
     "atmosphere.transmittance", spirv::atmosphere_transmittance_comp, kTransmittanceBindings};
 const core::ComputePipelineDesc kMultiScatteringPass{
     "atmosphere.multiple_scattering", spirv::atmosphere_multiple_scattering_comp, kMultiScatteringBindings};
+const core::ComputePipelineDesc kOrdersPass{"atmosphere.scattering_orders",
+                                            spirv::atmosphere_scattering_orders_comp, kOrdersBindings,
+                                            sizeof(gpu::AtmosphereOrderConstants)};
 const core::ComputePipelineDesc kSkyViewPass{"atmosphere.sky_view", spirv::atmosphere_sky_view_comp,
                                              kSkyViewBindings};
 const core::ComputePipelineDesc kApPass{"atmosphere.aerial_perspective",
@@ -84,17 +91,29 @@ uint64_t transmittanceKey(const AtmosphereSettings& s) {
     h = hashValue(h, s.transmittanceLutSize.y);
     return hashValue(h, s.transmittanceSteps);
 }
-// Multiple scattering: the transmittance's, the ground's albedo (its phase is isotropic: not g), its size,
-// directions and steps; and whether it is used.
+// Multiple scattering: the transmittance's, the ground's albedo and the model; Hillaire's: its size,
+// directions and steps (its phase is isotropic: not g); the orders': Mie's g, its sizes, directions, steps
+// and orders.
 uint64_t multipleScatteringKey(const AtmosphereSettings& s) {
     using core::hashValue;
-    uint64_t h = hashValue(transmittanceKey(s), s.multipleScatteringLutSize.x);
+    uint64_t h = hashValue(transmittanceKey(s), uint32_t(s.multipleScattering));
     for (int c = 0; c < 3; ++c)
         h = hashValue(h, s.groundAlbedo[c]);
-    h = hashValue(h, s.multipleScatteringLutSize.y);
-    h = hashValue(h, s.multipleScatteringDirections);
-    h = hashValue(h, s.multipleScatteringSteps);
-    return hashValue(h, s.multipleScattering);
+    if (s.multipleScattering == AtmosphereMultipleScattering::Hillaire) {
+        h = hashValue(h, s.multipleScatteringLutSize.x);
+        h = hashValue(h, s.multipleScatteringLutSize.y);
+        h = hashValue(h, s.multipleScatteringDirections);
+        h = hashValue(h, s.multipleScatteringSteps);
+    } else if (s.multipleScattering == AtmosphereMultipleScattering::Orders) {
+        h = hashValue(h, s.mieAnisotropy);
+        for (int a = 0; a < 3; ++a)
+            h = hashValue(h, s.scatteringOrdersLutSize[a]);
+        h = hashValue(h, s.scatteringOrdersAzimuthSize);
+        h = hashValue(h, s.scatteringOrdersDirections);
+        h = hashValue(h, s.scatteringOrdersSteps);
+        h = hashValue(h, s.scatteringOrders);
+    }
+    return h;
 }
 // Sky view and aerial perspective: the multiple scattering's, Mie's g, their sizes and steps.
 uint64_t skyViewSettingsKey(const AtmosphereSettings& s) {
@@ -184,6 +203,10 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const auto side = uint32_t(std::lround(std::sqrt(double(s.multipleScatteringDirections))));
     u.msLut = glm::uvec4(s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y, side,
                          s.multipleScatteringSteps);
+    u.ordersLut = glm::uvec4(s.scatteringOrdersLutSize.x, s.scatteringOrdersLutSize.y,
+                             s.scatteringOrdersLutSize.z, s.scatteringOrdersAzimuthSize);
+    u.ordersMarch = glm::uvec4(uint32_t(std::lround(std::sqrt(double(s.scatteringOrdersDirections)))),
+                               s.scatteringOrdersSteps, s.scatteringOrders, 0u);
     u.skyViewLut = glm::uvec4(s.skyViewLutSize.x, s.skyViewLutSize.y, s.skyViewSteps, 0u);
     u.apLut = glm::uvec4(s.aerialPerspectiveLutSize.x, s.aerialPerspectiveLutSize.y,
                          s.aerialPerspectiveLutSize.z, s.aerialPerspectiveStepsPerSlice);
@@ -202,9 +225,12 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const double slices = std::max(1u, s.aerialPerspectiveLutSize.z);
     u.applyAp = glm::vec4(inverse(s.aerialPerspectiveDistance), float(slices), float(0.5 / slices),
                           float(s.aerialPerspectiveDistance / slices));
-    u.flags = glm::uvec4((s.multipleScattering ? gpu::kAtmosphereFlagMultipleScattering : 0u) |
-                             (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u),
-                         0u, 0u, 0u);
+    const uint32_t msModel = s.multipleScattering == AtmosphereMultipleScattering::Hillaire
+                                 ? gpu::kAtmosphereFlagMultipleScattering
+                             : s.multipleScattering == AtmosphereMultipleScattering::Orders
+                                 ? gpu::kAtmosphereFlagScatteringOrders
+                                 : 0u;
+    u.flags = glm::uvec4(msModel | (depth.reversedZ ? gpu::kAtmosphereFlagDepthReversedZ : 0u), 0u, 0u, 0u);
     return u;
 }
 
@@ -302,20 +328,44 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kAtmosphereBindingUniforms, uniforms)
         .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::StorageWrite);
 
-    // Without multiple scattering (or without the sky-view LUT) the transmittance LUT stands in at the
-    // binding, never read.
-    core::ImageRef multiScattering = transmittance;
+    // Without multiple scattering a 1×1×1 image stands in at the binding, never read.
+    core::ImageRef multiScattering;
     Use multiScatteringUse = Use::BoundOnly;
-    if (s.multipleScattering) {
+    if (s.multipleScattering == AtmosphereMultipleScattering::Off) {
+        multiScattering = b.transientImage(kMultipleScatteringStandIn, lutDesc(VK_IMAGE_TYPE_3D, 1, 1, 1));
+    } else if (s.multipleScattering == AtmosphereMultipleScattering::Hillaire) {
         multiScattering = b.persistentImage(
             kMultipleScatteringLut,
-            lutDesc(VK_IMAGE_TYPE_2D, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y),
+            lutDesc(VK_IMAGE_TYPE_3D, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y),
             multipleScatteringKey(s));
         multiScatteringUse = Use::Sampled;
         b.pass(kMultiScatteringPass, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y, 1)
             .bind(gpu::kAtmosphereBindingUniforms, uniforms)
             .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::Sampled, SamplerKind::LinearClamp)
             .bind(gpu::kAtmosphereBindingMultiScattering, multiScattering, Use::StorageWrite);
+    } else if (s.multipleScattering == AtmosphereMultipleScattering::Orders) {
+        // One pass per order, each reading the order before from one working image and writing its own
+        // to the other, and adding it to the LUT (scattering_orders.comp).
+        const UVec3 n = s.scatteringOrdersLutSize;
+        const core::ImageDesc desc =
+            lutDesc(VK_IMAGE_TYPE_3D, n.x * s.scatteringOrdersAzimuthSize, n.y, 2 * n.z + 1);
+        multiScattering = b.persistentImage(kMultipleScatteringLut, desc, multipleScatteringKey(s));
+        multiScatteringUse = Use::Sampled;
+        const core::ImageRef work[2] = {b.transientImage(kScatteringOrderA, desc),
+                                        b.transientImage(kScatteringOrderB, desc)};
+        for (uint32_t order = 1; order <= s.scatteringOrders; ++order) {
+            const gpu::AtmosphereOrderConstants constants{order, order == s.scatteringOrders ? 1u : 0u};
+            b.pass(kOrdersPass, n.y, n.z, 1)
+                .push(&constants, sizeof constants)
+                .bind(gpu::kAtmosphereBindingUniforms, uniforms)
+                .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::Sampled,
+                      SamplerKind::LinearClamp)
+                .bind(gpu::kAtmosphereBindingOrdersIn, work[(order + 1) % 2],
+                      order == 1 ? Use::BoundOnly : Use::Sampled, SamplerKind::LinearClamp)
+                .bind(gpu::kAtmosphereBindingOrdersOut, work[order % 2], Use::StorageReadWrite)
+                .bind(gpu::kAtmosphereBindingMultiScattering, multiScattering,
+                      order == 1 ? Use::StorageWrite : Use::StorageReadWrite);
+        }
     }
     auto bindLuts = [&] {
         b.bind(gpu::kAtmosphereBindingUniforms, uniforms)

@@ -14,8 +14,15 @@
 namespace postfx::atmosphere {
 
 inline constexpr core::ResourceId kUniforms{"atmosphere.uniforms"};
-inline constexpr core::ResourceId kTransmittanceLut{"atmosphere.transmittance"};             // rgba16f 2D
-inline constexpr core::ResourceId kMultipleScatteringLut{"atmosphere.multiple_scattering"};  // rgba16f 2D
+inline constexpr core::ResourceId kTransmittanceLut{"atmosphere.transmittance"};  // rgba16f 2D
+// rgba16f 3D: Hillaire's Ψ (one slice) or the scattering-orders LUT (atmosphere_shared.h)
+inline constexpr core::ResourceId kMultipleScatteringLut{"atmosphere.multiple_scattering"};
+// With multiple scattering off: a 1×1×1 transient at the LUT's binding (the shaders' sampler is 3D), never
+// read.
+inline constexpr core::ResourceId kMultipleScatteringStandIn{"atmosphere.multiple_scattering_off"};
+// The scattering orders' two working images (order n and n + 1), transient, while the LUT is built.
+inline constexpr core::ResourceId kScatteringOrderA{"atmosphere.scattering_order_a"};
+inline constexpr core::ResourceId kScatteringOrderB{"atmosphere.scattering_order_b"};
 inline constexpr core::ResourceId kSkyViewLut{"atmosphere.sky_view"};                 // rgba16f 2D, 2 layers
 inline constexpr core::ResourceId kApScatteringLut{"atmosphere.aerial_perspective"};  // rgba16f 3D
 inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmittance"};  // rgba16f 2D array

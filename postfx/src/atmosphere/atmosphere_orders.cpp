@@ -87,7 +87,7 @@ double cosAzimuthAbout(const glm::dvec3& up, const glm::dvec3& dir, const glm::d
 }
 
 OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance, const OrdersTableOptions& o)
-    : model_(m), options_(o) {
+    : model_(m), requested_(o), options_(o) {
     OrdersTableOptions& s = options_;
     s.radiusSize = std::max(2u, s.radiusSize);
     s.sunSize = std::max(2u, s.sunSize);
@@ -145,7 +145,8 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
             const glm::dvec3 x(0.0, r, 0.0), toSun(std::sqrt(std::max(0.0, 1.0 - muS * muS)), muS, 0.0);
             std::vector<glm::dvec3> L(K, glm::dvec3(0.0));
             std::vector<MarchStep> steps;
-            for (uint32_t k = 0; k < K; ++k) {
+            // Azimuth columns i and side - 1 - i (z and -z) see the same light: half are marched.
+            for (uint32_t k = 0; k < (side + 1) / 2 * side; ++k) {
                 const glm::dvec3& d = dirs[k];
                 const AtmosphereSegment seg = atmosphereSegment(m, x, d);
                 if (seg.tEnd <= seg.tBegin && !seg.hitsGround) continue;
@@ -176,7 +177,7 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
                                                     : current.groundIrradiance(muG);
                     sum += T * E * m.groundAlbedo / kPi;
                 }
-                L[k] = sum;
+                L[k] = L[(side - 1 - k / side) * side + k % side] = sum;
             }
             const size_t base = cell * outputs;
             for (uint32_t out = 0; out < outputs; ++out) {
@@ -238,19 +239,19 @@ OrdersTable::Psi OrdersTable::at(double r, double mu, double muS, double cosAzim
     const Lerp lv = lerpAt(unitFromCosine(mu), s.viewSize);
     const Lerp la = lerpAt(std::acos(std::clamp(cosAzimuth, -1.0, 1.0)) / kPi, s.azimuthSize);
     Psi out;
+    const auto mixSun = [&](const glm::dvec3& a, const glm::dvec3& b) { return (1.0 - ls.a) * a + ls.a * b; };
     for (int dr = 0; dr < 2; ++dr)
-        for (int ds = 0; ds < 2; ++ds)
-            for (int dv = 0; dv < 2; ++dv)
-                for (int da = 0; da < 2; ++da) {
-                    const double w = (dr ? lr.a : 1.0 - lr.a) * (ds ? ls.a : 1.0 - ls.a) *
-                                     (dv ? lv.a : 1.0 - lv.a) * (da ? la.a : 1.0 - la.a);
-                    if (w == 0.0) continue;
-                    const size_t i = ((size_t(lr.i + dr) * s.sunSize + ls.i + ds) * s.viewSize + lv.i + dv) *
-                                         s.azimuthSize +
-                                     la.i + da;
-                    out.rayleigh += w * rayleigh_[i];
-                    out.mie += w * mie_[i];
-                }
+        for (int dv = 0; dv < 2; ++dv)
+            for (int da = 0; da < 2; ++da) {
+                const double w = (dr ? lr.a : 1.0 - lr.a) * (dv ? lv.a : 1.0 - lv.a) * (da ? la.a : 1.0 - la.a);
+                if (w == 0.0) continue;
+                const auto index = [&](int ds) {
+                    return ((size_t(lr.i + dr) * s.sunSize + ls.i + ds) * s.viewSize + lv.i + dv) * s.azimuthSize +
+                           la.i + da;
+                };
+                out.rayleigh += w * mixSun(rayleigh_[index(0)], rayleigh_[index(1)]);
+                out.mie += w * mixSun(mie_[index(0)], mie_[index(1)]);
+            }
     return out;
 }
 
@@ -266,6 +267,27 @@ glm::dvec3 OrdersTable::source(const glm::dvec3& position, const glm::dvec3& dir
 glm::dvec3 OrdersTable::groundIrradiance(double muS) const {
     const Lerp l = lerpAt(unitFromCosine(muS), options_.sunSize);
     return (1.0 - l.a) * ground_[l.i] + l.a * ground_[l.i + 1];
+}
+
+OrdersTableOptions coarseOrdersOptions() {
+    OrdersTableOptions o;
+    o.radiusSize = 8;
+    o.sunSize = 24;
+    o.viewSize = 16;
+    o.azimuthSize = 4;
+    o.directions = 144;
+    o.steps = 32;
+    o.orders = 6;
+    return o;
+}
+
+std::shared_ptr<const OrdersTable> sharedOrdersTable(const Model& m, const OrdersTableOptions& o) {
+    static TableCache<OrdersTable> cache;
+    return cache.get([&](const OrdersTable& t) { return t.model() == m && t.requested() == o; },
+                     [&] {
+                         const std::shared_ptr<const TransmittanceTable> t = sharedTransmittanceTable(m);
+                         return std::make_shared<const OrdersTable>(m, *t, o);
+                     });
 }
 
 }  // namespace postfx::atmosphere

@@ -23,6 +23,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace postfx::atmosphere {
@@ -30,11 +31,13 @@ namespace postfx::atmosphere {
 // Grid nodes at unit coordinates i/(n - 1) of: r: √((r - ground)/(top - ground)); μs and μ:
 // (1 + sign(c)·√|c|)/2 (finer at the horizon); φ: φ/π.
 struct OrdersTableOptions {
-    uint32_t radiusSize = 16, sunSize = 32, viewSize = 32, azimuthSize = 8;  // each >= 2
-    uint32_t directions = 256;                                               // a perfect square
-    uint32_t steps = 64;                                                     // per direction
+    uint32_t radiusSize = 24, sunSize = 96, viewSize = 32, azimuthSize = 16;  // each >= 2
+    uint32_t directions = 576;                                                // a perfect square
+    uint32_t steps = 64;                                                      // per direction
     uint32_t orders = 8;   // computed orders after the first (2 .. orders + 1), then the tail
     uint32_t threads = 0;  // 0: all hardware threads
+
+    bool operator==(const OrdersTableOptions&) const = default;
 };
 
 // A ray's march steps, `steps` in all (>= 1), over [tBegin, tEnd] of the ray at radius r with cosine μ:
@@ -64,13 +67,22 @@ public:
     glm::dvec3 groundIrradiance(double muS) const;
 
     const Model& model() const { return model_; }
-    const OrdersTableOptions& options() const { return options_; }
+    const OrdersTableOptions& options() const { return options_; }  // as built (sizes clamped)
+    const OrdersTableOptions& requested() const { return requested_; }
 
 private:
     Model model_;
-    OrdersTableOptions options_;
+    OrdersTableOptions requested_, options_;
     // Ψ at node (φ fastest, then μ, μs, r): rayleigh_ and mie_; E at μs nodes.
     std::vector<glm::dvec3> rayleigh_, mie_, ground_;
 };
+
+// A coarse table for what integrates the sky or adds it to something else (the public CPU evaluations'
+// sky irradiance, the clouds' reference's air in front of them): about 0.3 s to build on two cores.
+OrdersTableOptions coarseOrdersOptions();
+
+// The table for `m` and `o` over the shared transmittance table, built on first use and shared (a few
+// recent ones are kept; thread-safe).
+std::shared_ptr<const OrdersTable> sharedOrdersTable(const Model& m, const OrdersTableOptions& o = {});
 
 }  // namespace postfx::atmosphere

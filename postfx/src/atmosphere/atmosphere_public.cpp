@@ -3,6 +3,7 @@
 // (atmosphere_model.h, atmosphere_reference.h) without the GPU's LUTs. docs/effects/atmosphere.md, "CPU
 // evaluations", states their quadratures and measured cost.
 #include "atmosphere/atmosphere_model.h"
+#include "atmosphere/atmosphere_orders.h"
 #include "atmosphere/atmosphere_reference.h"
 
 #include <postfx/atmosphere.h>
@@ -92,10 +93,11 @@ dvec3 stepIntegral(const dvec3& extinction, double delta) {
     return r;
 }
 
-// Luminance per unit sun illuminance reaching `origin` along `dir` (integrateViewRay's march with Ψ from
-// the table, or none when `psi` is null), the lit ground included where the ray ends on it.
-dvec3 viewRayLuminance(const Model& m, const PsiTable* psi, const dvec3& origin, const dvec3& dir,
-                       const dvec3& toSun) {
+// Luminance per unit sun illuminance reaching `origin` along `dir` (integrateViewRay's march with the orders
+// from `orders` or Ψ from `psi`, or neither when both are null), the lit ground included where the ray ends
+// on it.
+dvec3 viewRayLuminance(const Model& m, const PsiTable* psi, const atmosphere::OrdersTable* orders,
+                       const dvec3& origin, const dvec3& dir, const dvec3& toSun) {
     const atmosphere::AtmosphereSegment seg = atmosphere::atmosphereSegment(m, origin, dir);
     if (seg.tEnd <= seg.tBegin && !seg.hitsGround) return dvec3(0.0);
     const double cosViewSun = glm::dot(dir, toSun);
@@ -115,6 +117,7 @@ dvec3 viewRayLuminance(const Model& m, const PsiTable* psi, const dvec3& origin,
         const atmosphere::Medium md = atmosphere::mediumAt(m, r - m.groundRadius);
         const dvec3 tSun = atmosphere::sunTransmittance(m, p, toSun, kSampleSunSteps);
         dvec3 S = tSun * (md.rayleighScattering * phaseR + md.mieScattering * phaseM);
+        if (orders) S += orders->source(p, dir, toSun);
         if (psi) S += md.scattering * psi->at(r, glm::dot(p / r, toSun));
         L += T * S * stepIntegral(md.extinction, dt);
         const dvec3 tau = md.extinction * dt;
@@ -122,10 +125,10 @@ dvec3 viewRayLuminance(const Model& m, const PsiTable* psi, const dvec3& origin,
     }
     if (seg.hitsGround) {
         const dvec3 p = origin + seg.tEnd * dir;
-        const double nDotL = std::max(0.0, glm::dot(glm::normalize(p), toSun));
-        if (nDotL > 0.0)
-            L +=
-                T * atmosphere::sunTransmittance(m, p, toSun, kSampleSunSteps) * nDotL * m.groundAlbedo / kPi;
+        const double muG = glm::dot(glm::normalize(p), toSun);
+        dvec3 E = orders ? orders->groundIrradiance(muG) : dvec3(0.0);
+        if (muG > 0.0) E += atmosphere::sunTransmittance(m, p, toSun, kSampleSunSteps) * muG;
+        L += T * E * m.groundAlbedo / kPi;
     }
     return L;
 }
@@ -160,7 +163,12 @@ Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& wo
     if (!unitDirection(toSun, s)) return Vec3(0.0f);
     const Model m = atmosphere::modelFrom(settings);
     const dvec3 x = atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, dvec3(worldPosition)));
-    const std::shared_ptr<const PsiTable> psi = settings.multipleScattering ? psiTable(m) : nullptr;
+    const std::shared_ptr<const PsiTable> psi =
+        settings.multipleScattering == AtmosphereMultipleScattering::Hillaire ? psiTable(m) : nullptr;
+    const std::shared_ptr<const atmosphere::OrdersTable> orders =
+        settings.multipleScattering == AtmosphereMultipleScattering::Orders
+            ? atmosphere::sharedOrdersTable(m, atmosphere::coarseOrdersOptions())
+            : nullptr;
 
     // The local frame: n the zenith at x, (t, b) across it.
     const dvec3 n = glm::normalize(x);
@@ -178,7 +186,7 @@ Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& wo
         for (uint32_t j = 0; j < kAzimuths; ++j) {
             const double phi = 2.0 * kPi * (j + 0.5) / kAzimuths;
             const dvec3 dir = cosTheta * n + sinTheta * (std::cos(phi) * t + std::sin(phi) * b);
-            sum += cosTheta * viewRayLuminance(m, psi.get(), x, dir, s);
+            sum += cosTheta * viewRayLuminance(m, psi.get(), orders.get(), x, dir, s);
         }
     }
     const dvec3 irradiance = sum * (2.0 * kPi / (double(kRings) * kAzimuths));

@@ -2,6 +2,7 @@
 // without LUTs, in double, per pixel with fine midpoint steps (integrateViewRay), the sun's transmittance
 // and Ψ from fine tables (atmosphere_reference.h). Pixel rays and sky pixels as the fog references'
 // (fog/reference_image.h); multithreaded over rows.
+#include "atmosphere/atmosphere_orders.h"
 #include "atmosphere/atmosphere_reference.h"
 #include "atmosphere/atmosphere_settings.h"
 #include "core/checks.h"
@@ -97,9 +98,21 @@ Status renderAtmosphere(const AtmosphereInputs& in, std::vector<float>& out) {
     const atmosphere::Model m = atmosphere::modelFrom(in.settings);
     std::shared_ptr<const atmosphere::TransmittanceTable> transmittance;
     std::shared_ptr<const atmosphere::PsiTable> psi;
+    std::shared_ptr<const atmosphere::OrdersTable> orders;
     try {
         transmittance = atmosphere::sharedTransmittanceTable(m);
-        if (in.settings.multipleScattering) {
+        if (in.settings.multipleScattering == AtmosphereMultipleScattering::Orders) {
+            atmosphere::OrdersTableOptions oo;
+            oo.viewSize = in.ordersViewNodes;
+            oo.sunSize = in.ordersSunNodes;
+            oo.radiusSize = in.ordersHeightNodes;
+            oo.azimuthSize = in.ordersAzimuthNodes;
+            oo.directions = in.ordersDirections;
+            oo.steps = in.ordersSteps;
+            oo.orders = in.ordersCount;
+            oo.threads = in.threads;
+            orders = atmosphere::sharedOrdersTable(m, oo);
+        } else if (in.settings.multipleScattering == AtmosphereMultipleScattering::Hillaire) {
             atmosphere::PsiTableOptions po;
             po.muSSize = in.psiTableMuS;
             po.heightSize = in.psiTableHeights;
@@ -127,9 +140,10 @@ Status renderAtmosphere(const AtmosphereInputs& in, std::vector<float>& out) {
 
     atmosphere::ViewRayOptions base;
     base.steps = in.stepsPerPixel;
-    base.multipleScattering = in.settings.multipleScattering;
+    base.multipleScattering = in.settings.multipleScattering != AtmosphereMultipleScattering::Off;
     base.transmittanceTable = transmittance.get();
     base.psiTable = psi.get();
+    base.ordersTable = orders.get();
 
     detail::forEachRow(in.height, in.threads, [&](uint32_t j) {
         for (uint32_t i = 0; i < in.width; ++i) {

@@ -94,6 +94,29 @@ Status validateSettings(const AtmosphereSettings& s) {
         return bad("multiple_scattering_directions", std::to_string(s.multipleScatteringDirections) +
                                                          " is not a perfect square (n×n directions)");
     if (Status r = count("multiple_scattering_steps", s.multipleScatteringSteps, 1, kMaxSteps); !r) return r;
+    if (uint32_t(s.multipleScattering) > uint32_t(AtmosphereMultipleScattering::Orders))
+        return bad("multiple_scattering",
+                   std::to_string(uint32_t(s.multipleScattering)) + " is not off, hillaire or orders");
+    const UVec3 orders = s.scatteringOrdersLutSize;
+    if (Status r = count("scattering_orders_lut_size", orders.x, kMinLutSide, kMaxOrdersViewSide); !r)
+        return r;
+    if (Status r = count("scattering_orders_lut_size", orders.y, kMinLutSide, kMaxOrdersSunSide); !r)
+        return r;
+    if (Status r = count("scattering_orders_lut_size", orders.z, kMinLutSide, kMaxOrdersHeightSide); !r)
+        return r;
+    if (Status r = count("scattering_orders_azimuth_size", s.scatteringOrdersAzimuthSize, kMinOrdersAzimuths,
+                         kMaxOrdersAzimuths);
+        !r)
+        return r;
+    if (Status r = count("scattering_orders_directions", s.scatteringOrdersDirections, kMinDirections,
+                         kMaxOrdersDirections);
+        !r)
+        return r;
+    if (!perfectSquare(s.scatteringOrdersDirections))
+        return bad("scattering_orders_directions", std::to_string(s.scatteringOrdersDirections) +
+                                                       " is not a perfect square (n×n directions)");
+    if (Status r = count("scattering_orders_steps", s.scatteringOrdersSteps, 1, kMaxSteps); !r) return r;
+    if (Status r = count("scattering_orders", s.scatteringOrders, 1, kMaxScatteringOrders); !r) return r;
     if (Status r = size("sky_view_lut_size", s.skyViewLutSize, kMaxLut2dSide); !r) return r;
     if (Status r = count("sky_view_steps", s.skyViewSteps, 1, kMaxSteps); !r) return r;
     if (Status r = size("aerial_perspective_lut_size", s.aerialPerspectiveLutSize, kMaxAerialPerspectiveSide);

@@ -19,6 +19,11 @@ constexpr uint32_t kMaxAerialPerspectiveSide = 256;
 constexpr uint32_t kMaxSteps = 1024;                           // any LUT's march
 constexpr uint32_t kMinDirections = 4, kMaxDirections = 1024;  // multiple scattering, a perfect square
 constexpr uint32_t kMaxStepsPerSlice = 64;                     // aerial perspective
+// The scattering-orders LUT: a 3D image of (view·azimuth, sun, 2·height + 1) texels.
+constexpr uint32_t kMaxOrdersViewSide = 64, kMaxOrdersSunSide = 128, kMaxOrdersHeightSide = 64;
+constexpr uint32_t kMinOrdersAzimuths = 2, kMaxOrdersAzimuths = 16;
+constexpr uint32_t kMaxScatteringOrders = 32;
+constexpr uint32_t kMaxOrdersDirections = 576;  // kAtmosphereOrdersMaxDirections
 
 // InvalidArgument naming the field by its key under effects.atmosphere ("atmosphere.mie_anisotropy: 1 is
 // outside (-1, 1)") for any value out of range, NaN or Inf; success otherwise.

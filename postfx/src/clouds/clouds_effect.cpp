@@ -395,9 +395,10 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kCloudBindingCoverageMap, coverageMap, mapUse, SamplerKind::LinearRepeat);
     if (withAtmosphere) {
         // The multiple-scattering LUT for the aerial perspective beyond the LUT's depth; without multiple
-        // scattering the atmosphere declares none: the transmittance LUT stands in, never read.
+        // scattering the atmosphere's 3D stand-in, never read.
         const core::ImageRef transmittanceLut = b.find(atmosphere::kTransmittanceLut);
         const core::ImageRef multiScattering = b.find(atmosphere::kMultipleScatteringLut);
+        const core::ImageRef msStandIn = b.find(atmosphere::kMultipleScatteringStandIn);
         b.bind(gpu::kCloudBindingAtmosphere, atmosphereUniforms)
             .bind(gpu::kCloudBindingTransmittanceLut, transmittanceLut, Use::Sampled,
                   SamplerKind::LinearClamp)
@@ -406,7 +407,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kCloudBindingApTransmittance, b.find(atmosphere::kApTransmittanceLut), Use::Sampled,
                   SamplerKind::LinearClamp)
             .bind(gpu::kCloudBindingMultiScattering,
-                  multiScattering.valid() ? multiScattering : transmittanceLut,
+                  multiScattering.valid() ? multiScattering : msStandIn,
                   multiScattering.valid() ? Use::Sampled : Use::BoundOnly, SamplerKind::LinearClamp);
     }
     if (!scatter) {  // full size without temporal: the march composites

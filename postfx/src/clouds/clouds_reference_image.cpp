@@ -3,6 +3,7 @@
 // rays and the composite as the fog references' (fog/reference_image.h), the aerial perspective in front of
 // the clouds from the atmosphere's reference (integrateViewRay).
 #include "atmosphere/atmosphere_model.h"
+#include "atmosphere/atmosphere_orders.h"
 #include "atmosphere/atmosphere_reference.h"
 #include "clouds/clouds_effect.h"
 #include "clouds/clouds_model.h"
@@ -130,6 +131,7 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out, std::vector<
 
     // The air in front of the clouds (atmosphere on): reference (a)'s integration to their mean distance.
     std::shared_ptr<const atmosphere::PsiTable> psi;
+    std::shared_ptr<const atmosphere::OrdersTable> orders;
     atmosphere::Model air;
     atmosphere::Sun sun;
     atmosphere::ViewRayOptions airOptions;
@@ -137,16 +139,20 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out, std::vector<
     if (in.atmosphere.enabled) {
         air = atmosphere::modelFrom(in.atmosphere);
         try {
-            if (in.atmosphere.multipleScattering) psi = atmosphere::sharedPsiTable(air);
+            if (in.atmosphere.multipleScattering == AtmosphereMultipleScattering::Hillaire)
+                psi = atmosphere::sharedPsiTable(air);
+            if (in.atmosphere.multipleScattering == AtmosphereMultipleScattering::Orders)
+                orders = atmosphere::sharedOrdersTable(air, atmosphere::coarseOrdersOptions());
         } catch (const std::bad_alloc&) {
             return {Result::OutOfMemory, "reference::renderClouds: cannot allocate the atmosphere's tables"};
         }
         sun.toSun = glm::normalize(dvec3(in.sun.toSun));
         sun.illuminance = dvec3(in.sun.illuminance);
         airOptions.steps = 256;
-        airOptions.multipleScattering = in.atmosphere.multipleScattering;
+        airOptions.multipleScattering = in.atmosphere.multipleScattering != AtmosphereMultipleScattering::Off;
         airOptions.transmittanceTable = model.atmosphere.get();
         airOptions.psiTable = psi.get();
+        airOptions.ordersTable = orders.get();
         airOptions.throughGround = true;
         airOrigin =
             atmosphere::clampAboveGround(air, atmosphere::planetCentred(air, dvec3(in.camera.position)));
