@@ -406,8 +406,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
                   SamplerKind::LinearClamp)
             .bind(gpu::kCloudBindingApTransmittance, b.find(atmosphere::kApTransmittanceLut), Use::Sampled,
                   SamplerKind::LinearClamp)
-            .bind(gpu::kCloudBindingMultiScattering,
-                  multiScattering.valid() ? multiScattering : msStandIn,
+            .bind(gpu::kCloudBindingMultiScattering, multiScattering.valid() ? multiScattering : msStandIn,
                   multiScattering.valid() ? Use::Sampled : Use::BoundOnly, SamplerKind::LinearClamp);
     }
     if (!scatter) {  // full size without temporal: the march composites
