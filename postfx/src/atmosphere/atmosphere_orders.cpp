@@ -239,19 +239,19 @@ OrdersTable::Psi OrdersTable::at(double r, double mu, double muS, double cosAzim
     const Lerp lv = lerpAt(unitFromCosine(mu), s.viewSize);
     const Lerp la = lerpAt(std::acos(std::clamp(cosAzimuth, -1.0, 1.0)) / kPi, s.azimuthSize);
     Psi out;
-    const auto mixSun = [&](const glm::dvec3& a, const glm::dvec3& b) { return (1.0 - ls.a) * a + ls.a * b; };
     for (int dr = 0; dr < 2; ++dr)
-        for (int dv = 0; dv < 2; ++dv)
-            for (int da = 0; da < 2; ++da) {
-                const double w = (dr ? lr.a : 1.0 - lr.a) * (dv ? lv.a : 1.0 - lv.a) * (da ? la.a : 1.0 - la.a);
-                if (w == 0.0) continue;
-                const auto index = [&](int ds) {
-                    return ((size_t(lr.i + dr) * s.sunSize + ls.i + ds) * s.viewSize + lv.i + dv) * s.azimuthSize +
-                           la.i + da;
-                };
-                out.rayleigh += w * mixSun(rayleigh_[index(0)], rayleigh_[index(1)]);
-                out.mie += w * mixSun(mie_[index(0)], mie_[index(1)]);
-            }
+        for (int ds = 0; ds < 2; ++ds)
+            for (int dv = 0; dv < 2; ++dv)
+                for (int da = 0; da < 2; ++da) {
+                    const double w = (dr ? lr.a : 1.0 - lr.a) * (ds ? ls.a : 1.0 - ls.a) *
+                                     (dv ? lv.a : 1.0 - lv.a) * (da ? la.a : 1.0 - la.a);
+                    if (w == 0.0) continue;
+                    const size_t i = ((size_t(lr.i + dr) * s.sunSize + ls.i + ds) * s.viewSize + lv.i + dv) *
+                                         s.azimuthSize +
+                                     la.i + da;
+                    out.rayleigh += w * rayleigh_[i];
+                    out.mie += w * mie_[i];
+                }
     return out;
 }
 
