@@ -107,6 +107,15 @@ bool reference(const AtmosphereView& view, const AtmosphereRunArgs& args, const 
     in.stepsPerPixel = args.referenceSteps;
     in.psiDirections = args.psiDirections;
     in.psiSteps = args.psiSteps;
+    if (args.coarseOrders) {
+        in.ordersViewNodes = 16;
+        in.ordersSunNodes = 32;
+        in.ordersHeightNodes = 8;
+        in.ordersAzimuthNodes = 4;
+        in.ordersDirections = 144;
+        in.ordersSteps = 32;
+        in.ordersCount = 4;
+    }
     if (const postfx::Status st = postfx::reference::renderAtmosphere(in, out.rgba); !st.ok()) {
         error = "renderAtmosphere: " + st.message;
         return false;

@@ -17,6 +17,9 @@ struct AtmosphereRunArgs {
     uint32_t referenceSteps = 512;  // reference (a)'s midpoint steps per pixel
     uint32_t errorStride = 1;
     uint32_t psiDirections = 256, psiSteps = 100;  // reference (a)'s Ψ table
+    // Reference (a)'s scattering-orders table: false, its defaults (postfx::reference::AtmosphereInputs);
+    // true, a coarse one (seconds on lavapipe's machine, as --quick's Ψ table).
+    bool coarseOrders = false;
     std::string out;
     std::vector<std::string> views;       // atmosphereViews() names; empty: all
     std::vector<std::string> sweepViews;  // the views the sweep runs on; empty: every measured view

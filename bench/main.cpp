@@ -726,6 +726,7 @@ int runAtmosphere(const Args& args, const std::string& command) {
     if (args.quick) {
         a.psiDirections = 64;  // reference (a)'s Ψ table, coarser: seconds on lavapipe's machine
         a.psiSteps = 40;
+        a.coarseOrders = true;
     }
     a.sweep = bench::defaultAtmosphereSweep(args.quick);
     if (args.atmosphereSweepNone) a.sweep.values.clear();

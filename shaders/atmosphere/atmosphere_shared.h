@@ -65,16 +65,19 @@ struct AtmosphereUniforms {
     mat4 clipToView;    // Vulkan clip -> camera-relative world direction (this frame's camera)
     mat4 apClipToView;  // the same for the camera the AP LUT was built for
     mat4 apViewToClip;  // its inverse: camera-relative world -> that camera's clip
-    vec4 radii;         // x: ground, y: top [m], z: top² - ground²
-    vec4 rayleigh;      // rgb: scattering at the ground [1/m], w: 1 / scale height [1/m]
-    vec4 mie;           // x: scattering, y: absorption at the ground [1/m], z: 1 / scale height, w: g
-    vec4 ozone;         // rgb: absorption at the peak [1/m], w: peak altitude [m]
-    vec4 albedo;        // rgb: ground albedo, w: ozone half width [m]
-    vec4 camera;        // xyz: planet-centred camera (clamped above the ground) [m], w: its radius
-    vec4 apCamera;      // xyz: planet-centred camera of the AP LUT [m], w: AP distance [m]
-    vec4 apOffset;      // xyz: this camera - the AP LUT's camera [m]
-    vec4 toSun;         // xyz: unit toward the sun, w: cos(sun angular radius)
-    vec4 sun;           // rgb: illuminance outside the atmosphere [lux], w: 1 / disk solid angle [1/sr]
+    // x: ground, y: top [m], z: top² - ground²; w: the scattering-orders LUT's storage scale (its Ψ and E
+    // are radiance-like: as the luminance LUTs' scale for a thin atmosphere, at most 1 for a thick one, whose
+    // light near the ground would otherwise fall below half floats' normal range)
+    vec4 radii;
+    vec4 rayleigh;  // rgb: scattering at the ground [1/m], w: 1 / scale height [1/m]
+    vec4 mie;       // x: scattering, y: absorption at the ground [1/m], z: 1 / scale height, w: g
+    vec4 ozone;     // rgb: absorption at the peak [1/m], w: peak altitude [m]
+    vec4 albedo;    // rgb: ground albedo, w: ozone half width [m]
+    vec4 camera;    // xyz: planet-centred camera (clamped above the ground) [m], w: its radius
+    vec4 apCamera;  // xyz: planet-centred camera of the AP LUT [m], w: AP distance [m]
+    vec4 apOffset;  // xyz: this camera - the AP LUT's camera [m]
+    vec4 toSun;     // xyz: unit toward the sun, w: cos(sun angular radius)
+    vec4 sun;       // rgb: illuminance outside the atmosphere [lux], w: 1 / disk solid angle [1/sr]
     // x: radius, y: sun's cos zenith the sky-view LUT was built for; z: no-geometry depth; w: the storage
     // scale of the luminance LUTs (multiple scattering, sky view, aerial perspective): they hold luminance
     // per unit illuminance times this, so that thin and dense atmospheres both stay normal half floats

@@ -3,8 +3,8 @@
 // i/(n - 1) of: height √((r - ground)/(top - ground)); μ and μs (1 + sign(c)·√|c|)/2 (finer at the
 // horizon); azimuth φ/π. The 3D image holds azimuth a's block of μ nodes at x in [a·nμ, (a + 1)·nμ), the
 // sun's nodes along y, Rayleigh's height nodes at z in [0, nr), Mie's in [nr, 2nr), and the ground's E≥2
-// in slice 2nr; values per unit sun illuminance times the storage scale (skyView.w). Expects `atmo` and
-// model.glsl.
+// in slice 2nr; values per unit sun illuminance times the orders' storage scale (radii.w). Expects `atmo`
+// and model.glsl.
 #ifndef POSTFX_ATMOSPHERE_ORDERS_LOOKUP_GLSL
 #define POSTFX_ATMOSPHERE_ORDERS_LOOKUP_GLSL
 
@@ -43,7 +43,7 @@ vec3 ordersSource(sampler3D lut, vec3 p, float r, vec3 d, vec3 toSun, Atmosphere
     float zm = (z + float(n.z)) * inverseSize.z;
     vec3 mie = mix(textureLod(lut, vec3(x * inverseSize.x, y, zm), 0.0).rgb,
                    textureLod(lut, vec3(x1 * inverseSize.x, y, zm), 0.0).rgb, wa);
-    return (m.rayleighScattering * rayleigh + m.mieScattering * mie) / atmo.skyView.w;
+    return (m.rayleighScattering * rayleigh + m.mieScattering * mie) / atmo.radii.w;
 }
 
 // E≥2 per unit illuminance at a ground point whose zenith makes cosine muS with the sun.
@@ -51,7 +51,7 @@ vec3 ordersGroundIrradiance(sampler3D lut, float muS) {
     uvec4 n = atmo.ordersLut;
     float y = (ordersUnitFromCosine(muS) * float(n.y - 1u) + 0.5) / float(n.y);
     float z = (float(2u * n.z) + 0.5) / float(2u * n.z + 1u);
-    return textureLod(lut, vec3(0.5 / float(n.x * n.w), y, z), 0.0).rgb / atmo.skyView.w;
+    return textureLod(lut, vec3(0.5 / float(n.x * n.w), y, z), 0.0).rgb / atmo.radii.w;
 }
 
 #endif

@@ -91,7 +91,7 @@ void main() {
     }
     barrier();
 
-    float scale = atmo.skyView.w;
+    float scale = atmo.radii.w;
     uint outputs = n.x * n.w;
     vec3 last = vec3(0.0), before = vec3(0.0);
     for (uint o = lane; o < outputs; o += kAtmosphereOrdersGroupSize) {

@@ -209,7 +209,7 @@ TEST_F(AtmosphereGpuTest, ScatteringOrdersLutMatchesReference) {
     const uint32_t azimuths = frame.atmosphere.scatteringOrdersAzimuthSize;
     ASSERT_EQ(lut.width, n.x * azimuths);
     ASSERT_EQ(lut.depth, 2 * n.z + 1);
-    const double scale = atm::lutStorageScale(frame.atmosphere);
+    const double scale = atm::ordersStorageScale(frame.atmosphere);
     const atm::Model m = atm::modelFrom(frame.atmosphere);
     atm::OrdersTableOptions o;
     o.viewSize = n.x;

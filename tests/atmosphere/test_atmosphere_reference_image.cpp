@@ -1,6 +1,7 @@
 // reference::renderAtmosphere (reference (a), docs/effects/atmosphere.md, "Reference"): its pixels against
 // integrateViewRay, the sun disk, the ground hiding the host color, geometry pixels, the camera below the
 // ground and in space, its input checks; and the fog references' sun through the atmosphere.
+#include "atmosphere/atmosphere_orders.h"
 #include "atmosphere/atmosphere_reference.h"
 
 #include <postfx/reference.h>
@@ -54,6 +55,14 @@ struct Frame {
         in.psiSteps = 10;
         in.psiTableMuS = 16;
         in.psiTableHeights = 16;
+        // A small scattering-orders table (the default model), built once for every test here.
+        in.ordersViewNodes = 16;
+        in.ordersSunNodes = 16;
+        in.ordersHeightNodes = 8;
+        in.ordersAzimuthNodes = 4;
+        in.ordersDirections = 144;
+        in.ordersSteps = 32;
+        in.ordersCount = 4;
         in.threads = 2;
     }
     // Looking along `forward` (world), up +y unless forward is vertical.
@@ -82,10 +91,22 @@ ViewRayResult expectedRay(const Frame& f, const glm::dvec3& dir, bool ground, do
     po.psi.directions = f.in.psiDirections;
     po.psi.steps = f.in.psiSteps;
     const auto psi = sharedPsiTable(m, po);
+    OrdersTableOptions oo;
+    oo.viewSize = f.in.ordersViewNodes;
+    oo.sunSize = f.in.ordersSunNodes;
+    oo.radiusSize = f.in.ordersHeightNodes;
+    oo.azimuthSize = f.in.ordersAzimuthNodes;
+    oo.directions = f.in.ordersDirections;
+    oo.steps = f.in.ordersSteps;
+    oo.orders = f.in.ordersCount;
+    oo.threads = f.in.threads;
+    const auto orders = sharedOrdersTable(m, oo);
     ViewRayOptions o;
     o.steps = f.in.stepsPerPixel;
     o.transmittanceTable = transmittance.get();
     o.psiTable = psi.get();
+    if (f.in.settings.multipleScattering == postfx::AtmosphereMultipleScattering::Orders)
+        o.ordersTable = orders.get();
     o.ground = ground;
     o.maxDistance = maxDistance;
     Sun sun;

@@ -159,8 +159,14 @@ TEST_F(AtmosphereStability, EmptyAndDenseMedia) {
     s.mieScattering *= 1000.0f;
     s.mieAbsorption *= 1000.0f;
     s.ozoneAbsorption = s.ozoneAbsorption * 1000.0f;
-    // Optical depths of ~260: the LUTs' default steps do not resolve them (15% measured; finer steps do).
-    expectStable("media 1000x Earth's", 0.25);
+    // Optical depths of ~260: stable with the scattering orders (the default), compared with Hillaire's
+    // model, whose reference agrees with the GPU (the LUTs' default steps do not resolve such media: 15 %
+    // measured; finer steps do). The orders' reference is not comparable here: its table's linear
+    // interpolation between height nodes leaks light down past e^-250, order after order
+    // (docs/effects/atmosphere.md, "Stability").
+    expectStable("media 1000x Earth's, scattering orders");
+    s.multipleScattering = postfx::AtmosphereMultipleScattering::Hillaire;
+    expectStable("media 1000x Earth's, Hillaire's model", 0.25);
 }
 
 // Earth scaled by 1e-4 (a planet of 636 m, every length 1e4 times shorter, every coefficient 1e4 times

@@ -169,7 +169,7 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     const double g = s.groundRadius, t = s.topRadius;
     // The sky-view LUT's radius (clamped onto the ground).
     const double skyRadius = std::max(glm::length(v.skyView.camera), g);
-    u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), 0.0f);
+    u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), float(ordersStorageScale(s)));
     u.rayleigh = glm::vec4(s.rayleighScattering, float(1.0 / s.rayleighScaleHeight));
     u.mie = glm::vec4(s.mieScattering, s.mieAbsorption, float(1.0 / s.mieScaleHeight), s.mieAnisotropy);
     u.ozone = glm::vec4(s.ozoneAbsorption, s.ozoneCenterHeight);
@@ -270,6 +270,10 @@ double lutStorageScale(const AtmosphereSettings& s) {
         tau = std::max(tau, double(s.rayleighScattering[c]) * s.rayleighScaleHeight +
                                 double(s.mieScattering) * s.mieScaleHeight);
     return std::clamp(1.0 / std::max(tau, 1e-30), 1e-3, 1e6);
+}
+
+double ordersStorageScale(const AtmosphereSettings& s) {
+    return std::max(1.0, lutStorageScale(s));
 }
 
 AtmosphereEffect::AtmosphereEffect(const core::Gpu&) {}

@@ -39,6 +39,11 @@ SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& builder, core:
 // an atmosphere 1e-4 or 1e3 times as dense as Earth's; in [1e-3, 1e6].
 double lutStorageScale(const AtmosphereSettings& settings);
 
+// The scattering-orders LUT's storage scale (AtmosphereUniforms::radii.w): max(1, lutStorageScale). Its
+// values are radiance per unit illuminance, about τ/4π in a thin atmosphere and down to about 1/τ near the
+// ground of a thick one.
+double ordersStorageScale(const AtmosphereSettings& settings);
+
 // The key of every setting the aerial perspective and sky view depend on (media, sizes, steps): consumers'
 // temporal histories (the clouds') reset when it changes.
 uint64_t viewLutSettingsKey(const AtmosphereSettings& settings);
