@@ -91,16 +91,7 @@ ViewRayResult expectedRay(const Frame& f, const glm::dvec3& dir, bool ground, do
     po.psi.directions = f.in.psiDirections;
     po.psi.steps = f.in.psiSteps;
     const auto psi = sharedPsiTable(m, po);
-    OrdersTableOptions oo;
-    oo.viewSize = f.in.ordersViewNodes;
-    oo.sunSize = f.in.ordersSunNodes;
-    oo.radiusSize = f.in.ordersHeightNodes;
-    oo.azimuthSize = f.in.ordersAzimuthNodes;
-    oo.directions = f.in.ordersDirections;
-    oo.steps = f.in.ordersSteps;
-    oo.orders = f.in.ordersCount;
-    oo.threads = f.in.threads;
-    const auto orders = sharedOrdersTable(m, oo);
+    const auto orders = sharedOrdersTable(m, ordersOptionsFrom(f.in));
     ViewRayOptions o;
     o.steps = f.in.stepsPerPixel;
     o.transmittanceTable = transmittance.get();

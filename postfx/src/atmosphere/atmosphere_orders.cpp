@@ -34,17 +34,6 @@ Lerp lerpAt(double x, uint32_t n) {
     return {i, f - i};
 }
 
-glm::dvec3 stepIntegral(const glm::dvec3& extinction, double delta) {
-    glm::dvec3 r;
-    for (int c = 0; c < 3; ++c)
-        r[c] = extinction[c] > 0.0 ? -std::expm1(-extinction[c] * delta) / extinction[c] : delta;
-    return r;
-}
-
-glm::dvec3 expNeg(const glm::dvec3& tau) {
-    return {std::exp(-tau.x), std::exp(-tau.y), std::exp(-tau.z)};
-}
-
 // Quadratic boundaries of `n` steps from `from` toward `to` (either order), appended to `out` as steps.
 void quadraticSteps(double from, double to, uint32_t n, std::vector<MarchStep>& out) {
     double previous = from;
@@ -267,6 +256,19 @@ glm::dvec3 OrdersTable::source(const glm::dvec3& position, const glm::dvec3& dir
 glm::dvec3 OrdersTable::groundIrradiance(double muS) const {
     const Lerp l = lerpAt(unitFromCosine(muS), options_.sunSize);
     return (1.0 - l.a) * ground_[l.i] + l.a * ground_[l.i + 1];
+}
+
+OrdersTableOptions ordersOptionsFrom(const reference::AtmosphereInputs& in) {
+    OrdersTableOptions o;
+    o.viewSize = in.ordersViewNodes;
+    o.sunSize = in.ordersSunNodes;
+    o.radiusSize = in.ordersHeightNodes;
+    o.azimuthSize = in.ordersAzimuthNodes;
+    o.directions = in.ordersDirections;
+    o.steps = in.ordersSteps;
+    o.orders = in.ordersCount;
+    o.threads = in.threads;
+    return o;
 }
 
 OrdersTableOptions coarseOrdersOptions() {

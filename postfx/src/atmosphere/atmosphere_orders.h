@@ -20,6 +20,8 @@
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_reference.h"
 
+#include <postfx/reference.h>
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -76,6 +78,9 @@ private:
     // Ψ at node (φ fastest, then μ, μs, r): rayleigh_ and mie_; E at μs nodes.
     std::vector<glm::dvec3> rayleigh_, mie_, ground_;
 };
+
+// The table reference::renderAtmosphere builds from its inputs' orders* fields (and threads).
+OrdersTableOptions ordersOptionsFrom(const reference::AtmosphereInputs& inputs);
 
 // A coarse table for what integrates the sky or adds it to something else (the public CPU evaluations'
 // sky irradiance, the clouds' reference's air in front of them): about 0.3 s to build on two cores.

@@ -84,15 +84,6 @@ std::shared_ptr<const PsiTable> psiTable(const Model& m) {
                      [&] { return std::make_shared<const PsiTable>(buildPsiTable(m)); });
 }
 
-// ∫ over a step of length Δ of e^{-σt·s} ds = (1 - e^{-σtΔ})/σt per channel; Δ where σt = 0 (as the
-// reference's energy-conserving step).
-dvec3 stepIntegral(const dvec3& extinction, double delta) {
-    dvec3 r;
-    for (int c = 0; c < 3; ++c)
-        r[c] = extinction[c] > 0.0 ? -std::expm1(-extinction[c] * delta) / extinction[c] : delta;
-    return r;
-}
-
 // Luminance per unit sun illuminance reaching `origin` along `dir` (integrateViewRay's march with the orders
 // from `orders` or Ψ from `psi`, or neither when both are null), the lit ground included where the ray ends
 // on it.
@@ -119,7 +110,7 @@ dvec3 viewRayLuminance(const Model& m, const PsiTable* psi, const atmosphere::Or
         dvec3 S = tSun * (md.rayleighScattering * phaseR + md.mieScattering * phaseM);
         if (orders) S += orders->source(p, dir, toSun);
         if (psi) S += md.scattering * psi->at(r, glm::dot(p / r, toSun));
-        L += T * S * stepIntegral(md.extinction, dt);
+        L += T * S * atmosphere::stepIntegral(md.extinction, dt);
         const dvec3 tau = md.extinction * dt;
         T *= dvec3(std::exp(-tau.x), std::exp(-tau.y), std::exp(-tau.z));
     }

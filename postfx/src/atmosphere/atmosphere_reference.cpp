@@ -23,7 +23,8 @@ double altitudeOf(const Model& m, const glm::dvec3& p) {
     return glm::length(p) - m.groundRadius;
 }
 
-// ∫ over a step of length Δ of e^{-σt·s} ds = (1 - e^{-σtΔ})/σt per channel; Δ where σt = 0.
+}  // namespace
+
 glm::dvec3 stepIntegral(const glm::dvec3& extinction, double delta) {
     glm::dvec3 r;
     for (int c = 0; c < 3; ++c)
@@ -34,8 +35,6 @@ glm::dvec3 stepIntegral(const glm::dvec3& extinction, double delta) {
 glm::dvec3 expNeg(const glm::dvec3& tau) {
     return {std::exp(-tau.x), std::exp(-tau.y), std::exp(-tau.z)};
 }
-
-}  // namespace
 
 glm::dvec3 opticalDepth(const Model& m, const glm::dvec3& origin, const glm::dvec3& dir, uint32_t steps) {
     const AtmosphereSegment seg = atmosphereSegment(m, origin, dir);

@@ -19,6 +19,12 @@ namespace postfx::atmosphere {
 
 class OrdersTable;  // atmosphere_orders.h
 
+// ∫ over a step of length Δ of e^{-σt·s} ds = (1 - e^{-σtΔ})/σt per channel (Δ where σt = 0), without
+// cancellation: the energy-conserving step T·S·(this) every march of the reference uses.
+glm::dvec3 stepIntegral(const glm::dvec3& extinction, double delta);
+// e^{-τ} per channel.
+glm::dvec3 expNeg(const glm::dvec3& tau);
+
 // τ = ∫ σt dt from `origin` along `dir` to where the ray leaves the atmosphere or meets the ground, `steps`
 // midpoint steps over that segment [1]; 0 when the ray misses the atmosphere.
 glm::dvec3 opticalDepth(const Model& m, const glm::dvec3& origin, const glm::dvec3& dir, uint32_t steps);

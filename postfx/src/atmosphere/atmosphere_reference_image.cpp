@@ -102,16 +102,7 @@ Status renderAtmosphere(const AtmosphereInputs& in, std::vector<float>& out) {
     try {
         transmittance = atmosphere::sharedTransmittanceTable(m);
         if (in.settings.multipleScattering == AtmosphereMultipleScattering::Orders) {
-            atmosphere::OrdersTableOptions oo;
-            oo.viewSize = in.ordersViewNodes;
-            oo.sunSize = in.ordersSunNodes;
-            oo.radiusSize = in.ordersHeightNodes;
-            oo.azimuthSize = in.ordersAzimuthNodes;
-            oo.directions = in.ordersDirections;
-            oo.steps = in.ordersSteps;
-            oo.orders = in.ordersCount;
-            oo.threads = in.threads;
-            orders = atmosphere::sharedOrdersTable(m, oo);
+            orders = atmosphere::sharedOrdersTable(m, atmosphere::ordersOptionsFrom(in));
         } else if (in.settings.multipleScattering == AtmosphereMultipleScattering::Hillaire) {
             atmosphere::PsiTableOptions po;
             po.muSSize = in.psiTableMuS;

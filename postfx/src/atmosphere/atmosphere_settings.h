@@ -4,6 +4,8 @@
 #include <postfx/atmosphere.h>
 #include <postfx/result.h>
 
+#include "atmosphere/atmosphere_shared.h"
+
 namespace postfx::atmosphere {
 
 // Bounds of the documented ranges (postfx/atmosphere.h, docs/effects/atmosphere.md).
@@ -23,7 +25,7 @@ constexpr uint32_t kMaxStepsPerSlice = 64;                     // aerial perspec
 constexpr uint32_t kMaxOrdersViewSide = 64, kMaxOrdersSunSide = 128, kMaxOrdersHeightSide = 64;
 constexpr uint32_t kMinOrdersAzimuths = 2, kMaxOrdersAzimuths = 16;
 constexpr uint32_t kMaxScatteringOrders = 32;
-constexpr uint32_t kMaxOrdersDirections = 576;  // kAtmosphereOrdersMaxDirections
+constexpr uint32_t kMaxOrdersDirections = gpu::kAtmosphereOrdersMaxDirections;  // the pass's shared memory
 
 // InvalidArgument naming the field by its key under effects.atmosphere ("atmosphere.mie_anisotropy: 1 is
 // outside (-1, 1)") for any value out of range, NaN or Inf; success otherwise.
