@@ -6,7 +6,7 @@
 //                     constant fog colour and blended by 1 - T.
 //   SeedFixedRiemann: the same with its formula errors fixed (real Henyey–Greenstein, T·σs·light·Δ,
 //                     color·T + L) but still a plain Riemann sum with fixed step length.
-// Both read the medium exactly as postfx does (shaders/fog/medium.glsl with postfx's FogUniforms).
+// Both read the medium exactly as postfx does (shaders/common/medium/medium.glsl with postfx's FogUniforms).
 #pragma once
 
 #include "host/vulkan_host.h"

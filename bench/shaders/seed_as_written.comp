@@ -10,7 +10,7 @@
 // lerp(scene colour, fog colour, 1 - T). This file is our own code for that algorithm.
 //
 // One invocation per pixel; the bindings and FogUniforms are those of shaders/fog/raymarch.comp, and σt,
-// the shadow-map visibility and the fog's sun transmittance come from shaders/fog/medium.glsl, so only
+// the shadow-map visibility and the fog's sun transmittance come from shaders/common/medium/medium.glsl, so only
 // the integration, the phase function and the composite differ from postfx:
 //   D = min(surface distance, max distance); t = IGN(pixel, frame) · Δ   (Δ = push.stepLength [m])
 //   while (t < D) {                          // cost grows with D: no step cap (a safety cap of
@@ -40,8 +40,8 @@ layout(push_constant) uniform Push {
 // clang-format on
 
 #include "common/ign.glsl"
-#include "fog/medium.glsl"
-#include "fog/ray.glsl"
+#include "common/medium/medium.glsl"
+#include "common/medium/ray.glsl"
 
 const uint kMaxIterations = 100000u;  // safety cap only; the seed has none
 const float kPi = 3.14159265358979;

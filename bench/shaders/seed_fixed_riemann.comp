@@ -3,7 +3,7 @@
 // (the Unity URP fog shader postfx started from; seed_as_written.comp says where it came from) with its
 // formula errors fixed but still a plain Riemann sum with a fixed step length. One invocation per pixel;
 // the bindings and FogUniforms are those of shaders/fog/raymarch.comp, and σt, the shadow-map visibility
-// V and the fog's sun transmittance Tsun come from shaders/fog/medium.glsl, so the medium and its light
+// V and the fog's sun transmittance Tsun come from shaders/common/medium/medium.glsl, so the medium and its light
 // are postfx's:
 //   D = min(surface distance, max distance); t = IGN(pixel, frame) · Δ   (Δ = push.stepLength [m])
 //   while (t < D) {                          // cost grows with D (safety cap kMaxIterations only)
@@ -33,8 +33,8 @@ layout(push_constant) uniform Push {
 
 #include "common/ign.glsl"
 #include "common/phase.glsl"
-#include "fog/medium.glsl"
-#include "fog/ray.glsl"
+#include "common/medium/medium.glsl"
+#include "common/medium/ray.glsl"
 
 const uint kMaxIterations = 100000u;  // safety cap only
 

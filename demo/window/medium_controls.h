@@ -16,7 +16,7 @@ namespace demo::window {
 // changed this frame; the values may then be out of range until sanitizeMedium.
 bool buildMediumControls(postfx::FogMedium& medium);
 
-// Brings every medium field into the range postfx accepts (fog::validateMedium, the noise's included
+// Brings every medium field into the range postfx accepts (common::validateMedium, the noise's included
 // whether or not it is on): NaN or out-of-range values are clamped (NaN to the lower end, max distance and
 // tiling to > 0, the texture size to the nearest power of two in [16, 256]). Valid values are left
 // exactly as they are.

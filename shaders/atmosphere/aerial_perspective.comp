@@ -25,8 +25,8 @@ layout(binding = kAtmosphereBindingApTransmittance,
 
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
-#include "atmosphere/model.glsl"
-#include "atmosphere/march.glsl"
+#include "common/air/model.glsl"
+#include "common/air/march.glsl"
 
 const uint kMaxSlices = 256u;  // the AP LUT's largest depth (atmosphere_settings.h)
 shared vec3 sharedL[kMaxSlices];

@@ -29,9 +29,9 @@ layout(binding = kAtmosphereBindingColorOut, rgba16f) uniform restrict writeonly
 const float kColorMax = 65504.0;  // largest finite half: never write Inf
 #endif
 
-#include "atmosphere/model.glsl"
+#include "common/air/model.glsl"
 #include "common/composite.glsl"
-#include "atmosphere/aerial_perspective_lookup.glsl"
+#include "common/air/aerial_perspective_lookup.glsl"
 
 // The transmittance LUT's T from planet-centred p along unit d to the top (d not toward the ground).
 vec3 transmittanceToTop(vec3 p, vec3 d) {

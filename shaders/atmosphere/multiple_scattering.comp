@@ -16,8 +16,8 @@ layout(binding = kAtmosphereBindingTransmittance) uniform sampler2D transmittanc
 layout(binding = kAtmosphereBindingMultiScattering, rgba16f) uniform writeonly image3D multiScatteringOut;
 
 #include "common/integrate.glsl"
-#include "atmosphere/model.glsl"
-#include "atmosphere/march.glsl"
+#include "common/air/model.glsl"
+#include "common/air/march.glsl"
 
 shared vec3 sharedL2[kAtmosphereMsGroupSize];
 shared vec3 sharedFms[kAtmosphereMsGroupSize];

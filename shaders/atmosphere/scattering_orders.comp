@@ -24,10 +24,10 @@ layout(push_constant) uniform Constants {
 };
 
 #include "common/integrate.glsl"
-#include "atmosphere/model.glsl"
-#include "atmosphere/march.glsl"
-#include "atmosphere/orders_lookup.glsl"
-#include "atmosphere/march_steps.glsl"
+#include "common/air/model.glsl"
+#include "common/air/march.glsl"
+#include "common/air/orders_lookup.glsl"
+#include "common/air/march_steps.glsl"
 
 const float kMaxTailRatio = 0.95;  // q of the geometric tail: at most this
 

@@ -20,8 +20,8 @@ layout(binding = kAtmosphereBindingSkyView, rgba16f) uniform writeonly image2D s
 
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
-#include "atmosphere/model.glsl"
-#include "atmosphere/march.glsl"
+#include "common/air/model.glsl"
+#include "common/air/march.glsl"
 
 shared vec3 partL[kAtmosphereSkyViewSplit][kAtmosphereGroupSize * kAtmosphereGroupSize];
 shared vec3 partT[kAtmosphereSkyViewSplit][kAtmosphereGroupSize * kAtmosphereGroupSize];

@@ -11,8 +11,8 @@ layout(local_size_x = kAtmosphereGroupSize, local_size_y = kAtmosphereGroupSize)
 #include "atmosphere/bindings.glsl"
 layout(binding = kAtmosphereBindingTransmittance, rgba16f) uniform writeonly image2D transmittanceOut;
 
-#include "atmosphere/model.glsl"
-#include "atmosphere/march_steps.glsl"
+#include "common/air/model.glsl"
+#include "common/air/march_steps.glsl"
 
 void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;

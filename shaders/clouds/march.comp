@@ -17,7 +17,7 @@
 
 #include "clouds/clouds_shared.h"
 #ifdef ATMOSPHERE
-#include "atmosphere/atmosphere_shared.h"
+#include "common/air_shared.h"
 #endif
 
 layout(local_size_x = kCloudGroupSize, local_size_y = kCloudGroupSize) in;
@@ -45,10 +45,10 @@ layout(binding = kCloudBindingApTransmittance) uniform sampler2DArray apTransmit
 layout(binding = kCloudBindingMultiScattering) uniform sampler3D multiScatteringLut;
 #define ATMOSPHERE_MS
 #include "common/integrate.glsl"
-#include "atmosphere/model.glsl"
-#include "atmosphere/aerial_perspective_lookup.glsl"
-#include "atmosphere/march.glsl"
-#include "atmosphere/aerial_perspective_far.glsl"
+#include "common/air/model.glsl"
+#include "common/air/aerial_perspective_lookup.glsl"
+#include "common/air/march.glsl"
+#include "common/air/aerial_perspective_far.glsl"
 #endif
 
 #include "clouds/ray.glsl"

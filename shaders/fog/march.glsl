@@ -5,7 +5,7 @@
 #ifndef POSTFX_FOG_MARCH_GLSL
 #define POSTFX_FOG_MARCH_GLSL
 
-#include "fog/atmosphere_light.glsl"
+#include "common/medium/atmosphere_light.glsl"
 
 struct FogScatter {
     vec3 inScattered;     // L: radiance scattered toward the camera along the ray

@@ -13,8 +13,8 @@ layout(local_size_x = kFogMarchGroupX, local_size_y = kFogMarchGroupY) in;
 #include "common/ign.glsl"
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
-#include "fog/medium.glsl"
-#include "fog/ray.glsl"
+#include "common/medium/medium.glsl"
+#include "common/medium/ray.glsl"
 #include "common/composite.glsl"
 #include "fog/march.glsl"
 

@@ -42,7 +42,7 @@ layout(binding = kFogBindingTemporal, std140) uniform Temporal {
     TemporalUniforms temporal;
 };
 
-#include "fog/ray.glsl"
+#include "common/medium/ray.glsl"
 #ifdef COMPOSITE
 #include "common/composite.glsl"
 #endif

@@ -17,7 +17,7 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 #include "fog/bindings.glsl"
 #include "fog/scatter_image.glsl"
 
-#include "fog/ray.glsl"
+#include "common/medium/ray.glsl"
 #include "common/composite.glsl"
 
 // |a - b|, 0 when both are infinite (pixels with no geometry match each other), ∞ when one is.

@@ -15,9 +15,9 @@ layout(binding = kFroxelBindingIntegrated) uniform sampler3D integratedVolume;
 
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
-#include "fog/medium.glsl"
-#include "fog/atmosphere_light.glsl"
-#include "fog/ray.glsl"
+#include "common/medium/medium.glsl"
+#include "common/medium/atmosphere_light.glsl"
+#include "common/medium/ray.glsl"
 #include "common/composite.glsl"
 #include "froxel_fog/grid.glsl"
 

@@ -16,7 +16,7 @@ layout(binding = kFroxelBindingDepth) uniform sampler2D depthTexture;
 layout(binding = kFroxelBindingShadowMap) uniform sampler2D shadowMap;
 layout(binding = kFroxelBindingNoise) uniform sampler3D noiseTexture;
 layout(binding = kFroxelBindingUniforms, std140) uniform Uniforms {
-    FogUniforms fog;  // the shared medium (fog/medium.glsl reads it)
+    FogUniforms fog;  // the shared medium (common/medium/medium.glsl reads it)
     FroxelUniforms froxel;
 };
 layout(binding = kFroxelBindingLights, std140) uniform Lights {

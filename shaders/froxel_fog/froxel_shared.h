@@ -1,11 +1,11 @@
 // The froxel fog's header shared by its C++ (postfx/src/froxel_fog) and its GLSL (shaders/froxel_fog):
 // uniform structs, binding numbers, workgroup sizes, flags (docs/effects/froxel-fog.md). The medium's
-// uniforms are the ray-marched fog's FogUniforms (one definition of the shared medium): the froxel
-// fog's kernels bind them as `fog` and include shaders/fog/medium.glsl.
+// uniforms are the shared medium's FogUniforms (common/medium_shared.h): the froxel fog's kernels bind
+// them as `fog` and include shaders/common/medium/medium.glsl.
 #ifndef POSTFX_FROXEL_SHARED_H
 #define POSTFX_FROXEL_SHARED_H
 
-#include "fog/fog_shared.h"
+#include "common/medium_shared.h"
 
 #ifdef __cplusplus
 namespace postfx::gpu {
@@ -34,10 +34,10 @@ PFX_CONST(uint, kFroxelBindingIntegrated,
 // volume (RGBA32F, fetched texel by texel; the scatter pass writes the other of two) and TemporalUniforms.
 PFX_CONST(uint, kFroxelBindingHistory, 10);   // sampler3D rgba32f: previous accumulated scatter volume
 PFX_CONST(uint, kFroxelBindingTemporal, 11);  // uniform buffer: TemporalUniforms
-// sampler2D: the atmosphere's transmittance LUT (fog/atmosphere_light.glsl), with the atmosphere on
-PFX_CONST(uint, kFroxelBindingAtmosphere, kFogBindingAtmosphere);
-// sampler2D: the clouds' shadow map (fog/atmosphere_light.glsl), with clouds casting shadows
-PFX_CONST(uint, kFroxelBindingCloudShadow, kFogBindingCloudShadow);
+// sampler2D: the atmosphere's transmittance LUT (common/medium/atmosphere_light.glsl), with the atmosphere on
+PFX_CONST(uint, kFroxelBindingAtmosphere, kMediumBindingAtmosphere);
+// sampler2D: the clouds' shadow map (common/medium/atmosphere_light.glsl), with clouds casting shadows
+PFX_CONST(uint, kFroxelBindingCloudShadow, kMediumBindingCloudShadow);
 
 // Flags in FroxelUniforms.counts.y
 PFX_CONST(uint, kFroxelFlagLogSlices, 1u);  // depth distribution Log (else Power)

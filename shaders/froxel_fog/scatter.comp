@@ -27,8 +27,8 @@ layout(binding = kFroxelBindingScatter, rgba16f) uniform writeonly image3D scatt
 
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
-#include "fog/medium.glsl"
-#include "fog/atmosphere_light.glsl"
+#include "common/medium/medium.glsl"
+#include "common/medium/atmosphere_light.glsl"
 #include "froxel_fog/grid.glsl"
 #include "froxel_fog/lights.glsl"
 

@@ -6,7 +6,7 @@
 #include "clouds/clouds_path_tracer.h"
 #include "clouds_frames.h"
 #include "clouds_reference_inputs.h"
-#include "fog/noise_cpu.h"
+#include "common/noise_cpu.h"
 #include "fog_harness.h"
 #include "image_compare.h"
 
@@ -158,7 +158,7 @@ TEST_F(CloudsGpuTest, HomogeneousLayersAreNearThePathTracer) {
     }
 }
 
-// The generated noise textures against the CPU port (fog/noise_cpu.h), texel by texel.
+// The generated noise textures against the CPU port (common/noise_cpu.h), texel by texel.
 TEST_F(CloudsGpuTest, NoiseTexturesMatchTheCpuPort) {
     postfx::FrameInfo frame;
     frame.clouds.enabled = true;
@@ -170,9 +170,9 @@ TEST_F(CloudsGpuTest, NoiseTexturesMatchTheCpuPort) {
     render(frame, images(4, 2, 0.0f));
     const std::vector<float> base = readNoise("clouds.base_noise");
     const std::vector<float> detail = readNoise("clouds.detail_noise");
-    const std::vector<uint8_t> cpuBase = postfx::fog::generateNoiseCpu(32, 7);
+    const std::vector<uint8_t> cpuBase = postfx::common::generateNoiseCpu(32, 7);
     const std::vector<uint8_t> cpuDetail =
-        postfx::fog::generateWorleyNoiseCpu(16, postfx::clouds::detailSeed(7));
+        postfx::common::generateWorleyNoiseCpu(16, postfx::clouds::detailSeed(7));
     ASSERT_EQ(base.size(), cpuBase.size());
     ASSERT_EQ(detail.size(), cpuDetail.size());
     size_t off = 0;

@@ -1,7 +1,7 @@
 // The fog's generated noise texture on a real device, through the context (the fog declares it as a
 // persistent image built by fog.noise): its texels against the CPU port of the generator, tiling, value
 // statistics, and regeneration only when (size, seed) changes. Sizes 32 and 16 keep lavapipe fast.
-#include "fog/noise_cpu.h"
+#include "common/noise_cpu.h"
 #include "fog_harness.h"
 #include "gpu_test.h"
 
@@ -104,14 +104,14 @@ protected:
         for (uint32_t z = 0; z < size; ++z)
             for (uint32_t y = 0; y < size; ++y)
                 for (uint32_t x = 0; x < size; ++x, ++i) {
-                    const float cpu = postfx::fog::noiseTexel(x, y, z, size, seed);
+                    const float cpu = postfx::common::noiseTexel(x, y, z, size, seed);
                     const double error = std::abs(double(gpuTexels[i]) - double(cpu) * 255.0);  // [1/255]
                     maxError = std::max(maxError, error);
                     if (error <= 1.0) ++within1;
                     if (gpuTexels[i] == uint8_t(std::floor(double(cpu) * 255.0 + 0.5))) ++exact;
                     EXPECT_LE(error, 2.0) << "texel " << x << "," << y << "," << z;
                 }
-        const std::vector<uint8_t> cpuTexels = postfx::fog::generateNoiseCpu(size, seed);
+        const std::vector<uint8_t> cpuTexels = postfx::common::generateNoiseCpu(size, seed);
         size_t sameBytes = 0;
         for (size_t j = 0; j < cpuTexels.size(); ++j)
             sameBytes += cpuTexels[j] == gpuTexels[j];
@@ -265,8 +265,8 @@ TEST_F(FogNoiseTest, RegeneratesAfterReadsInTheSameCommandBuffer) {
     }));
     EXPECT_TRUE(readStatus.ok()) << readStatus.message;
     const uint8_t* mapped = static_cast<const uint8_t*>(readback.mapped());
-    EXPECT_EQ(std::vector<uint8_t>(mapped, mapped + bytes), postfx::fog::generateNoiseCpu(kSize, 11));
-    EXPECT_EQ(read(*context), postfx::fog::generateNoiseCpu(kSize, 12));
+    EXPECT_EQ(std::vector<uint8_t>(mapped, mapped + bytes), postfx::common::generateNoiseCpu(kSize, 11));
+    EXPECT_EQ(read(*context), postfx::common::generateNoiseCpu(kSize, 12));
 }
 
 TEST_F(FogNoiseTest, ReadbackNeedsAGeneratedTexture) {

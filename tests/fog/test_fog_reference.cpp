@@ -1,7 +1,7 @@
 // The double-precision fog reference (postfx::reference::renderFog) against closed forms of the model
 // in docs/effects/fog.md. Host only. Homogeneous fog is integrated exactly by every step (the step
 // integral is exact for constant σt), so those tests use few steps; height fog needs many.
-#include "fog/reference_model.h"
+#include "common/reference_model.h"
 
 #include <postfx/reference.h>
 

@@ -1,6 +1,6 @@
 #include "froxel_case.h"
 
-#include "fog/noise_cpu.h"
+#include "common/noise_cpu.h"
 
 namespace test {
 
@@ -30,7 +30,7 @@ postfx::Status FroxelCase::reference(std::vector<float>& out, uint32_t steps) co
     std::vector<float> noise;
     if (f.froxelFog.noise.enabled) {
         const uint32_t n = f.froxelFog.noise.textureSize;
-        for (uint8_t texel : postfx::fog::generateNoiseCpu(n, f.froxelFog.noise.seed))
+        for (uint8_t texel : postfx::common::generateNoiseCpu(n, f.froxelFog.noise.seed))
             noise.push_back(float(texel) / 255.0f);
         in.noise = noise;
         in.noiseSize = n;

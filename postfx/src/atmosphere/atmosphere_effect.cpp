@@ -2,6 +2,8 @@
 
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_settings.h"
+#include "common/air.h"
+#include "common/shared_resources.h"
 #include "core/camera_math.h"
 #include "core/exposure.h"
 #include "core/temporal.h"
@@ -254,15 +256,17 @@ core::ImageDesc lutDesc(VkImageType type, uint32_t x, uint32_t y, uint32_t z = 1
 
 }  // namespace
 
-uint64_t viewLutSettingsKey(const AtmosphereSettings& settings) {
-    return skyViewSettingsKey(settings);
+}  // namespace postfx::atmosphere
+
+namespace postfx::common {
+
+uint64_t airViewSettingsKey(const AtmosphereSettings& settings) {
+    return atmosphere::skyViewSettingsKey(settings);
 }
 
-SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& b, core::ImageRef standIn) {
-    const core::ImageRef lut = b.frame().atmosphere.enabled ? b.find(kTransmittanceLut) : core::ImageRef{};
-    if (lut.valid()) return {lut, Use::Sampled, SamplerKind::LinearClamp};
-    return {standIn, Use::BoundOnly, SamplerKind::NearestClamp};
-}
+}  // namespace postfx::common
+
+namespace postfx::atmosphere {
 
 double lutStorageScale(const AtmosphereSettings& s) {
     double tau = 0.0;
@@ -323,11 +327,11 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     const core::DepthInput depth = b.depthInput();
     gpu::AtmosphereUniforms u = buildUniforms(frame, b.depthConvention(), v, camera);
     if (depth.distance) u.flags.x |= gpu::kAtmosphereFlagViewDistance;
-    const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
+    const core::BufferRef uniforms = b.uniforms(common::kAirUniforms.id, &u, sizeof u);
 
     const core::ImageRef transmittance = b.persistentImage(
-        kTransmittanceLut, lutDesc(VK_IMAGE_TYPE_2D, s.transmittanceLutSize.x, s.transmittanceLutSize.y),
-        transmittanceKey(s));
+        common::kSunTransmittanceLut.id,
+        lutDesc(VK_IMAGE_TYPE_2D, s.transmittanceLutSize.x, s.transmittanceLutSize.y), transmittanceKey(s));
     b.pass(kTransmittancePass, groupsFor(s.transmittanceLutSize.x), groupsFor(s.transmittanceLutSize.y), 1)
         .bind(gpu::kAtmosphereBindingUniforms, uniforms)
         .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::StorageWrite);
@@ -336,10 +340,11 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     core::ImageRef multiScattering;
     Use multiScatteringUse = Use::BoundOnly;
     if (s.multipleScattering == AtmosphereMultipleScattering::Off) {
-        multiScattering = b.transientImage(kMultipleScatteringStandIn, lutDesc(VK_IMAGE_TYPE_3D, 1, 1, 1));
+        multiScattering =
+            b.transientImage(common::kAirMultipleScatteringStandIn.id, lutDesc(VK_IMAGE_TYPE_3D, 1, 1, 1));
     } else if (s.multipleScattering == AtmosphereMultipleScattering::Hillaire) {
         multiScattering = b.persistentImage(
-            kMultipleScatteringLut,
+            common::kAirMultipleScatteringLut.id,
             lutDesc(VK_IMAGE_TYPE_3D, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y),
             multipleScatteringKey(s));
         multiScatteringUse = Use::Sampled;
@@ -353,7 +358,8 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         const UVec3 n = s.scatteringOrdersLutSize;
         const core::ImageDesc desc =
             lutDesc(VK_IMAGE_TYPE_3D, n.x * s.scatteringOrdersAzimuthSize, n.y, 2 * n.z + 1);
-        multiScattering = b.persistentImage(kMultipleScatteringLut, desc, multipleScatteringKey(s));
+        multiScattering =
+            b.persistentImage(common::kAirMultipleScatteringLut.id, desc, multipleScatteringKey(s));
         multiScatteringUse = Use::Sampled;
         const core::ImageRef work[2] = {b.transientImage(kScatteringOrderA, desc),
                                         b.transientImage(kScatteringOrderB, desc)};
@@ -391,9 +397,10 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     core::ImageDesc apTransmittanceDesc = lutDesc(VK_IMAGE_TYPE_2D, ap.x, ap.y);
     apTransmittanceDesc.layers = ap.z;
     const uint64_t apKey = viewKey(v.aerial);
-    const core::ImageRef apScattering =
-        b.persistentImage(kApScatteringLut, lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z), apKey);
-    const core::ImageRef apTransmittance = b.persistentImage(kApTransmittanceLut, apTransmittanceDesc, apKey);
+    const core::ImageRef apScattering = b.persistentImage(common::kAerialPerspectiveLut.id,
+                                                          lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z), apKey);
+    const core::ImageRef apTransmittance =
+        b.persistentImage(common::kAerialTransmittanceLut.id, apTransmittanceDesc, apKey);
     b.pass(kApPass, ap.x, ap.y, 1);
     bindLuts();
     b.bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::StorageWrite)

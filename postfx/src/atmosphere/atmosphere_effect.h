@@ -1,8 +1,8 @@
 // The sky and atmosphere behind the effect boundary (docs/effects/atmosphere.md): its settings' checks
 // and its declaration of a frame: the uniforms, the four LUTs (persistent images, each rebuilt only when
 // what it depends on changed: core/frame_graph.h's build keys) and the apply pass that draws the sky on
-// pixels without geometry and the aerial perspective on the others. Other effects find the LUTs by the
-// ids below (the fogs read kTransmittanceLut for the sun's light through the atmosphere).
+// pixels without geometry and the aerial perspective on the others. The uniforms and LUTs other effects
+// read are declared under the handles of common/shared_resources.h.
 #pragma once
 
 #include "core/effect.h"
@@ -13,25 +13,10 @@
 
 namespace postfx::atmosphere {
 
-inline constexpr core::ResourceId kUniforms{"atmosphere.uniforms"};
-inline constexpr core::ResourceId kTransmittanceLut{"atmosphere.transmittance"};  // rgba16f 2D
-// rgba16f 3D: Hillaire's Ψ (one slice) or the scattering-orders LUT (atmosphere_shared.h)
-inline constexpr core::ResourceId kMultipleScatteringLut{"atmosphere.multiple_scattering"};
-// With multiple scattering off: a 1×1×1 transient at the LUT's binding (the shaders' sampler is 3D), never
-// read.
-inline constexpr core::ResourceId kMultipleScatteringStandIn{"atmosphere.multiple_scattering_off"};
 // The scattering orders' two working images (order n and n + 1), transient, while the LUT is built.
 inline constexpr core::ResourceId kScatteringOrderA{"atmosphere.scattering_order_a"};
 inline constexpr core::ResourceId kScatteringOrderB{"atmosphere.scattering_order_b"};
-inline constexpr core::ResourceId kSkyViewLut{"atmosphere.sky_view"};                 // rgba16f 2D, 2 layers
-inline constexpr core::ResourceId kApScatteringLut{"atmosphere.aerial_perspective"};  // rgba16f 3D
-inline constexpr core::ResourceId kApTransmittanceLut{"atmosphere.aerial_transmittance"};  // rgba16f 2D array
-
-// For an effect lit by the sun (docs/effects/atmosphere.md, "The sun for every effect"): the transmittance
-// LUT the atmosphere declared earlier this frame, sampled; with the atmosphere off, `standIn` bound only
-// (the pipeline's layout has the binding; the shader's kFogFlagAtmosphere is off).
-using SunTransmittanceLut = core::OptionalSampled;
-SunTransmittanceLut sunTransmittanceLut(const core::FrameBuilder& builder, core::ImageRef standIn);
+inline constexpr core::ResourceId kSkyViewLut{"atmosphere.sky_view"};  // rgba16f 2D, 2 layers
 
 // The luminance LUTs' storage scale (AtmosphereUniforms::skyView.w): the multiple-scattering, sky-view and
 // aerial-perspective LUTs hold luminance per unit illuminance times this, 1 / the largest vertical
@@ -43,10 +28,6 @@ double lutStorageScale(const AtmosphereSettings& settings);
 // values are radiance per unit illuminance, about τ/4π in a thin atmosphere and down to about 1/τ near the
 // ground of a thick one.
 double ordersStorageScale(const AtmosphereSettings& settings);
-
-// The key of every setting the aerial perspective and sky view depend on (media, sizes, steps): consumers'
-// temporal histories (the clouds') reset when it changes.
-uint64_t viewLutSettingsKey(const AtmosphereSettings& settings);
 
 // The camera and sun a view-dependent LUT was built for (docs/effects/atmosphere.md#frame-plan).
 struct LutView {

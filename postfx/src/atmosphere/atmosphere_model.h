@@ -1,6 +1,6 @@
 // The atmosphere model (docs/effects/atmosphere.md) in double precision: media, ray–sphere intersections,
 // phase functions and the LUTs' parameterisations with their inverses. The effect's GLSL
-// (shaders/atmosphere/model.glsl) mirrors these functions; the CPU reference (atmosphere_reference.h) and the
+// (shaders/common/air/model.glsl) mirrors these functions; the CPU reference (atmosphere_reference.h) and the
 // unit tests use them.
 //
 // Positions are planet-centred [m]: the planet's centre at the origin, y up; a world position x (y = 0 on
@@ -9,6 +9,7 @@
 #pragma once
 
 #include <postfx/atmosphere.h>
+#include "common/ray_sphere.h"
 
 #include <glm/glm.hpp>
 
@@ -60,16 +61,8 @@ struct Medium {
 };
 Medium mediumAt(const Model& m, double altitude);
 
-// Ray o + t·d (|d| = 1) against the sphere |x| = radius centred at the origin: the two roots tNear <= tFar
-// (either may be negative: behind the origin), hit false when the ray misses (a tangent ray hits with
-// tNear == tFar). Robust for an origin anywhere from inside the planet to far in space: the discriminant is
-// radius² - h², h the ray's distance to the centre computed from o - (o·d)d (no cancellation of |o|² - b²),
-// and the roots as q = -b - sign(b)·√disc, c/q (no cancellation of -b ± √disc).
-struct SphereHit {
-    bool hit = false;
-    double tNear = 0.0, tFar = 0.0;
-};
-SphereHit raySphere(const glm::dvec3& origin, const glm::dvec3& dir, double radius);
+using common::raySphere;
+using common::SphereHit;
 
 // The part of the ray from `origin` (t >= 0) inside the atmosphere and before the ground: [tBegin, tEnd],
 // empty (tEnd <= tBegin) when the ray never enters it; hitsGround: the segment ends on the ground.

@@ -1,12 +1,12 @@
 // Reference (a) of the atmosphere (docs/effects/atmosphere.md, "Reference"): the model the GPU renders,
 // without LUTs, in double, per pixel with fine midpoint steps (integrateViewRay), the sun's transmittance
 // and Ψ from fine tables (atmosphere_reference.h). Pixel rays and sky pixels as the fog references'
-// (fog/reference_image.h); multithreaded over rows.
+// (common/reference_image.h); multithreaded over rows.
 #include "atmosphere/atmosphere_orders.h"
 #include "atmosphere/atmosphere_reference.h"
 #include "atmosphere/atmosphere_settings.h"
+#include "common/reference_image.h"
 #include "core/checks.h"
-#include "fog/reference_image.h"
 
 #include <postfx/reference.h>
 

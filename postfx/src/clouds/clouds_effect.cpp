@@ -1,14 +1,15 @@
 #include "clouds/clouds_effect.h"
 
-#include <postfx/fog.h>
-#include "atmosphere/atmosphere_effect.h"
-#include "atmosphere/atmosphere_shared.h"
 #include "clouds/clouds_model.h"
 #include "clouds/clouds_settings.h"
 #include "clouds/clouds_shadow.h"
+#include "common/air.h"
+#include "common/cloud_shadow.h"
+#include "common/medium_noise.h"
+#include "common/reduced_resolution.h"
+#include "common/shared_resources.h"
 #include "core/camera_math.h"
 #include "core/exposure.h"
-#include "fog/medium_noise.h"
 #include "postfx_objects_spirv.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -176,7 +177,7 @@ uint64_t temporalKey(const FrameInfo& frame) {
     h = hashValue(h, s.coverageMap.originX);
     h = hashValue(h, s.coverageMap.originZ);
     h = hashValue(h, frame.atmosphere.enabled);
-    if (frame.atmosphere.enabled) h = hashValue(h, atmosphere::viewLutSettingsKey(frame.atmosphere));
+    if (frame.atmosphere.enabled) h = hashValue(h, common::airViewSettingsKey(frame.atmosphere));
     return h;
 }
 
@@ -188,15 +189,8 @@ double wrap(double value, double period) {
 
 }  // namespace
 
-core::OptionalSampled shadowMapInput(const core::FrameBuilder& b, core::ImageRef standIn) {
-    const core::ImageRef map = castsShadows(b.frame()) ? b.find(kShadowMap) : core::ImageRef{};
-    if (map.valid()) return {map, Use::Sampled, SamplerKind::LinearClamp};
-    return {standIn, Use::BoundOnly, SamplerKind::NearestClamp};
-}
-
 glm::uvec2 marchExtent(uint32_t width, uint32_t height, float resolutionScale) {
-    const UVec2 e = fogMarchExtent(width, height, resolutionScale);  // the same rounding as the fog's
-    return {e.x, e.y};
+    return common::reducedExtent(width, height, resolutionScale);  // the same rounding as the fog's
 }
 
 gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth,
@@ -256,7 +250,7 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     return u;
 }
 
-CloudsEffect::CloudsEffect(const core::Gpu& gpu) : noiseFormatSupported_(fog::noiseFormatSupported(gpu)) {}
+CloudsEffect::CloudsEffect(const core::Gpu& gpu) : noiseFormatSupported_(common::noiseFormatSupported(gpu)) {}
 
 Status CloudsEffect::validate(const FrameInfo& frame) const {
     if (!frame.clouds.enabled) return Status::success();
@@ -321,7 +315,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     // The noise textures: the host's, or generated once per size and seed; a stand-in without noise.
     core::ImageDesc one;
     one.type = VK_IMAGE_TYPE_3D;
-    one.format = fog::kNoiseFormat;
+    one.format = common::kNoiseFormat;
     one.usage = VK_IMAGE_USAGE_SAMPLED_BIT;
     core::ImageRef base, detail;
     if (!s.noise.enabled) {
@@ -330,12 +324,12 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         const VkImageLayout layout = s.noise.hostTextureLayout;
         base = s.noise.hostBaseTexture
                    ? b.external("host.clouds_base_noise", s.noise.hostBaseTexture, layout)
-                   : fog::declareGeneratedNoise(b, kBaseNoise, kBaseNoisePass, s.noise.baseSize, s.noise.seed,
-                                                gpu::kNoisePerlinWorley);
+                   : common::declareGeneratedNoise(b, kBaseNoise, kBaseNoisePass, s.noise.baseSize,
+                                                   s.noise.seed, gpu::kNoisePerlinWorley);
         detail = s.noise.hostDetailTexture
                      ? b.external("host.clouds_detail_noise", s.noise.hostDetailTexture, layout)
-                     : fog::declareGeneratedNoise(b, kDetailNoise, kDetailNoisePass, s.noise.detailSize,
-                                                  detailSeed(s.noise.seed), gpu::kNoiseWorley);
+                     : common::declareGeneratedNoise(b, kDetailNoise, kDetailNoisePass, s.noise.detailSize,
+                                                     detailSeed(s.noise.seed), gpu::kNoiseWorley);
     }
     // The host's coverage map, or a stand-in.
     const bool withMap = s.coverageMap.texture != VK_NULL_HANDLE;
@@ -366,17 +360,19 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
 
     // The atmosphere's, declared earlier this frame when it runs.
     const core::BufferRef atmosphereUniforms =
-        frame.atmosphere.enabled ? b.findUniforms(atmosphere::kUniforms) : core::BufferRef{};
+        frame.atmosphere.enabled ? common::find(b, common::kAirUniforms) : core::BufferRef{};
     const bool withAtmosphere = atmosphereUniforms.valid();
 
-    if (castsShadows(frame)) {  // before the fogs, which read it; held: the host reads it next frame
+    if (common::castsCloudShadows(
+            frame)) {  // before the fogs, which read it; held: the host reads it next frame
         core::ImageDesc shadowDesc;
         shadowDesc.format = VK_FORMAT_R32_SFLOAT;
         shadowDesc.extent = {s.shadowMap.size, s.shadowMap.size, 1};
         shadowDesc.usage =
             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
         // Persistent: rebuilt only when what its texels depend on changes (shadowBuildKey).
-        const core::ImageRef shadowMap = b.persistentImage(kShadowMap, shadowDesc, shadowBuildKey(u, s));
+        const core::ImageRef shadowMap =
+            b.persistentImage(common::kCloudShadowMap.id, shadowDesc, shadowBuildKey(u, s));
         b.exportImage(shadowMap);
         b.pass(kShadow, groupsFor(s.shadowMap.size), groupsFor(s.shadowMap.size), 1)
             .bind(gpu::kCloudBindingUniforms, uniforms)
@@ -396,16 +392,16 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     if (withAtmosphere) {
         // The multiple-scattering LUT for the aerial perspective beyond the LUT's depth; without multiple
         // scattering the atmosphere's 3D stand-in, never read.
-        const core::ImageRef transmittanceLut = b.find(atmosphere::kTransmittanceLut);
-        const core::ImageRef multiScattering = b.find(atmosphere::kMultipleScatteringLut);
-        const core::ImageRef msStandIn = b.find(atmosphere::kMultipleScatteringStandIn);
+        const core::ImageRef transmittanceLut = common::find(b, common::kSunTransmittanceLut);
+        const core::ImageRef multiScattering = common::find(b, common::kAirMultipleScatteringLut);
+        const core::ImageRef msStandIn = common::find(b, common::kAirMultipleScatteringStandIn);
         b.bind(gpu::kCloudBindingAtmosphere, atmosphereUniforms)
             .bind(gpu::kCloudBindingTransmittanceLut, transmittanceLut, Use::Sampled,
                   SamplerKind::LinearClamp)
-            .bind(gpu::kCloudBindingApScattering, b.find(atmosphere::kApScatteringLut), Use::Sampled,
-                  SamplerKind::LinearClamp)
-            .bind(gpu::kCloudBindingApTransmittance, b.find(atmosphere::kApTransmittanceLut), Use::Sampled,
-                  SamplerKind::LinearClamp)
+            .bind(gpu::kCloudBindingApScattering, common::find(b, common::kAerialPerspectiveLut),
+                  Use::Sampled, SamplerKind::LinearClamp)
+            .bind(gpu::kCloudBindingApTransmittance, common::find(b, common::kAerialTransmittanceLut),
+                  Use::Sampled, SamplerKind::LinearClamp)
             .bind(gpu::kCloudBindingMultiScattering, multiScattering.valid() ? multiScattering : msStandIn,
                   multiScattering.valid() ? Use::Sampled : Use::BoundOnly, SamplerKind::LinearClamp);
     }

@@ -26,18 +26,12 @@ inline constexpr core::ResourceId kHistory[2] = {{"clouds.history_a"}, {"clouds.
 inline constexpr core::ResourceId kHistoryDistance[2] = {{"clouds.history_distance_a"},
                                                          {"clouds.history_distance_b"}};
 inline constexpr core::ResourceId kTemporalUniforms{"clouds.temporal_uniforms"};
-// The shadow map (R32F, held: the host reads it in the next frame), made when the clouds cast shadows.
-inline constexpr core::ResourceId kShadowMap{"clouds.shadow_map"};
 
 // The detail texture's seed: the base's, decorrelated (its Worley layers would otherwise repeat the
 // base's own Worley octaves at 1/8 of their size).
 inline uint32_t detailSeed(uint32_t seed) {
     return seed ^ 0x5bd1e995u;
 }
-
-// For a consumer of the clouds' shadow (both fogs): the shadow map the clouds declared earlier this frame,
-// or `standIn` bound only.
-core::OptionalSampled shadowMapInput(const core::FrameBuilder& builder, core::ImageRef standIn);
 
 // The march's extent for a color image of `width`×`height` at `resolutionScale` [px].
 glm::uvec2 marchExtent(uint32_t width, uint32_t height, float resolutionScale);

@@ -1,8 +1,8 @@
 #include "clouds/clouds_model.h"
 
 #include <postfx/reference.h>
-#include "atmosphere/atmosphere_model.h"
 #include "clouds/clouds_shared.h"
+#include "common/ray_sphere.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -22,7 +22,7 @@ constexpr double kPi = 3.14159265358979323846;
 // (tNear, tFar) of ray o + t·d against the sphere of `radius` at the origin, (-1, -1) when it misses
 // (as shaders/common/ray_sphere.glsl).
 dvec2 raySphere(const dvec3& o, const dvec3& d, double radius) {
-    const atmosphere::SphereHit hit = atmosphere::raySphere(o, d, radius);
+    const common::SphereHit hit = common::raySphere(o, d, radius);
     return hit.hit ? dvec2(hit.tNear, hit.tFar) : dvec2(-1.0);
 }
 
@@ -109,8 +109,7 @@ Model modelFrom(const FrameInfo& frame, NoiseVolume base, NoiseVolume detail, Co
     m.sunIlluminance = dvec3(frame.sun.illuminance);
     m.ambient = dvec3(frame.ambient);
     m.slab = slabMedium(s);
-    if (frame.atmosphere.enabled)
-        m.atmosphere = atmosphere::sharedTransmittanceTable(atmosphere::modelFrom(frame.atmosphere));
+    if (frame.atmosphere.enabled) m.atmosphere = common::makeAir(frame.atmosphere);
     return m;
 }
 
@@ -309,8 +308,7 @@ dvec3 inScattered(const Model& m, const dvec3& x, const dvec3& d, double sigma, 
     }
     dvec3 sun = m.sunIlluminance;
     if (m.atmosphere) {
-        const atmosphere::Model& am = m.atmosphere->model();
-        sun *= m.atmosphere->sun(atmosphere::planetCentred(am, m.camera + x), m.toSun);
+        sun *= m.atmosphere->sunTransmittance(m.camera + x, m.toSun, false);
     }
     const double thickness = m.top - m.bottom;
     const double hc = clamp01(h);

@@ -6,7 +6,7 @@
 #include <postfx/clouds.h>
 #include <postfx/context.h>
 
-#include "atmosphere/atmosphere_reference.h"
+#include "common/air.h"
 
 #include <glm/glm.hpp>
 
@@ -53,8 +53,8 @@ struct Model {
     CoverageMapTexels coverageMap;  // the host's coverage map; empty: none
     glm::dvec3 toSun{0.0, 1.0, 0.0}, sunIlluminance{0.0}, ambient{0.0};
     SlabMedium slab;  // slabMedium(s), for the slab model
-    // The atmosphere's transmittance toward the sun, null with the atmosphere off.
-    std::shared_ptr<const atmosphere::TransmittanceTable> atmosphere;
+    // The air, for the sun's transmittance through it; null with the atmosphere off.
+    std::shared_ptr<const common::Air> atmosphere;
 };
 
 // Whether the layer follows the planet (a Layer with the atmosphere on: spheres around its centre).

@@ -1,6 +1,5 @@
 #include "clouds/clouds_path_tracer.h"
 
-#include "atmosphere/atmosphere_model.h"
 #include "clouds/clouds_settings.h"
 
 #include <glm/gtc/constants.hpp>
@@ -57,8 +56,7 @@ double sunTransmittance(const Model& m, const dvec3& x, Rng& rng) {
 dvec3 sunLight(const Model& m, const dvec3& x, const dvec3& d, Rng& rng) {
     dvec3 sun = m.sunIlluminance;
     if (m.atmosphere) {
-        const atmosphere::Model& am = m.atmosphere->model();
-        sun *= m.atmosphere->sun(atmosphere::planetCentred(am, m.camera + x), m.toSun);
+        sun *= m.atmosphere->sunTransmittance(m.camera + x, m.toSun, false);
     }
     if (!(std::max(sun.x, std::max(sun.y, sun.z)) > 0.0)) return dvec3(0.0);
     return sun * (phase(m, d, 1.0) * sunTransmittance(m, x, rng));

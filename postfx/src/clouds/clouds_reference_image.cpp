@@ -1,16 +1,14 @@
 // The clouds' CPU reference (docs/effects/clouds.md, "Reference"): the model of clouds_model.h per pixel
 // with fine steps, in double, or with pathTraced the path tracer's radiance (clouds_path_tracer.h); pixel
-// rays and the composite as the fog references' (fog/reference_image.h), the aerial perspective in front of
-// the clouds from the atmosphere's reference (integrateViewRay).
-#include "atmosphere/atmosphere_model.h"
-#include "atmosphere/atmosphere_orders.h"
-#include "atmosphere/atmosphere_reference.h"
+// rays and the composite as the fogs' references (common/reference_image.h), the aerial perspective in
+// front of the clouds from the air's view segments (common/air.h).
 #include "clouds/clouds_effect.h"
 #include "clouds/clouds_model.h"
 #include "clouds/clouds_path_tracer.h"
+#include "common/air.h"
+#include "common/noise_cpu.h"
+#include "common/reference_image.h"
 #include "core/checks.h"
-#include "fog/noise_cpu.h"
-#include "fog/reference_image.h"
 
 #include <postfx/reference.h>
 
@@ -103,9 +101,10 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out, std::vector<
     try {
         result.assign(in.color.begin(), in.color.end());
         if (standardError) standardError->assign(in.color.size(), 0.0f);
-        if (n.enabled && in.baseNoise.empty()) baseTexels = unorm(fog::generateNoiseCpu(n.baseSize, n.seed));
+        if (n.enabled && in.baseNoise.empty())
+            baseTexels = unorm(common::generateNoiseCpu(n.baseSize, n.seed));
         if (n.enabled && in.detailNoise.empty())
-            detailTexels = unorm(fog::generateWorleyNoiseCpu(n.detailSize, clouds::detailSeed(n.seed)));
+            detailTexels = unorm(common::generateWorleyNoiseCpu(n.detailSize, clouds::detailSeed(n.seed)));
     } catch (const std::bad_alloc&) {
         return {Result::OutOfMemory,
                 "reference::renderClouds: cannot allocate the output image or the noise"};
@@ -130,32 +129,13 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out, std::vector<
     const clouds::Model model = clouds::modelFrom(frame, base, detail, coverageMap);
 
     // The air in front of the clouds (atmosphere on): reference (a)'s integration to their mean distance.
-    std::shared_ptr<const atmosphere::PsiTable> psi;
-    std::shared_ptr<const atmosphere::OrdersTable> orders;
-    atmosphere::Model air;
-    atmosphere::Sun sun;
-    atmosphere::ViewRayOptions airOptions;
-    dvec3 airOrigin(0.0);
+    std::shared_ptr<const common::Air> air;
     if (in.atmosphere.enabled) {
-        air = atmosphere::modelFrom(in.atmosphere);
         try {
-            if (in.atmosphere.multipleScattering == AtmosphereMultipleScattering::Hillaire)
-                psi = atmosphere::sharedPsiTable(air);
-            if (in.atmosphere.multipleScattering == AtmosphereMultipleScattering::Orders)
-                orders = atmosphere::sharedOrdersTable(air, atmosphere::coarseOrdersOptions());
+            air = common::makeViewAir(in.atmosphere, in.sun, dvec3(in.camera.position), 256);
         } catch (const std::bad_alloc&) {
             return {Result::OutOfMemory, "reference::renderClouds: cannot allocate the atmosphere's tables"};
         }
-        sun.toSun = glm::normalize(dvec3(in.sun.toSun));
-        sun.illuminance = dvec3(in.sun.illuminance);
-        airOptions.steps = 256;
-        airOptions.multipleScattering = in.atmosphere.multipleScattering != AtmosphereMultipleScattering::Off;
-        airOptions.transmittanceTable = model.atmosphere.get();
-        airOptions.psiTable = psi.get();
-        airOptions.ordersTable = orders.get();
-        airOptions.throughGround = true;
-        airOrigin =
-            atmosphere::clampAboveGround(air, atmosphere::planetCentred(air, dvec3(in.camera.position)));
     }
 
     clouds::PathOptions paths;
@@ -184,11 +164,8 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out, std::vector<
             }
             if (!(r.transmittance < 1.0)) continue;
             dvec3 L = r.luminance;
-            if (in.atmosphere.enabled) {
-                atmosphere::ViewRayOptions o = airOptions;
-                o.maxDistance = r.meanDistance;
-                const atmosphere::ViewRayResult front =
-                    atmosphere::integrateViewRay(air, airOrigin, ray.d, sun, o);
+            if (air) {
+                const common::Air::Segment front = air->viewSegment(ray.d, r.meanDistance);
                 L = front.transmittance * L + (1.0 - r.transmittance) * front.luminance;
                 error *= front.transmittance;
             }

@@ -1,6 +1,7 @@
 #include "clouds/clouds_shadow.h"
 
 #include "clouds/clouds_model.h"
+#include "common/cloud_shadow.h"
 
 #include <cmath>
 
@@ -26,11 +27,6 @@ double bottomPlane(const CloudSettings& s) {
 
 }  // namespace
 
-bool castsShadows(const FrameInfo& frame) {
-    const CloudSettings& s = frame.clouds;
-    return s.enabled && s.castShadows && s.coverage > 0.0f && s.density > 0.0f;
-}
-
 ShadowMapGeometry shadowMapGeometry(const FrameInfo& frame) {
     const CloudSettings& s = frame.clouds;
     ShadowMapGeometry g;
@@ -50,7 +46,7 @@ namespace postfx {
 // direction onto the plane y = y_b), the same for uv.y with z.
 CloudShadowTransform cloudShadowTransform(const FrameInfo& frame) {
     CloudShadowTransform t;
-    if (!clouds::castsShadows(frame)) return t;
+    if (!common::castsCloudShadows(frame)) return t;
     const glm::dvec3 sun = clouds::toSun(frame);
     if (!(sun.y > clouds::kMinSunY)) return t;
     const clouds::ShadowMapGeometry g = clouds::shadowMapGeometry(frame);
@@ -61,18 +57,3 @@ CloudShadowTransform cloudShadowTransform(const FrameInfo& frame) {
 }
 
 }  // namespace postfx
-
-namespace postfx::clouds {
-
-ShadowRows cameraRelativeShadowRows(const FrameInfo& frame) {
-    const CloudShadowTransform t = cloudShadowTransform(frame);
-    const glm::dvec3 camera(frame.camera.position);
-    // P = x + camera: the constant term takes the camera's part, in double.
-    auto row = [&](const DVec4& r) {
-        const glm::dvec3 a(r.x, r.y, r.z);
-        return glm::vec4(glm::vec3(a), float(r.w + glm::dot(a, camera)));
-    };
-    return {row(t.u), row(t.v)};
-}
-
-}  // namespace postfx::clouds

@@ -9,21 +9,11 @@
 
 namespace postfx::clouds {
 
-// Whether `frame`'s clouds run and cast shadows (the map is made and read).
-bool castsShadows(const FrameInfo& frame);
-
 struct ShadowMapGeometry {
     glm::dvec3 center{0.0};  // world position of the map's centre, on the shape's bottom plane [m]
     double extent = 1.0;     // edge [m]
     uint32_t size = 1;       // edge [texels]
 };
 ShadowMapGeometry shadowMapGeometry(const FrameInfo& frame);
-
-// cloudShadowTransform's rows for camera-relative positions (the fogs' uniforms), in float.
-struct ShadowRows {
-    glm::vec4 u{0.0f, 0.0f, 0.0f, -1.0f};
-    glm::vec4 v{0.0f, 0.0f, 0.0f, -1.0f};
-};
-ShadowRows cameraRelativeShadowRows(const FrameInfo& frame);
 
 }  // namespace postfx::clouds

@@ -1,12 +1,11 @@
 #include "fog/fog_effect.h"
 
-#include "atmosphere/atmosphere_effect.h"
-#include "clouds/clouds_effect.h"
-#include "clouds/clouds_shadow.h"
+#include "common/cloud_shadow.h"
+#include "common/medium_noise.h"
+#include "common/shared_resources.h"
 #include "core/checks.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
-#include "fog/medium_noise.h"
 #include "postfx_objects_spirv.h"
 
 namespace postfx::fog {
@@ -24,8 +23,9 @@ constexpr core::Binding kShadowMap{gpu::kFogBindingShadowMap, VK_DESCRIPTOR_TYPE
 constexpr core::Binding kNoiseTexture{gpu::kFogBindingNoise, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
 constexpr core::Binding kUniformBuffer{gpu::kFogBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
 constexpr core::Binding kScatterImage{gpu::kFogBindingScatter, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-constexpr core::Binding kAtmosphere{gpu::kFogBindingAtmosphere, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
-constexpr core::Binding kCloudShadow{gpu::kFogBindingCloudShadow, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+constexpr core::Binding kAtmosphere{gpu::kMediumBindingAtmosphere, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
+constexpr core::Binding kCloudShadow{gpu::kMediumBindingCloudShadow,
+                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
 constexpr core::Binding kRaymarchBindings[] = {kColorIn,      kColorOut,      kDepth,      kShadowMap,
                                                kNoiseTexture, kUniformBuffer, kAtmosphere, kCloudShadow};
 constexpr core::Binding kReducedBindings[] = {kDepth,        kShadowMap,  kNoiseTexture, kUniformBuffer,
@@ -98,7 +98,7 @@ namespace {
 uint64_t temporalKey(const FrameInfo& frame) {
     using core::hashValue;
     const FogSettings& s = frame.fog;
-    uint64_t h = mediumKey(s);
+    uint64_t h = common::mediumKey(s);
     h = hashValue(h, frame.color.extent.width);
     h = hashValue(h, frame.color.extent.height);
     h = hashValue(h, frame.color.format);
@@ -107,23 +107,23 @@ uint64_t temporalKey(const FrameInfo& frame) {
     h = hashValue(h, s.resolutionScale);
     h = hashValue(h, s.transmittanceCutoff);
     h = hashValue(h, s.skipEmptySpace);
-    h = hashValue(h, clouds::castsShadows(frame));  // the sun's light under the clouds
+    h = hashValue(h, common::castsCloudShadows(frame));  // the sun's light under the clouds
     return hashValue(h, s.shadowKernel);
 }
 
 }  // namespace
 
-FogEffect::FogEffect(const core::Gpu& gpu) : noiseFormatSupported_(noiseFormatSupported(gpu)) {}
+FogEffect::FogEffect(const core::Gpu& gpu) : noiseFormatSupported_(common::noiseFormatSupported(gpu)) {}
 
 Status FogEffect::validate(const FrameInfo& frame) const {
     if (!frame.fog.enabled) return Status::success();
     if (Status s = validateSettings(frame.fog); !s) return s;
-    if (Status s = checkNoiseSupported(frame.fog.noise, noiseFormatSupported_, "fog"); !s) return s;
+    if (Status s = common::checkNoiseSupported(frame.fog.noise, noiseFormatSupported_, "fog"); !s) return s;
     return Status::success();
 }
 
 bool FogEffect::active(const FrameInfo& frame) const {
-    return frame.fog.enabled && !fogMediumEmpty(frame.fog, frame.fog.noise.enabled);
+    return frame.fog.enabled && !common::fogMediumEmpty(frame.fog, frame.fog.noise.enabled);
 }
 
 core::QualityRequest FogEffect::quality(const FrameInfo& frame) const {
@@ -164,7 +164,7 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const bool temporal = frame.fog.temporal.enabled;
 
     const core::DepthInput depthInput = b.depthInput();
-    const core::ImageRef noiseImage = declareNoise(b, noise, {kNoise, kNoNoise, kNoiseGenerate});
+    const core::ImageRef noiseImage = common::declareNoise(b, noise, {kNoise, kNoNoise, kNoiseGenerate});
     core::ImageDesc marchDesc;
     marchDesc.format = frame.color.format;
     marchDesc.extent = {march.x, march.y, 1};
@@ -179,8 +179,8 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = noise.enabled ? Use::Sampled : Use::BoundOnly;
     // Full size without temporal: one pass marches and composites.
-    const atmosphere::SunTransmittanceLut sunLut = atmosphere::sunTransmittanceLut(b, depth);
-    const core::OptionalSampled cloudShadow = clouds::shadowMapInput(b, depth);
+    const core::OptionalSampled sunLut = common::sampledOrStandIn(b, common::kSunTransmittanceLut, depth);
+    const core::OptionalSampled cloudShadow = common::sampledOrStandIn(b, common::kCloudShadowMap, depth);
     if (!reduced && !temporal) {
         const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
         b.pass(kRaymarch[rgba32], groupsFor(full.x, gpu::kFogMarchGroupX),
@@ -191,8 +191,8 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
             .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
             .bind(gpu::kFogBindingUniforms, uniforms)
-            .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
-            .bind(gpu::kFogBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
+            .bind(gpu::kMediumBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
+            .bind(gpu::kMediumBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
             .bind(gpu::kFogBindingColorOut, target, Use::StorageWrite);
         return Status::success();
     }
@@ -219,8 +219,8 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFogBindingUniforms, uniforms)
-        .bind(gpu::kFogBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
-        .bind(gpu::kFogBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
+        .bind(gpu::kMediumBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
+        .bind(gpu::kMediumBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
         .bind(gpu::kFogBindingScatter, scatter, Use::StorageWrite);
     core::ImageRef result = scatter;
     if (temporal) {

@@ -1,10 +1,10 @@
 // Double-precision CPU reference of the ray-marched fog: the model of docs/effects/fog.md evaluated
 // with a converged midpoint march (no jitter, no early cutoff), multithreaded over rows.
+#include "common/reference_image.h"
+#include "common/reference_model.h"
 #include "core/checks.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_shared.h"
-#include "fog/reference_image.h"
-#include "fog/reference_model.h"
 
 #include <postfx/reference.h>
 
@@ -74,7 +74,7 @@ Status validate(const FogInputs& in) {
 // Everything the march reads, converted to double once.
 struct Model : MediumModel {
     bool skipEmptySpace;
-    double mediumTop;  // above base height: fog::fogMediumTop
+    double mediumTop;  // above base height: fogMediumTop
 };
 
 Model makeModel(const FogInputs& in) {
@@ -82,7 +82,7 @@ Model makeModel(const FogInputs& in) {
     Model m;
     fillMediumModel(m, in, s, s.shadowKernel);
     m.skipEmptySpace = s.skipEmptySpace;
-    m.mediumTop = fog::fogMediumTop(s, s.noise.enabled);
+    m.mediumTop = common::fogMediumTop(s, s.noise.enabled);
     return m;
 }
 
@@ -241,7 +241,7 @@ Status renderFog(const FogInputs& in, std::vector<float>& out) {
         return {Result::OutOfMemory, "reference::renderFog: cannot allocate the output image"};
     }
     // As on the GPU, an empty medium is not marched at all: the color stays as it is.
-    if (in.settings.enabled && !fog::fogMediumEmpty(in.settings, in.settings.noise.enabled)) {
+    if (in.settings.enabled && !common::fogMediumEmpty(in.settings, in.settings.noise.enabled)) {
         const Model m = makeModel(in);
         const glm::uvec2 size = fogMarchExtent(m.width, m.height, in.settings.resolutionScale);
         if (size.x == m.width && size.y == m.height) {

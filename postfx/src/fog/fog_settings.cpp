@@ -1,5 +1,7 @@
 #include "fog/fog_settings.h"
 
+#include "common/medium.h"
+#include "common/reduced_resolution.h"
 #include "core/checks.h"
 #include "core/temporal.h"
 
@@ -48,10 +50,6 @@ constexpr QualityPreset kQualityPresets[] = {
     {FogQuality::Ultra, 256, true, 1, 1.0f, true, 0.000771},
 };
 
-bool isPowerOfTwo(uint32_t v) {
-    return v && !(v & (v - 1));
-}
-
 }  // namespace
 
 std::vector<double> qualityPresetErrors() {
@@ -59,73 +57,6 @@ std::vector<double> qualityPresetErrors() {
     for (const QualityPreset& p : kQualityPresets)
         out.push_back(p.error);
     return out;
-}
-
-uint64_t mediumKey(const FogMedium& m) {
-    using core::hashValue;
-    uint64_t h = core::kHashSeed;
-    h = hashValue(h, m.density);
-    for (int c = 0; c < 3; ++c)
-        h = hashValue(h, m.albedo[c]);
-    h = hashValue(h, m.anisotropy);
-    h = hashValue(h, m.heightFalloff);
-    h = hashValue(h, m.baseHeight);
-    h = hashValue(h, m.maxDistance);
-    h = hashValue(h, m.selfShadow);
-    h = hashValue(h, m.analyticTail);
-    const FogNoiseSettings& n = m.noise;
-    h = hashValue(h, n.enabled);
-    if (!n.enabled) return h;
-    h = hashValue(h, n.textureSize);
-    h = hashValue(h, n.seed);
-    h = hashValue(h, n.tiling);
-    h = hashValue(h, n.threshold);
-    h = hashValue(h, n.multiplier);
-    for (int c = 0; c < 3; ++c)
-        h = hashValue(h, n.wind[c]);
-    h = hashValue(h, n.hostTexture);
-    return hashValue(h, n.hostTextureLayout);
-}
-
-float clampedAnisotropy(float g) {
-    return std::clamp(g, -kMaxAnisotropy, kMaxAnisotropy);
-}
-
-Status validateMedium(const FogMedium& m, const std::string& p) {
-    if (Status r = checkRange((p + ".density").c_str(), m.density, 0.0, 1e6); !r) return r;
-    for (int c = 0; c < 3; ++c)
-        if (Status r = checkRange((p + ".albedo").c_str(), m.albedo[c], 0.0, 1.0); !r) return r;
-    if (Status r = checkRange((p + ".anisotropy").c_str(), m.anisotropy, -1.0, 1.0); !r) return r;
-    if (Status r = checkRange((p + ".height_falloff").c_str(), m.heightFalloff, 0.0, 10.0); !r) return r;
-    if (!std::isfinite(m.baseHeight)) return bad(p + ".base_height", "is not finite");
-    if (Status r = checkRange((p + ".max_distance").c_str(), m.maxDistance, 0.0, 1e7); !r) return r;
-    if (m.maxDistance <= 0.0f) return bad(p + ".max_distance", "must be > 0");
-    const FogNoiseSettings& n = m.noise;
-    if (!n.enabled) return Status::success();
-    if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
-        return bad((p + ".noise.texture_size"),
-                   std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
-    if (n.hostTexture && n.hostTextureLayout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL &&
-        n.hostTextureLayout != VK_IMAGE_LAYOUT_GENERAL &&
-        n.hostTextureLayout != VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL)
-        return bad((p + ".noise.host_texture_layout"),
-                   std::to_string(int64_t(n.hostTextureLayout)) +
-                       " is not SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL (a layout it can be "
-                       "sampled in)");
-    if (Status r = checkRange((p + ".noise.tiling").c_str(), n.tiling, 0.0, 1000.0); !r) return r;
-    if (n.tiling <= 0.0f) return bad((p + ".noise.tiling"), "must be > 0");
-    if (Status r = checkRange((p + ".noise.threshold").c_str(), n.threshold, 0.0, 1.0); !r) return r;
-    if (Status r = checkRange((p + ".noise.multiplier").c_str(), n.multiplier, 0.0, 1e3); !r) return r;
-    for (int c = 0; c < 3; ++c)
-        if (Status r = checkRange((p + ".noise.wind").c_str(), n.wind[c], -1e3, 1e3); !r) return r;
-    return Status::success();
-}
-
-Status validateTemporal(const TemporalSettings& t, const std::string& p) {
-    const std::string key = p + ".temporal.blend_weight";
-    if (Status r = checkRange(key.c_str(), t.blendWeight, 0.0, 1.0); !r) return r;
-    if (t.blendWeight <= 0.0f) return bad(key, text(t.blendWeight) + " must be > 0");
-    return Status::success();
 }
 
 Status validateSettings(const FogSettings& s) {
@@ -141,8 +72,8 @@ Status validateSettings(const FogSettings& s) {
     if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
         return bad("fog.shadow_kernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
-    if (Status r = validateTemporal(s.temporal, "fog"); !r) return r;
-    return validateMedium(s, "fog");
+    if (Status r = common::validateTemporal(s.temporal, "fog"); !r) return r;
+    return common::validateMedium(s, "fog");
 }
 
 }  // namespace postfx::fog
@@ -152,27 +83,11 @@ Status validateFogSettings(const FogSettings& settings) {
     return fog::validateSettings(settings);
 }
 
-namespace fog {
-
-double fogMediumTop(const FogMedium& s, bool noiseEnabled) {
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    if (fogMediumEmpty(s, noiseEnabled)) return -kInf;
-    if (s.heightFalloff <= 0.0f) return kInf;
-    const double noiseMax =
-        noiseEnabled ? std::clamp(1.0 - double(s.noise.threshold), 0.0, 1.0) * double(s.noise.multiplier)
-                     : 1.0;
-    // density · noise_max · e^{-k·y} = ε / max_distance  <=>  y = ln(density · noise_max · max_distance / ε)
-    // / k
-    const double bound = double(s.density) * noiseMax * double(s.maxDistance) / kNegligibleOpticalDepth;
-    return std::log(bound) / double(s.heightFalloff);
-}
-
-}  // namespace fog
+namespace fog {}  // namespace fog
 
 UVec2 fogMarchExtent(uint32_t width, uint32_t height, float resolutionScale) {
-    const double scale = std::isnan(resolutionScale) ? 1.0 : std::clamp(double(resolutionScale), 0.0, 1.0);
-    auto axis = [&](uint32_t size) { return std::max(1u, uint32_t(std::ceil(double(size) * scale))); };
-    return {axis(width), axis(height)};
+    const glm::uvec2 e = common::reducedExtent(width, height, resolutionScale);
+    return {e.x, e.y};
 }
 
 FogSettings applyFogQuality(const FogSettings& settings, FogQuality quality) {

@@ -4,6 +4,7 @@
 #include <postfx/fog.h>
 #include <postfx/result.h>
 
+#include "common/medium.h"
 #include "fog/fog_shared.h"
 
 #include <string>
@@ -11,42 +12,8 @@
 
 namespace postfx::fog {
 
-constexpr float kMaxAnisotropy = 0.999f;                       // |g| is clamped to this
-constexpr float kMaxHeightExponent = gpu::kMaxHeightExponent;  // -height_falloff·(y - base_height) <= this
-
-// The shared medium's checks (FogMedium), used by both fogs: InvalidArgument naming the field with the
-// effect's key `prefix` ("fog" or "froxel_fog": "froxel_fog.density: -1 is outside [0, 1e+06]"); the
-// noise's settings are checked when the noise is enabled.
-Status validateMedium(const FogMedium& medium, const std::string& prefix);
-
-// The temporal settings' checks (TemporalSettings), named with the effect's `prefix`
-// ("fog.temporal.blend_weight: 0 must be > 0").
-Status validateTemporal(const TemporalSettings& temporal, const std::string& prefix);
-
 // InvalidArgument naming the field ("fog.density: -1 is negative") for any value out of range or NaN.
 Status validateSettings(const FogSettings& settings);
-
-// The medium is empty everywhere: density 0, or noise on with multiplier 0 or a threshold at or above the
-// texels' maximum of 1. The fog then records nothing (docs/frame-plan.md) and the reference leaves the
-// color as it is, so the analytic tail (which has no noise term) never adds fog to an empty medium.
-inline bool fogMediumEmpty(const FogMedium& s, bool noiseEnabled) {
-    return s.density <= 0.0f || (noiseEnabled && (s.noise.multiplier <= 0.0f || s.noise.threshold >= 1.0f));
-}
-
-// Empty-space skipping (fog.md, "Empty space"): the optical depth that the march may leave out.
-constexpr double kNegligibleOpticalDepth = 1e-4;
-
-// Height above base_height above which the medium's extinction bound density · noise_max · h(y) is below
-// kNegligibleOpticalDepth / max_distance, so that no march segment above it can hold more than that
-// optical depth; noise_max = clamp(1 - threshold, 0, 1) · multiplier (noise values are in [0, 1]).
-// +Inf when the height term does not fall (height_falloff 0), -Inf for an empty medium.
-double fogMediumTop(const FogMedium& s, bool noiseEnabled);
-
-// A hash of every FogMedium field (the noise's included): a change resets the temporal history.
-uint64_t mediumKey(const FogMedium& medium);
-
-// g clamped to [-kMaxAnisotropy, kMaxAnisotropy].
-float clampedAnisotropy(float g);
 
 // Each preset's error on the committed accuracy–cost front, Low first (QualityPreset::error).
 std::vector<double> qualityPresetErrors();

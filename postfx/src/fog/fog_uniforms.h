@@ -8,10 +8,6 @@
 
 namespace postfx::fog {
 
-// The shared medium's part (FogMedium: both fogs), with a 1×1 shadow kernel, no march and no jitter.
-// `noiseEnabled`: a noise texture will be bound; `shadowMapEnabled`: a shadow map will be bound.
-gpu::FogUniforms buildMediumUniforms(const FogMedium& medium, const FrameInfo& frame,
-                                     const DepthConvention& depth, bool noiseEnabled, bool shadowMapEnabled);
 // The ray-marched fog's: the medium's plus its march (frame.fog).
 gpu::FogUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& depth, bool noiseEnabled,
                                bool shadowMapEnabled);

@@ -1,10 +1,9 @@
 #include "froxel_fog/froxel_effect.h"
 
-#include "atmosphere/atmosphere_effect.h"
-#include "clouds/clouds_effect.h"
-#include "clouds/clouds_shadow.h"
-#include "fog/fog_settings.h"
-#include "fog/medium_noise.h"
+#include "common/cloud_shadow.h"
+#include "common/medium.h"
+#include "common/medium_noise.h"
+#include "common/shared_resources.h"
 #include "froxel_fog/froxel_uniforms.h"
 #include "postfx_objects_spirv.h"
 
@@ -107,14 +106,14 @@ bool volumesHoldDensity(const FroxelFogSettings& s) {
 uint64_t temporalKey(const FrameInfo& frame) {
     using core::hashValue;
     const FroxelFogSettings& s = frame.froxelFog;
-    uint64_t h = fog::mediumKey(s);
+    uint64_t h = common::mediumKey(s);
     const UVec3 grid = froxelGridSize(s, frame.color.extent.width, frame.color.extent.height);
     for (int a = 0; a < 3; ++a)
         h = hashValue(h, grid[a]);
     h = hashValue(h, s.depthDistribution);
     h = hashValue(h, s.depthExponent);
     h = hashValue(h, s.jitter);
-    h = hashValue(h, clouds::castsShadows(frame));  // the sun's light under the clouds
+    h = hashValue(h, common::castsCloudShadows(frame));  // the sun's light under the clouds
     h = hashValue(h, s.volumeCount);
     for (uint32_t i = 0; i < s.volumeCount; ++i) {
         const FogVolume& v = s.volumes[i];
@@ -133,7 +132,7 @@ uint64_t temporalKey(const FrameInfo& frame) {
 }  // namespace
 
 FroxelFogEffect::FroxelFogEffect(const core::Gpu& gpu)
-    : noiseFormatSupported_(fog::noiseFormatSupported(gpu)) {}
+    : noiseFormatSupported_(common::noiseFormatSupported(gpu)) {}
 
 Status FroxelFogEffect::validate(const FrameInfo& frame) const {
     const FroxelFogSettings& s = frame.froxelFog;
@@ -143,12 +142,12 @@ Status FroxelFogEffect::validate(const FrameInfo& frame) const {
                 "fog.enabled and froxel_fog.enabled: both fogs are on in one frame; they model the same "
                 "medium, so enable one of them (docs/effects/froxel-fog.md)"};
     if (Status r = validateFroxelFogSettings(s); !r) return r;
-    return fog::checkNoiseSupported(s.noise, noiseFormatSupported_, "froxel_fog");
+    return common::checkNoiseSupported(s.noise, noiseFormatSupported_, "froxel_fog");
 }
 
 bool FroxelFogEffect::active(const FrameInfo& frame) const {
     const FroxelFogSettings& s = frame.froxelFog;
-    return s.enabled && (!fog::fogMediumEmpty(s, s.noise.enabled) || volumesHoldDensity(s));
+    return s.enabled && (!common::fogMediumEmpty(s, s.noise.enabled) || volumesHoldDensity(s));
 }
 
 Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
@@ -160,7 +159,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const UVec3 grid = froxelGridSize(s, frame.color.extent.width, frame.color.extent.height);
 
     const core::DepthInput depthInput = b.depthInput();
-    const core::ImageRef noise = fog::declareNoise(b, s.noise, {kNoise, kNoNoise, kNoiseGenerate});
+    const core::ImageRef noise = common::declareNoise(b, s.noise, {kNoise, kNoNoise, kNoiseGenerate});
 
     // Local lights: their buffer, and the light lists when there are many.
     gpu::FroxelLights lights;
@@ -208,8 +207,8 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const core::ImageRef shadow = shadowRead ? b.host(HostImage::ShadowMap) : depth;
     const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = s.noise.enabled ? Use::Sampled : Use::BoundOnly;
-    const atmosphere::SunTransmittanceLut sunLut = atmosphere::sunTransmittanceLut(b, depth);
-    const core::OptionalSampled cloudShadow = clouds::shadowMapInput(b, depth);
+    const core::OptionalSampled sunLut = common::sampledOrStandIn(b, common::kSunTransmittanceLut, depth);
+    const core::OptionalSampled cloudShadow = common::sampledOrStandIn(b, common::kCloudShadowMap, depth);
 
     core::ImageRef lightLists;
     if (lists) {

@@ -1,10 +1,10 @@
 // Double-precision CPU reference of the froxel fog (docs/effects/froxel-fog.md): the shared medium plus
 // local fog volumes, lit by the sun, ambient and local lights, evaluated continuously along each pixel's
 // ray with a converged midpoint march (no grid, no jitter), then the ray-marched fog's analytic tail.
+#include "common/medium.h"
+#include "common/reference_image.h"
+#include "common/reference_model.h"
 #include "core/checks.h"
-#include "fog/fog_settings.h"
-#include "fog/reference_image.h"
-#include "fog/reference_model.h"
 
 #include <postfx/reference.h>
 
@@ -89,9 +89,9 @@ struct Model : detail::MediumModel {
 Model makeModel(const FroxelFogInputs& in) {
     const FroxelFogSettings& s = in.settings;
     Model m;
-    // An empty shared medium (fog::fogMediumEmpty) has no extinction: the volumes may still have some.
-    detail::fillMediumModel(m, in, s, 1);                          // the froxel fog filters no shadow kernel
-    if (fog::fogMediumEmpty(s, s.noise.enabled)) m.density = 0.0;  // the tail's included
+    // An empty shared medium (common::fogMediumEmpty) has no extinction: the volumes may still have some.
+    detail::fillMediumModel(m, in, s, 1);  // the froxel fog filters no shadow kernel
+    if (common::fogMediumEmpty(s, s.noise.enabled)) m.density = 0.0;  // the tail's included
     for (uint32_t i = 0; i < s.volumeCount; ++i) {
         FogVolume v = s.volumes[i];
         if (v.density <= 0.0f) continue;
@@ -236,7 +236,8 @@ Status renderFroxelFog(const FroxelFogInputs& in, std::vector<float>& out) {
             return {Result::OutOfMemory,
                     "reference::renderFroxelFog: cannot allocate the lights and volumes"};
         }
-        const bool empty = fog::fogMediumEmpty(in.settings, in.settings.noise.enabled) && m.volumes.empty();
+        const bool empty =
+            common::fogMediumEmpty(in.settings, in.settings.noise.enabled) && m.volumes.empty();
         if (!empty)
             detail::forEachRow(m.height, in.threads, [&](uint32_t j) {
                 for (uint32_t i = 0; i < m.width; ++i) {

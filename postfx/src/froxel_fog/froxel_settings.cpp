@@ -1,6 +1,6 @@
 // FroxelFogSettings' checks and the grid's slice distribution (docs/effects/froxel-fog.md).
+#include "common/medium.h"
 #include "core/checks.h"
-#include "fog/fog_settings.h"
 
 #include <postfx/froxel_fog.h>
 #include <postfx/inputs.h>
@@ -38,8 +38,8 @@ Status checkVolume(const FogVolume& v, uint32_t index) {
 }  // namespace
 
 Status validateFroxelFogSettings(const FroxelFogSettings& s) {
-    if (Status r = fog::validateMedium(s, "froxel_fog"); !r) return r;
-    if (Status r = fog::validateTemporal(s.temporal, "froxel_fog"); !r) return r;
+    if (Status r = common::validateMedium(s, "froxel_fog"); !r) return r;
+    if (Status r = common::validateTemporal(s.temporal, "froxel_fog"); !r) return r;
     for (int a = 0; a < 3; ++a)
         if (s.grid[a] < 1 || s.grid[a] > kMaxFroxelGridSize)
             return invalid("froxel_fog.grid[" + std::to_string(a) + "]: " + std::to_string(s.grid[a]) +

@@ -1,8 +1,7 @@
 #include "froxel_fog/froxel_uniforms.h"
 
+#include "common/medium.h"
 #include "core/exposure.h"
-#include "fog/fog_settings.h"
-#include "fog/fog_uniforms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,7 +36,7 @@ double gridNear(const FrameInfo& frame, const DepthConvention& depth) {
 float storageScale(const FrameInfo& frame) {
     const FroxelFogSettings& s = frame.froxelFog;
     // Henyey–Greenstein's largest value, at cos θ = ±1 (sign of g): (1 + |g|) / (4π (1 - |g|)²).
-    const double g = std::abs(double(fog::clampedAnisotropy(s.anisotropy)));
+    const double g = std::abs(double(common::clampedAnisotropy(s.anisotropy)));
     const double peak = (1.0 + g) / (4.0 * 3.14159265358979323846 * (1.0 - g) * (1.0 - g));
     double largest = 0.0;  // of the pre-exposed radiance (core/exposure.h)
     for (int c = 0; c < 3; ++c)
@@ -73,7 +72,7 @@ PassUniforms buildPassUniforms(const FrameInfo& frame, const DepthConvention& de
                                bool shadowMapEnabled) {
     const FroxelFogSettings& s = frame.froxelFog;
     PassUniforms u{};
-    u.fog = fog::buildMediumUniforms(s, frame, depth, noiseEnabled, shadowMapEnabled);
+    u.fog = common::buildMediumUniforms(s, frame, depth, noiseEnabled, shadowMapEnabled);
     gpu::FroxelUniforms& f = u.froxel;
     f.grid = glm::uvec4(grid.x, grid.y, grid.z, lightCount);
     glm::vec3 offset(0.5f);

@@ -9,7 +9,7 @@ namespace postfx::froxel_fog {
 
 // What the froxel fog's kernels read from binding kFroxelBindingUniforms.
 struct PassUniforms {
-    gpu::FogUniforms fog;  // the shared medium (fog/medium.glsl)
+    gpu::FogUniforms fog;  // the shared medium (common/medium/medium.glsl)
     gpu::FroxelUniforms froxel;
 };
 static_assert(sizeof(PassUniforms) == sizeof(gpu::FogUniforms) + sizeof(gpu::FroxelUniforms));

@@ -19,7 +19,7 @@ layout(binding = 3) uniform sampler3D noiseTexture;
 #include "common/integrate.glsl"
 #include "common/phase.glsl"
 #include "common/composite.glsl"
-#include "fog/medium.glsl"
+#include "common/medium/medium.glsl"
 
 // Must match FunctionCase in test_shader_functions.cpp.
 const uint kPhase = 0u;        // a.xyz view dir, b.xyz to light, c.x g     -> x: p [1/sr]

@@ -2,7 +2,7 @@
 #ifndef POSTFX_FOG_RAY_GLSL
 #define POSTFX_FOG_RAY_GLSL
 
-#include "fog/flags.glsl"
+#include "common/medium/flags.glsl"
 #include "common/reduced_resolution.glsl"
 
 struct FogRay {

@@ -5,7 +5,7 @@
 #ifndef POSTFX_ATMOSPHERE_MODEL_GLSL
 #define POSTFX_ATMOSPHERE_MODEL_GLSL
 
-#include "atmosphere/transmittance_lut.glsl"
+#include "common/air/transmittance_lut.glsl"
 #include "common/ray_sphere.glsl"
 
 const float kAtmospherePi = 3.14159265358979;

@@ -1,8 +1,8 @@
-#include "fog/medium_noise.h"
+#include "common/medium_noise.h"
 
-#include "fog/fog_shared.h"
+#include "common/medium_shared.h"
 
-namespace postfx::fog {
+namespace postfx::common {
 
 bool noiseFormatSupported(const core::Gpu& gpu) {
     VkFormatProperties props{};
@@ -55,4 +55,4 @@ core::ImageRef declareNoise(core::FrameBuilder& b, const FogNoiseSettings& noise
     return b.transientImage(d.none, one);
 }
 
-}  // namespace postfx::fog
+}  // namespace postfx::common

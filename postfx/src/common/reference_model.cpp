@@ -1,7 +1,7 @@
 // The fog model's equations in double precision (docs/effects/fog.md, section "Model").
-#include "fog/reference_model.h"
+#include "common/reference_model.h"
 
-#include "fog/fog_settings.h"
+#include "common/medium.h"
 
 #include <postfx/reference.h>
 
@@ -14,7 +14,7 @@ namespace postfx::reference {
 
 // Phase: p(cosθ) = (1 - g²) / (4π (1 + g² - 2g·cosθ)^{3/2}), g clamped to ±kMaxAnisotropy.
 double henyeyGreenstein(double cosTheta, double g) {
-    const double gMax = fog::kMaxAnisotropy;
+    const double gMax = common::kMaxAnisotropy;
     g = std::clamp(g, -gMax, gMax);
     const double denom = 1.0 + g * g - 2.0 * g * cosTheta;
     return (1.0 - g * g) / (4.0 * std::numbers::pi * denom * std::sqrt(denom));
@@ -24,7 +24,7 @@ namespace detail {
 
 // Medium: h(y) = exp(-height_falloff · (y - base_height)), the exponent clamped to at most 80.
 double heightExponent(double y, double heightFalloff, double baseHeight) {
-    return std::min(-heightFalloff * (y - baseHeight), double(fog::kMaxHeightExponent));
+    return std::min(-heightFalloff * (y - baseHeight), double(common::kMaxHeightExponent));
 }
 
 double heightTerm(double y, double heightFalloff, double baseHeight) {

@@ -1,14 +1,14 @@
 // Mirrors shaders/common/noise.glsl function by function; keep the two in step (the formula is
 // documented there). Float operations are written in the shader's order; only fused multiply-adds the
 // GPU compiler may form differ (by an ulp or so).
-#include "fog/noise_cpu.h"
+#include "common/noise_cpu.h"
 
-#include "fog/fog_shared.h"
+#include "common/medium_shared.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace postfx::fog {
+namespace postfx::common {
 namespace {
 
 struct U3 {
@@ -172,4 +172,4 @@ std::vector<uint8_t> generateWorleyNoiseCpu(uint32_t size, uint32_t seed) {
     return quantized(size, seed, worleyTexel);
 }
 
-}  // namespace postfx::fog
+}  // namespace postfx::common

@@ -1,4 +1,4 @@
-#include "fog/reference_image.h"
+#include "common/reference_image.h"
 
 #include "core/checks.h"
 

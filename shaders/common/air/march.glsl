@@ -23,7 +23,7 @@ vec3 atmosphereStepIntegral(vec3 extinction, float dt) {
 }
 
 #ifdef ATMOSPHERE_MS
-#include "atmosphere/orders_lookup.glsl"
+#include "common/air/orders_lookup.glsl"
 
 // Orders >= 2 in-scattered at p (radius r) into view direction d, per unit length and illuminance: the
 // scattering-orders LUT's J≥2, Hillaire's σs·Ψ, or none (AtmosphereUniforms flags).

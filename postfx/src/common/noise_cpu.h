@@ -1,4 +1,4 @@
-// CPU port of the fog's noise generator (shaders/common/noise.glsl, shaders/fog/noise_generate.comp):
+// CPU port of the shared noise generator (shaders/common/noise.glsl, shaders/common/noise_generate.comp):
 // the same integer hashes and the same float operations in the same order, so a texel computed here
 // matches the GPU's to within float rounding (tests compare the two). Tests and tools only.
 #pragma once
@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace postfx::fog {
+namespace postfx::common {
 
 // The generator's value at texel (x, y, z) of a size³ texture for `seed`, in [0, 1], before the
 // R8_UNORM quantization. `size` is a power of two.
@@ -20,4 +20,4 @@ std::vector<uint8_t> generateNoiseCpu(uint32_t size, uint32_t seed);
 // The same for worleyTexel.
 std::vector<uint8_t> generateWorleyNoiseCpu(uint32_t size, uint32_t seed);
 
-}  // namespace postfx::fog
+}  // namespace postfx::common

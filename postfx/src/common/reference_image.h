@@ -6,8 +6,8 @@
 #include <postfx/inputs.h>
 
 #include <postfx/result.h>
-#include "atmosphere/atmosphere_reference.h"
-#include "fog/reference_model.h"
+#include "common/air.h"
+#include "common/reference_model.h"
 
 #include <glm/glm.hpp>
 
@@ -58,17 +58,15 @@ struct MediumModel {
     glm::dvec3 noiseOrigin;  // noise coordinate of the camera, wrapped to [0, 1)
     double noiseScale, noiseThreshold, noiseMultiplier;
     ShadowMap shadow;
-    // The atmosphere (inputs' atmosphere.enabled): the sun's transmittance through it, null when off.
-    std::shared_ptr<const atmosphere::TransmittanceTable> atmosphere;
+    // The air (inputs' atmosphere.enabled): the sun's transmittance through it, null when off.
+    std::shared_ptr<const common::Air> atmosphere;
 };
 
 // The atmosphere's transmittance toward the sun at camera-relative x: the table's at the planet-centred
 // position clamped above the ground; 1 without an atmosphere.
 inline glm::dvec3 atmosphereSunTransmittance(const MediumModel& m, const glm::dvec3& x) {
     if (!m.atmosphere) return glm::dvec3(1.0);
-    const atmosphere::Model& a = m.atmosphere->model();
-    return m.atmosphere->sun(atmosphere::clampAboveGround(a, atmosphere::planetCentred(a, m.camera + x)),
-                             m.toSun);
+    return m.atmosphere->sunTransmittance(m.camera + x, m.toSun, true);
 }
 
 // Fills `m` from a reference's inputs (FogInputs, FroxelFogInputs: the same field names) and its medium.
@@ -104,8 +102,7 @@ void fillMediumModel(MediumModel& m, const Inputs& in, const FogMedium& s, uint3
                 in.shadowWorldToClip, in.shadowReversedZ, double(in.shadowDepthBias),
                 shadowKernel};
     m.atmosphere = nullptr;
-    if (in.atmosphere.enabled)
-        m.atmosphere = atmosphere::sharedTransmittanceTable(atmosphere::modelFrom(in.atmosphere));
+    if (in.atmosphere.enabled) m.atmosphere = common::makeAir(in.atmosphere);
 }
 
 // Runs `rowTask(j)` for rows 0..rows-1 on `threads` threads (0: all hardware threads). Rows are

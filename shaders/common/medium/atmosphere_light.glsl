@@ -6,12 +6,12 @@
 #ifndef POSTFX_FOG_ATMOSPHERE_LIGHT_GLSL
 #define POSTFX_FOG_ATMOSPHERE_LIGHT_GLSL
 
-#include "fog/flags.glsl"
-#include "atmosphere/transmittance_lut.glsl"
+#include "common/medium/flags.glsl"
+#include "common/air/transmittance_lut.glsl"
 #include "common/cloud_shadow.glsl"
 
-layout(binding = kFogBindingAtmosphere) uniform sampler2D atmosphereTransmittance;
-layout(binding = kFogBindingCloudShadow) uniform sampler2D cloudShadowMap;
+layout(binding = kMediumBindingAtmosphere) uniform sampler2D atmosphereTransmittance;
+layout(binding = kMediumBindingCloudShadow) uniform sampler2D cloudShadowMap;
 
 // T of the atmosphere from camera-relative x toward the sun; 1 with the atmosphere off.
 vec3 atmosphereSunTransmittance(vec3 x) {

@@ -1,5 +1,5 @@
 // The transmittance LUT's texture coordinate (docs/effects/atmosphere.md, "Parameterisations"), for the
-// atmosphere's own passes (model.glsl) and for the effects that read the LUT (fog/atmosphere_light.glsl):
+// atmosphere's own passes (model.glsl) and for the effects that read the LUT (common/medium/atmosphere_light.glsl):
 // Bruneton's horizon mapping x_μ = (d - d_min)/(d_max - d_min), x_r = ρ/H with H = √(top² - ground²),
 // ρ = √(r² - ground²), d the distance from radius r along cosine μ to the top, d_min = top - r,
 // d_max = ρ + H; each through the texel-centre mapping of a side of `size` texels.

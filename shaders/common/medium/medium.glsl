@@ -4,7 +4,7 @@
 #define POSTFX_FOG_MEDIUM_GLSL
 
 #include "common/integrate.glsl"
-#include "fog/flags.glsl"
+#include "common/medium/flags.glsl"
 
 // h(y) = exp(-height_falloff · (y - base_height)), from its exponent, clamped so that far below the base
 // it stays finite.

@@ -11,7 +11,7 @@
 
 #include <string>
 
-namespace postfx::fog {
+namespace postfx::common {
 
 inline constexpr VkFormat kNoiseFormat = VK_FORMAT_R8_UNORM;
 
@@ -41,4 +41,4 @@ core::ImageRef declareGeneratedNoise(core::FrameBuilder& builder, const core::Re
 core::ImageRef declareNoise(core::FrameBuilder& builder, const FogNoiseSettings& noise,
                             const NoiseDeclaration& declaration);
 
-}  // namespace postfx::fog
+}  // namespace postfx::common

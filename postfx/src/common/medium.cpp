@@ -1,0 +1,175 @@
+// The shared medium (FogMedium: both fogs; docs/effects/fog.md, "Model"): its checks, its bounds, its key
+// and its part of the uniforms.
+#include "common/medium.h"
+
+#include "common/cloud_shadow.h"
+#include "core/camera_math.h"
+#include "core/checks.h"
+#include "core/exposure.h"
+#include "core/temporal.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace postfx::common {
+namespace {
+
+using core::checkRange;
+
+Status bad(const std::string& field, const std::string& why) {
+    return core::invalid(field + ": " + why);
+}
+
+bool isPowerOfTwo(uint32_t v) {
+    return v && !(v & (v - 1));
+}
+
+}  // namespace
+
+uint64_t mediumKey(const FogMedium& m) {
+    using core::hashValue;
+    uint64_t h = core::kHashSeed;
+    h = hashValue(h, m.density);
+    for (int c = 0; c < 3; ++c)
+        h = hashValue(h, m.albedo[c]);
+    h = hashValue(h, m.anisotropy);
+    h = hashValue(h, m.heightFalloff);
+    h = hashValue(h, m.baseHeight);
+    h = hashValue(h, m.maxDistance);
+    h = hashValue(h, m.selfShadow);
+    h = hashValue(h, m.analyticTail);
+    const FogNoiseSettings& n = m.noise;
+    h = hashValue(h, n.enabled);
+    if (!n.enabled) return h;
+    h = hashValue(h, n.textureSize);
+    h = hashValue(h, n.seed);
+    h = hashValue(h, n.tiling);
+    h = hashValue(h, n.threshold);
+    h = hashValue(h, n.multiplier);
+    for (int c = 0; c < 3; ++c)
+        h = hashValue(h, n.wind[c]);
+    h = hashValue(h, n.hostTexture);
+    return hashValue(h, n.hostTextureLayout);
+}
+
+float clampedAnisotropy(float g) {
+    return std::clamp(g, -kMaxAnisotropy, kMaxAnisotropy);
+}
+
+Status validateMedium(const FogMedium& m, const std::string& p) {
+    if (Status r = checkRange((p + ".density").c_str(), m.density, 0.0, 1e6); !r) return r;
+    for (int c = 0; c < 3; ++c)
+        if (Status r = checkRange((p + ".albedo").c_str(), m.albedo[c], 0.0, 1.0); !r) return r;
+    if (Status r = checkRange((p + ".anisotropy").c_str(), m.anisotropy, -1.0, 1.0); !r) return r;
+    if (Status r = checkRange((p + ".height_falloff").c_str(), m.heightFalloff, 0.0, 10.0); !r) return r;
+    if (!std::isfinite(m.baseHeight)) return bad(p + ".base_height", "is not finite");
+    if (Status r = checkRange((p + ".max_distance").c_str(), m.maxDistance, 0.0, 1e7); !r) return r;
+    if (m.maxDistance <= 0.0f) return bad(p + ".max_distance", "must be > 0");
+    const FogNoiseSettings& n = m.noise;
+    if (!n.enabled) return Status::success();
+    if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
+        return bad((p + ".noise.texture_size"),
+                   std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
+    if (n.hostTexture && n.hostTextureLayout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL &&
+        n.hostTextureLayout != VK_IMAGE_LAYOUT_GENERAL &&
+        n.hostTextureLayout != VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL)
+        return bad((p + ".noise.host_texture_layout"),
+                   std::to_string(int64_t(n.hostTextureLayout)) +
+                       " is not SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL (a layout it can be "
+                       "sampled in)");
+    if (Status r = checkRange((p + ".noise.tiling").c_str(), n.tiling, 0.0, 1000.0); !r) return r;
+    if (n.tiling <= 0.0f) return bad((p + ".noise.tiling"), "must be > 0");
+    if (Status r = checkRange((p + ".noise.threshold").c_str(), n.threshold, 0.0, 1.0); !r) return r;
+    if (Status r = checkRange((p + ".noise.multiplier").c_str(), n.multiplier, 0.0, 1e3); !r) return r;
+    for (int c = 0; c < 3; ++c)
+        if (Status r = checkRange((p + ".noise.wind").c_str(), n.wind[c], -1e3, 1e3); !r) return r;
+    return Status::success();
+}
+
+Status validateTemporal(const TemporalSettings& t, const std::string& p) {
+    const std::string key = p + ".temporal.blend_weight";
+    if (Status r = checkRange(key.c_str(), t.blendWeight, 0.0, 1.0); !r) return r;
+    if (t.blendWeight <= 0.0f) return bad(key, core::numberText(t.blendWeight) + " must be > 0");
+    return Status::success();
+}
+
+double fogMediumTop(const FogMedium& s, bool noiseEnabled) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    if (fogMediumEmpty(s, noiseEnabled)) return -kInf;
+    if (s.heightFalloff <= 0.0f) return kInf;
+    const double noiseMax =
+        noiseEnabled ? std::clamp(1.0 - double(s.noise.threshold), 0.0, 1.0) * double(s.noise.multiplier)
+                     : 1.0;
+    // density · noise_max · e^{-k·y} = ε / max_distance  <=>  y = ln(density · noise_max · max_distance / ε)
+    // / k
+    const double bound = double(s.density) * noiseMax * double(s.maxDistance) / kNegligibleOpticalDepth;
+    return std::log(bound) / double(s.heightFalloff);
+}
+
+gpu::FogUniforms buildMediumUniforms(const FogMedium& s, const FrameInfo& frame, const DepthConvention& depth,
+                                     bool noiseEnabled, bool shadowMapEnabled) {
+    const glm::dvec3 camera = frame.camera.position;
+    gpu::FogUniforms u{};
+    u.clipToView =
+        glm::mat4(glm::inverse(glm::dmat4(frame.camera.projection) * core::rotationOnly(frame.camera.view)));
+    // camera-relative x -> world (x + camera) -> shadow clip
+    u.viewToShadow = glm::mat4(frame.shadowMap.worldToClip * glm::translate(glm::dmat4(1.0), camera));
+    // In double: a long float vector's dot product would overflow (toSun = (1e30, 0, 0) gives 0 in float).
+    u.toSun = glm::vec4(glm::vec3(glm::normalize(glm::dvec3(frame.sun.toSun))), 0.0f);
+    u.sunIlluminance = glm::vec4(core::preExposed(frame.sun.illuminance, frame.preExposure), 0.0f);
+    u.ambient = glm::vec4(core::preExposed(frame.ambient, frame.preExposure), 0.0f);
+    u.albedo = glm::vec4(s.albedo, 0.0f);
+    // An empty medium (fogMediumEmpty) has no extinction anywhere, the analytic tail's included.
+    const float density = fogMediumEmpty(s, noiseEnabled) ? 0.0f : s.density;
+    u.medium = glm::vec4(density, s.heightFalloff, clampedAnisotropy(s.anisotropy), s.maxDistance);
+    u.heights =
+        glm::vec4(float(camera.y - double(s.baseHeight)), float(fogMediumTop(s, noiseEnabled)), 0.0f, 0.0f);
+
+    const double scale = 0.01 * double(s.noise.tiling);
+    const glm::dvec3 noiseAtCamera = (camera - glm::dvec3(s.noise.wind) * frame.timeSeconds) * scale;
+    const glm::dvec3 wrapped = noiseAtCamera - glm::floor(noiseAtCamera);
+    u.noise = glm::vec4(glm::vec3(wrapped), float(scale));
+    u.noiseRemap = glm::vec4(s.noise.threshold, s.noise.multiplier, 0.0f, 0.0f);
+
+    u.shadow = glm::vec4(frame.shadowMap.depthBias, 0.0f, 0.0f, 0.0f);  // a 1×1 kernel
+    const float noGeometryDepth = depth.reversedZ ? 0.0f : 1.0f;
+    u.march = glm::vec4(0.0f, noGeometryDepth, 0.0f, 0.0f);
+    u.extent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u,
+                          uint32_t(frame.frameIndex & 0xffffffffu));
+    u.scatterExtent = glm::uvec4(frame.color.extent.width, frame.color.extent.height, 0u, 0u);
+    uint32_t flags = 0;
+    if (noiseEnabled) flags |= gpu::kFogFlagNoise;
+    if (shadowMapEnabled) flags |= gpu::kFogFlagShadowMap;
+    if (shadowMapEnabled && frame.shadowMap.reversedZ) flags |= gpu::kFogFlagShadowReversedZ;
+    const glm::mat4& m = u.viewToShadow;  // m[column][row]
+    if (shadowMapEnabled && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f && m[3][3] == 1.0f)
+        flags |= gpu::kFogFlagShadowOrthographic;
+    if (s.selfShadow) flags |= gpu::kFogFlagSelfShadow;
+    if (s.analyticTail) flags |= gpu::kFogFlagAnalyticTail;
+    if (depth.reversedZ) flags |= gpu::kFogFlagDepthReversedZ;
+    // The sun through the atmosphere (common/medium/atmosphere_light.glsl): its transmittance LUT at each
+    // sample.
+    const AtmosphereSettings& a = frame.atmosphere;
+    if (a.enabled) {
+        flags |= gpu::kFogFlagAtmosphere;
+        u.planet = glm::vec4(a.groundRadius, a.topRadius, float(a.transmittanceLutSize.x),
+                             float(a.transmittanceLutSize.y));
+        u.planetCamera = glm::vec4(glm::vec3(camera + glm::dvec3(0.0, a.groundRadius, 0.0)), 0.0f);
+    }
+    // The sun through the clouds (common/medium/atmosphere_light.glsl): their shadow map, which the clouds
+    // declare earlier in the frame whenever they cast shadows.
+    if (common::castsCloudShadows(frame)) {
+        flags |= gpu::kFogFlagCloudShadow;
+        const common::CloudShadowRows rows = common::cameraRelativeCloudShadowRows(frame);
+        u.cloudShadowU = rows.u;
+        u.cloudShadowV = rows.v;
+    }
+    u.flags = glm::uvec4(flags, 0u, 0u, 0u);
+    return u;
+}
+
+}  // namespace postfx::common
