@@ -10,8 +10,8 @@
 // lerp(scene colour, fog colour, 1 - T). This file is our own code for that algorithm.
 //
 // One invocation per pixel; the bindings and FogUniforms are those of shaders/fog/raymarch.comp, and σt,
-// the shadow-map visibility and the fog's sun transmittance come from shaders/common/medium/medium.glsl, so only
-// the integration, the phase function and the composite differ from postfx:
+// the shadow-map visibility and the fog's sun transmittance come from shaders/common/medium/medium.glsl, so
+// only the integration, the phase function and the composite differ from postfx:
 //   D = min(surface distance, max distance); t = IGN(pixel, frame) · Δ   (Δ = push.stepLength [m])
 //   while (t < D) {                          // cost grows with D: no step cap (a safety cap of
 //       σ = σt(t·d)                          // kMaxIterations only, so a far or tiny-step ray ends)

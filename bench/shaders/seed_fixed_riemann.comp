@@ -3,8 +3,8 @@
 // (the Unity URP fog shader postfx started from; seed_as_written.comp says where it came from) with its
 // formula errors fixed but still a plain Riemann sum with a fixed step length. One invocation per pixel;
 // the bindings and FogUniforms are those of shaders/fog/raymarch.comp, and σt, the shadow-map visibility
-// V and the fog's sun transmittance Tsun come from shaders/common/medium/medium.glsl, so the medium and its light
-// are postfx's:
+// V and the fog's sun transmittance Tsun come from shaders/common/medium/medium.glsl, so the medium and its
+// light are postfx's:
 //   D = min(surface distance, max distance); t = IGN(pixel, frame) · Δ   (Δ = push.stepLength [m])
 //   while (t < D) {                          // cost grows with D (safety cap kMaxIterations only)
 //       δ = min(Δ, D - t)                    // the last step clipped to D

@@ -1,8 +1,8 @@
 // The transmittance LUT's texture coordinate (docs/effects/atmosphere.md, "Parameterisations"), for the
-// atmosphere's own passes (model.glsl) and for the effects that read the LUT (common/medium/atmosphere_light.glsl):
-// Bruneton's horizon mapping x_μ = (d - d_min)/(d_max - d_min), x_r = ρ/H with H = √(top² - ground²),
-// ρ = √(r² - ground²), d the distance from radius r along cosine μ to the top, d_min = top - r,
-// d_max = ρ + H; each through the texel-centre mapping of a side of `size` texels.
+// atmosphere's own passes (model.glsl) and for the effects that read the LUT
+// (common/medium/atmosphere_light.glsl): Bruneton's horizon mapping x_μ = (d - d_min)/(d_max - d_min), x_r =
+// ρ/H with H = √(top² - ground²), ρ = √(r² - ground²), d the distance from radius r along cosine μ to the
+// top, d_min = top - r, d_max = ρ + H; each through the texel-centre mapping of a side of `size` texels.
 #ifndef POSTFX_ATMOSPHERE_TRANSMITTANCE_LUT_GLSL
 #define POSTFX_ATMOSPHERE_TRANSMITTANCE_LUT_GLSL
 

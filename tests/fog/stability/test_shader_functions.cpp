@@ -1,10 +1,10 @@
 // The fog's shader functions on their own (docs/stability.md, "Shader functions"): tables of hard inputs
-// evaluated by postfx's own GLSL (shaders/common, shaders/common/medium/medium.glsl, composite.glsl) in one compute
-// dispatch (tests/fog/stability/shaders/fog_functions.comp), each result against the double-precision model
-// (postfx/src/common/reference_model.h) or the documented rule, to a stated tolerance, never NaN.
+// evaluated by postfx's own GLSL (shaders/common, shaders/common/medium/medium.glsl, composite.glsl) in one
+// compute dispatch (tests/fog/stability/shaders/fog_functions.comp), each result against the double-precision
+// model (postfx/src/common/reference_model.h) or the documented rule, to a stated tolerance, never NaN.
+#include "common/reference_model.h"
 #include "core/compute_pipeline.h"
 #include "core/gpu_resources.h"
-#include "common/reference_model.h"
 #include "fog_test_shaders_spirv.h"
 #include "gpu_test.h"
 
