@@ -1,0 +1,256 @@
+// The frame graph's recording: a compiled frame's descriptor sets and uniform data, then its passes with
+// the barriers their declared accesses need (host images in and out once); and the readback of a held
+// image into a host buffer.
+#include "core/frame_graph.h"
+
+#include "core/barriers.h"
+#include "core/checks.h"
+#include "core/frame_graph_internal.h"
+
+#include <cstring>
+#include <string>
+
+namespace postfx::core {
+
+Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, DescriptorArena& arena,
+                          PassTimer& timer, Retirement& retirement) {
+    if (Status s = prepare(f, frameIndex, retirement); !s) return s;
+    const FrameInfo& info = *f.info;
+
+    // The host's images: the layout postfx uses each in, over all recorded passes.
+    struct HostUse {
+        bool used = false, storage = false;
+        VkAccessFlags access = 0, written = 0;
+        HostImageUse use{};
+    };
+    HostUse hostUses[4];
+    const ImageInput* hostImages[4] = {&info.color, &info.depth, &info.output, &info.shadowMap.image};
+    for (const PassDecl& p : f.passes)
+        for (uint32_t a = p.firstAccess; p.live && a < p.firstAccess + p.accessCount; ++a) {
+            const Access& x = f.accesses[a];
+            if (x.resource == kNoResource || f.resources[x.resource].kind != ResourceDecl::Kind::Host)
+                continue;
+            HostUse& h = hostUses[size_t(f.resources[x.resource].host)];
+            h.used = true;
+            h.storage |= storage(x.use);
+            if (reads(x.use)) h.access |= VK_ACCESS_SHADER_READ_BIT;
+            if (writes(x.use)) h.access |= VK_ACCESS_SHADER_WRITE_BIT;
+        }
+    for (size_t i = 0; i < 4; ++i)
+        if (hostUses[i].used) {
+            const ImageInput& image = *hostImages[i];
+            hostUses[i].use = useHostImage(image.image, image.format, image.layout, hostUses[i].storage,
+                                           hostUses[i].access);
+        }
+
+    // Descriptor sets, before any command: an error leaves nothing half recorded.
+    passSets_.assign(f.passes.size(), VK_NULL_HANDLE);
+    for (size_t i = 0; i < f.passes.size(); ++i) {
+        const PassDecl& p = f.passes[i];
+        if (!p.live) continue;
+        if (Status s = arena.allocate(passPipelines_[i]->setLayout(), passSets_[i]); !s)
+            return {s.code, std::string(p.pipeline->name) + ": " + s.message};
+        DescriptorWrites writes(passSets_[i]);
+        for (uint32_t a = p.firstAccess; a < p.firstAccess + p.accessCount; ++a) {
+            const Access& x = f.accesses[a];
+            const ResourceDecl& r = f.resources[x.resource];
+            if (r.kind == ResourceDecl::Kind::Uniform) {
+                const OwnedBuffer* b = nullptr;
+                for (const OwnedBuffer& o : buffers_)
+                    if (o.id == r.id) b = &o;
+                writes.uniformBuffer(x.binding, b->buffer->handle(),
+                                     b->slotBytes * (frameIndex % framesInFlight_), r.uniformBytes);
+                continue;
+            }
+            VkImageView view = VK_NULL_HANDLE;
+            VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL;
+            if (r.kind == ResourceDecl::Kind::Host) {
+                view = hostImages[size_t(r.host)]->view;
+                layout = hostUses[size_t(r.host)].use.layout;
+            } else if (r.kind == ResourceDecl::Kind::External) {
+                view = r.view;
+                layout = r.layout;
+            } else {
+                view = resourceImages_[x.resource]->image->view();
+                layout = ownedLayout(merge(f, p, x.resource));
+            }
+            if (storage(x.use)) {
+                writes.storageImage(x.binding, view);
+            } else {
+                VkSampler s = VK_NULL_HANDLE;
+                if (Status st = sampler(x.sampler, s); !st) return st;
+                writes.sampledImage(x.binding, view, layout, s);
+            }
+        }
+        writes.apply(*gpu_);
+    }
+    // Uniform data into this frame's slots (the frame that used a slot last has completed).
+    for (const ResourceDecl& r : f.resources) {
+        if (!r.held || r.kind != ResourceDecl::Kind::Uniform) continue;
+        for (const OwnedBuffer& b : buffers_)
+            if (b.id == r.id)
+                std::memcpy(
+                    static_cast<char*>(b.buffer->mapped()) + b.slotBytes * (frameIndex % framesInFlight_),
+                    f.uniformData.data() + r.uniformOffset, r.uniformBytes);
+    }
+
+    // Nothing can fail from here on: the first command is recorded only now, so a failed record() leaves
+    // the command buffer as the host gave it, and the "postfx" label always gets its end.
+    beginLabel(gpu_->fn, cmd, "postfx");
+    timer.beginFrame(cmd, frameIndex);
+
+    // Host images in, once.
+    BarrierBatch batch;
+    for (const HostUse& h : hostUses)
+        if (h.used) batch.add(h.use.acquire);
+    batch.record(*gpu_, cmd);
+
+    // Pending accesses of the host images within this frame (postfx's own images keep theirs in images_).
+    bool hostPendingWrite[4] = {}, hostReadSinceWrite[4] = {};
+    for (size_t i = 0; i < f.passes.size(); ++i) {
+        const PassDecl& p = f.passes[i];
+        if (!p.live) continue;
+        for (uint32_t a = p.firstAccess; a < p.firstAccess + p.accessCount; ++a) {
+            const Access& x = f.accesses[a];
+            if (seenBefore(f, p, a)) continue;
+            const ResourceDecl& r = f.resources[x.resource];
+            const Merged m = merge(f, p, x.resource);
+            if (r.kind == ResourceDecl::Kind::Host) {
+                const size_t h = size_t(r.host);
+                if ((m.synchronizedRead() && hostPendingWrite[h]) ||
+                    (m.write && (hostPendingWrite[h] || hostReadSinceWrite[h])))
+                    batch.computeMemory(hostPendingWrite[h] ? VK_ACCESS_SHADER_WRITE_BIT : 0,
+                                        (m.synchronizedRead() ? VK_ACCESS_SHADER_READ_BIT : 0) |
+                                            (m.write ? VK_ACCESS_SHADER_WRITE_BIT : 0));
+            } else if (owned(r)) {
+                OwnedImage& o = *resourceImages_[x.resource];
+                const VkImageLayout layout = ownedLayout(m);
+                const bool hazard = (m.synchronizedRead() && o.pendingWrite) ||
+                                    (m.write && (o.pendingWrite || o.readSinceWrite));
+                if (layout != o.layout || hazard) {
+                    ImageTransition t;
+                    t.image = o.image->handle();
+                    t.layers = o.image->desc().layers;
+                    t.oldLayout = m.discard ? VK_IMAGE_LAYOUT_UNDEFINED : o.layout;
+                    t.newLayout = layout;
+                    t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+                    t.srcAccess = o.pendingWrite ? VK_ACCESS_SHADER_WRITE_BIT : 0;
+                    t.dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+                    t.dstAccess = (m.synchronizedRead() ? VK_ACCESS_SHADER_READ_BIT : 0) |
+                                  (m.write ? VK_ACCESS_SHADER_WRITE_BIT : 0);
+                    batch.add(t);
+                    o.layout = layout;
+                    o.pendingWrite = false;
+                    o.readSinceWrite = false;
+                }
+            }
+        }
+        batch.record(*gpu_, cmd);
+
+        const ComputePipeline& pipeline = *passPipelines_[i];
+        beginLabel(gpu_->fn, cmd, pipeline.name().c_str());
+        timer.beginPass(cmd, pipeline.name(), p.effect, !p.builds);
+        pipeline.bind(cmd, passSets_[i], p.pushBytes ? p.push.data() : nullptr);
+        gpu_->fn.vkCmdDispatch(cmd, p.groups[0], p.groups[1], p.groups[2]);
+        timer.endPass(cmd);
+        endLabel(gpu_->fn, cmd);
+
+        for (uint32_t a = p.firstAccess; a < p.firstAccess + p.accessCount; ++a) {
+            const Access& x = f.accesses[a];
+            if (seenBefore(f, p, a)) continue;
+            const ResourceDecl& r = f.resources[x.resource];
+            const Merged m = merge(f, p, x.resource);
+            bool* pending = nullptr;
+            bool* readSince = nullptr;
+            if (r.kind == ResourceDecl::Kind::Host) {
+                pending = &hostPendingWrite[size_t(r.host)];
+                readSince = &hostReadSinceWrite[size_t(r.host)];
+            } else if (owned(r)) {
+                OwnedImage& o = *resourceImages_[x.resource];
+                pending = &o.pendingWrite;
+                readSince = &o.readSinceWrite;
+                // Written once: readable by the host (imageView, recordImageReadback); a history image
+                // holds the frame's result (the clouds' shadow map, the fogs' accumulations).
+                if (m.write &&
+                    (r.kind == ResourceDecl::Kind::Persistent || r.kind == ResourceDecl::Kind::History)) {
+                    o.built = true;
+                    o.builtKey = r.buildKey;
+                }
+            }
+            if (!pending) continue;
+            if (m.write) {
+                *pending = true;
+                *readSince = false;
+            } else if (m.synchronizedRead()) {
+                *readSince = true;
+            }
+        }
+    }
+
+    // Host images out, once, in the layouts they came in, postfx's writes visible to what follows.
+    for (const HostUse& h : hostUses)
+        if (h.used) batch.add(h.use.release);
+    batch.record(*gpu_, cmd);
+    endLabel(gpu_->fn, cmd);
+    return Status::success();
+}
+
+FrameGraph::HeldImage FrameGraph::heldImage(const char* name) const {
+    for (const OwnedImage& o : images_)
+        if (o.built && std::strcmp(o.id->name, name) == 0) return {o.image.get(), o.layout, o.pendingWrite};
+    return {};
+}
+
+Status FrameGraph::recordReadback(const char* name, VkCommandBuffer cmd, VkBuffer buffer, VkDeviceSize offset,
+                                  VkExtent3D& extent, VkDeviceSize& bytes) const {
+    const HeldImage held = heldImage(name);
+    if (!held.image)
+        return invalid(std::string("recordImageReadback: ") + name + " is not held or not built yet");
+    const ImageDesc& d = held.image->desc();
+    if (!(d.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) || texelBytes(d.format) == 0)
+        return invalid(std::string("recordImageReadback: ") + name + " cannot be read back");
+    extent = d.extent;
+    bytes = VkDeviceSize(d.extent.width) * d.extent.height * d.extent.depth * d.layers * texelBytes(d.format);
+
+    // Its layout -> TRANSFER_SRC after the earlier compute accesses, the copy, and back for the compute
+    // passes of later frames.
+    ImageTransition t;
+    t.image = held.image->handle();
+    t.layers = d.layers;
+    t.oldLayout = held.layout;
+    t.newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    t.srcAccess = VK_ACCESS_SHADER_WRITE_BIT;
+    t.dstStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    t.dstAccess = VK_ACCESS_TRANSFER_READ_BIT;
+    transition(*gpu_, cmd, t);
+
+    VkBufferImageCopy region{};
+    region.bufferOffset = offset;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, d.layers};  // layers one after another
+    region.imageExtent = d.extent;
+    gpu_->fn.vkCmdCopyImageToBuffer(cmd, t.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+
+    t.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    t.newLayout = held.layout;
+    t.srcStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
+    t.srcAccess = 0;
+    t.dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    t.dstAccess = VK_ACCESS_SHADER_READ_BIT;
+    transition(*gpu_, cmd, t);
+
+    // The copied bytes -> host reads after the submission's fence.
+    VkBufferMemoryBarrier toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    toHost.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    toHost.buffer = buffer;
+    toHost.offset = offset;
+    toHost.size = bytes;
+    gpu_->fn.vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0,
+                                  nullptr, 1, &toHost, 0, nullptr);
+    return Status::success();
+}
+
+}  // namespace postfx::core
