@@ -231,7 +231,7 @@ std::string conclusionsMarkdown(const RunInfo& info, const std::vector<Result>& 
     if (header) out << "\n";
 
     out << "## Targets\n\n"
-        << "The issue's targets are set for the lent NVIDIA GPU at 1920×1080 on " << scene
+        << "The issue's targets are set for the NVIDIA H100 at 1920×1080 on " << scene
         << "; this run: " << info.device << ", " << info.width << "×" << info.height << ".";
     if (info.width != 1920 || info.height != 1080)
         out << " **Not 1920×1080: the statuses below are not the targets'.**";

@@ -10,7 +10,7 @@
 
 namespace bench {
 
-// The targets (docs/accuracy-cost/README.md), for the lent GPU at 1920×1080.
+// The targets (docs/accuracy-cost/README.md), for the NVIDIA H100 at 1920×1080.
 constexpr double kTargetDefaultMs = 0.5;      // the default (Medium) preset, all fog passes [ms]
 constexpr double kTargetRelativeRmse = 0.02;  // the error at which we are compared with baseline (b)
 constexpr double kTargetSpeedup = 4.0;        // our fastest setting at that error against baseline (b)'s

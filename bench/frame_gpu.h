@@ -1,6 +1,7 @@
-// The bench's own Vulkan host for the modes whose effects the demo renderer does not draw (--atmosphere,
-// --clouds): one colour and depth image uploaded once, postfx's output read back, frames timed two in
-// flight by Context::readPassTimings.
+// The bench's own Vulkan host for --atmosphere and --clouds, whose views are the bench's own (made up in
+// code, not scene files the demo renderer loads): the view's colour and depth, built by the bench, uploaded
+// once; postfx's output and images postfx holds (the clouds' noise, for the CPU reference) read back;
+// frames timed two in flight by Context::readPassTimings.
 #pragma once
 
 #include "bench_types.h"
@@ -35,10 +36,10 @@ inline double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The bench's own host for postfx's atmosphere and clouds (the demo renderer has neither): the view's colour
+// The bench's own host for postfx's atmosphere and clouds on the bench's views: the view's colour
 // (RGBA16F, only read) and depth (D32) uploaded once, postfx's result in a separate output image, frames
 // recorded two in flight into the bench's command buffers and timed by Context::readPassTimings as
-// bench/runner.h does for the fogs.
+// bench/runner.h does for the scene files.
 class FrameGpu {
 public:
     ~FrameGpu() {

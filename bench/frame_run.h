@@ -1,4 +1,4 @@
-// postfx-bench --frame: the whole frame (issue 21). The showcase scene (demo/scenes/showcase.json: the
+// postfx-bench --frame: the whole frame. The showcase scene (demo/scenes/showcase.json: the
 // atmosphere, the clouds, froxel fog with the sun's shadows and four lights) and the same scene with the
 // ray-marched fog in place of the froxel fog, per quality preset (the clouds' and the ray-marched fog's;
 // the atmosphere and the froxel fog have none), at each frame size: every postfx pass's GPU time (median

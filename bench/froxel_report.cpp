@@ -360,7 +360,7 @@ std::string froxelConclusionsMarkdown(const RunInfo& info, const std::vector<Res
 
     // --- Targets
     out << "## Targets\n\n"
-        << "Issue 17's targets are set for the lent NVIDIA GPU at 1920×1080, on postfx's default grid "
+        << "Issue 17's targets are set for the NVIDIA H100 at 1920×1080, on postfx's default grid "
         << gridText(defaults.grid) << " (power slices, trilinear) with sun shadows and noise: here "
         << info.froxelTargetScene << "; this run: " << info.device << ", " << info.width << "×" << info.height
         << ".";

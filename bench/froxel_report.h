@@ -12,7 +12,7 @@
 
 namespace bench {
 
-// Issue 17's targets for the froxel fog, on the lent GPU at 1920×1080: postfx's default grid
+// The froxel fog's targets, for the NVIDIA H100 at 1920×1080: postfx's default grid
 // (FroxelFogSettings::grid, power slices, trilinear) on a scene with sun shadows and noise.
 constexpr double kFroxelTargetMs = 0.10;        // all froxel passes [ms]
 constexpr uint32_t kFroxelTargetLights = 64;    // ... with this many point lights

@@ -1,10 +1,17 @@
-// postfx-bench: the accuracy–cost benchmark of postfx's fog (docs/accuracy-cost/README.md). For each
-// scene it sweeps the fog's quality knobs (steps, jitter, resolution scale, noise texture size) and
-// measures the quality presets, times every postfx pass with timestamp queries and measures the error
-// of 1, 8 and 16 jittered frames against the CPU reference; the two baselines (bench/baseline.h) run
-// on the same frames. Writes results.csv,
-// results.md and plot.svg. With --froxel: the froxel fog's sweep beside the ray-marched fog instead
-// (bench/froxel_run.h).
+// postfx-bench: postfx's accuracy–cost benchmark (docs/accuracy-cost/README.md). One mode a run; the GPU
+// modes time postfx's passes (timestamp queries, Context::readPassTimings) and measure the error against
+// a CPU reference:
+//   (default)     the ray-marched fog on the fog scenes: a sweep of its quality knobs (steps, jitter,
+//                 resolution scale, noise texture size, shadow kernel) and its presets, the error of 1, 8
+//                 and 16 jittered frames, the two baselines (bench/baseline.h) on the same frames, the
+//                 presets in motion (bench/motion.h); writes results.csv, results.md, plot.svg, motion.csv
+//   --froxel      the froxel fog beside the ray-marched fog, and a light-count sweep (bench/froxel_run.h)
+//   --atmosphere  the sky's LUT sizes and sample counts against reference (a) (bench/atmosphere_run.h)
+//   --clouds      the clouds' knobs and presets, converged and panning (bench/clouds_run.h)
+//   --frame       every effect together in the showcase scene, per preset and size (bench/frame_run.h)
+// CPU only: --atmosphere-truth (the sky's path-traced table, bench/atmosphere_truth.h) and --clouds-slabs
+// (the clouds' multiple scattering against the path tracer, bench/clouds_slabs.h). --pipeline-stats prints
+// what the driver compiled the fog's march pipelines into (bench/pipeline_stats.h).
 #include "atmosphere_run.h"
 #include "atmosphere_truth.h"
 #include "clouds_run.h"
@@ -169,6 +176,7 @@ const char* kUsage =
     "  --clouds-truth-paths N  paths per pixel of the path-traced truth the model and GPU errors are also\n"
     "                         measured against (0: none) [256; quick: 8]\n"
     "  --clouds-truth-stride K  the truth at every K-th pixel, a multiple of --error-stride [4 x it]\n"
+    "                         quick also shrinks the clouds' shadow map to 64x64\n"
     "\n"
     "clouds against the path tracer (--clouds-slabs; CPU only): the multiple-scattering models on\n"
     "homogeneous layers (optical depth 0.5-50, albedo 0.9-1, g 0.2-0.8, three suns, three views) against\n"
@@ -181,7 +189,6 @@ const char* kUsage =
     "--out [tests/atmosphere/data/path_traced_sky.csv].\n"
     "  --truth-target E      relative standard error per channel [0.0025; quick: 0.05]\n"
     "  --truth-max-paths N   paths per channel at most [4000000; quick: 20000]\n"
-    "                         quick also shrinks the shadow map to 64x64\n"
     "\n"
     "whole frame (--frame; docs/accuracy-cost/README.md, \"Whole frame (--frame)\"): the showcase scene\n"
     "(atmosphere, clouds, froxel fog with shadows and lights) and the same with the ray-marched fog, per\n"
@@ -194,6 +201,7 @@ const char* kUsage =
     "  --frame-presets LIST   low, medium, high, ultra [all; quick: medium]\n"
     "  --frame-budget MS      also a row per fog with the clouds and the ray-marched fog on quality Auto\n"
     "                         under one frame budget (FrameInfo::budgetMs) [1; quick: 0]; 0: none\n"
+    "                         quick also shrinks the clouds' shadow map to 64x64\n"
     "pipeline statistics (--pipeline-stats): on a device of its own with "
     "VK_KHR_pipeline_executable_properties,\n"
     "compiles the fog's march pipelines (fog.raymarch at full size, reduced, reduced with temporal) and "

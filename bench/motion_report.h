@@ -11,7 +11,7 @@
 
 namespace bench {
 
-// Issue 18's targets: at the Medium preset, the in-motion error with temporal on within this multiple of
+// The in-motion targets: at the Medium preset, the in-motion error with temporal on within this multiple of
 // the still camera's 16-frame error; a switched-off light's remaining fog contribution below
 // kSwitchOffRemaining after at most kSwitchOffFrames frames (counting the frame it is switched off in as 0).
 constexpr double kMotionTargetRatio = 1.5;

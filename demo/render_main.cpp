@@ -1,7 +1,8 @@
 // postfx-render: renders a demo scene headless (G-buffer, sun + shadow map, lighting, postfx) and
-// writes the HDR result as .exr (linear) or .png (tonemapped). With --reference the fog (ray-marched or
-// froxel) comes from postfx's CPU reference (Renderer::renderReference) instead of the GPU pass; with
-// --reference=path the clouds are path-traced and their standard error written beside the output.
+// writes the HDR result as .exr (linear, 32-bit float) or .png (tonemapped). With --reference the
+// atmosphere, the clouds and the fog (ray-marched or froxel) come from postfx's CPU references
+// (Renderer::renderReference) instead of the GPU passes; with --reference=path the clouds are path-traced
+// and their standard error written beside the output.
 #include "program.h"
 
 #include <nlohmann/json.hpp>
@@ -33,7 +34,7 @@ const char* kUsage =
     "                     [--reference|--reference=path [--reference-steps N] [--path-samples N]]\n"
     "       postfx-render [SCENE.json] --print-plan [--size WxH] [--frames N] [--standard-z] ...\n"
     "Renders SCENE.json (the built-in default scene when omitted) headless and writes OUT:\n"
-    "  .exr  linear radiance [cd/m^2], half-float RGBA\n"
+    "  .exr  linear radiance [cd/m^2], 32-bit float RGBA\n"
     "  .png  tonemapped with the camera's ev100 (ACES fitted, sRGB)\n"
     "options:\n"
     "  -o, --output PATH  output image (required)\n"

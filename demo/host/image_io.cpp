@@ -1,4 +1,5 @@
-// Image files of the demo: .exr (linear half-float RGBA) and .png (tonemapped 8-bit sRGB), via OpenImageIO.
+// Image files of the demo: .exr (linear 32-bit float RGBA) and .png (tonemapped 8-bit sRGB), via
+// OpenImageIO.
 #include "host/renderer.h"
 
 #include <OpenImageIO/imagebuf.h>

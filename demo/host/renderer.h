@@ -27,8 +27,8 @@ namespace demo {
 struct RenderOptions {
     uint32_t width = 1280;
     uint32_t height = 720;
-    // Frames rendered by render(), indices 0..frames-1; the last one is returned (later effects
-    // accumulate). Frame k shows the scene's state at frame k (sceneAtFrame: its camera and lights
+    // Frames rendered by render(), indices 0..frames-1; the last one is returned (temporal accumulation
+    // builds up over them). Frame k shows the scene's state at frame k (sceneAtFrame: its camera and lights
     // moved, scene/motion.h); the index also sets postfx's time (k · scene.frameTime, 1/60 s by default)
     // and the fog's jitter pattern, so render() and renderReference() show the same frame (index
     // frames - 1).

@@ -20,10 +20,12 @@ constexpr VkPipelineStageFlags kUniformStages =
     VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
-// The light is pre-exposed (`preExposure`): the lighting writes radiance × preExposure, as postfx does.
+// The light is pre-exposed (light.preExposure): the lighting writes radiance × preExposure, as postfx does.
 shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions& options,
                                         const glm::mat4& proj, const ShadowFit& fit, bool shadows,
-                                        const AtmosphereLighting& atmosphere, float preExposure) {
+                                        const FrameLight& light) {
+    const AtmosphereLighting& atmosphere = light.surfaces;
+    const float preExposure = light.preExposure;
     const Camera& cam = scene.camera;
     glm::mat4 viewRel = cameraView(cam);
     viewRel[3] = glm::vec4(0, 0, 0, 1);  // rotation only: positions are camera-relative
@@ -92,9 +94,27 @@ glm::mat4 Renderer::Impl::projection(const Scene& scene) const {
                                  options.reversedZ, options.infiniteFar);
 }
 
+FrameLight Renderer::Impl::frameLight(const Scene& scene) const {
+    FrameLight light;
+    light.surfaces = atmosphereLighting.update(scene);
+    light.preExposure = scenePreExposure(scene, light.surfaces.ambient, options);
+    return light;
+}
+
 PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit,
                                           bool shadows) const {
+    return postfxInputs(scene, frameIndex, fit, shadows, frameLight(scene));
+}
+
+PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit,
+                                          bool shadows, const FrameLight& light) const {
     PostfxInputs in;
+    in.frameIndex = frameIndex;
+    // render() starts every call at frame 0: a new sequence, which no temporal history may continue.
+    // Also the scene's cut frame and a cut the host asked for (requestCameraCut: the window's view reset).
+    in.cameraCut = frameIndex == 0 || cameraCutRequested || isCameraCut(scene, frameIndex);
+    in.budgetMs = scene.budgetMs;
+    in.preExposure = light.preExposure;
     in.timeSeconds =
         options.fixedTimeSeconds ? *options.fixedTimeSeconds : frameTimeSeconds(scene, frameIndex);
     in.camera.position = glm::dvec3(scene.camera.position);
@@ -103,7 +123,12 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     in.sun.toSun = scene.sun.direction;
     in.sun.illuminance = scene.sun.illuminance;
     // The surfaces' ambient: scene.ambient, or the sky's with the atmosphere's ambient_from_sky.
-    in.ambient = atmosphereLighting.update(scene).ambient;
+    in.ambient = light.surfaces.ambient;
+    localLights.clear();
+    for (const Light& l : scene.lights)
+        localLights.push_back(toLocalLight(l));
+    in.lights = localLights.data();
+    in.lightCount = uint32_t(localLights.size());
     if (shadows) {
         const ImageInfo& s = shadowInfo.image;
         in.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout, s.usage};
@@ -115,24 +140,18 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
         // visibly moving shadow edges in the volume (a texel is ~1-3 cm in the demo scenes).
         in.shadowMap.depthBias = shadowDepthBias(fit);
     }
-    in.preExposure = scenePreExposure(scene, in.ambient, options);
     in.fog = scene.fog;
-    in.froxelFog = froxelFogSettings(scene);
+    in.froxelFog = froxelFogSettings(scene);  // its volumes point into scene.froxelVolumes
     in.atmosphere = scene.atmosphere;
     in.clouds = scene.clouds;
     return in;
 }
 
 postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
-                                            const ShadowFit& fit, bool shadows,
+                                            const ShadowFit& fit, bool shadows, const FrameLight& light,
                                             const postfx::ImageInput& fogOutput) const {
-    const PostfxInputs in = postfxInputs(scene, frameIndex, fit, shadows);
-    postfx::FrameInfo frame;
+    postfx::FrameInfo frame = postfxInputs(scene, frameIndex, fit, shadows, light);
     frame.commandBuffer = cmd;
-    frame.frameIndex = frameIndex;
-    // render() starts every call at frame 0: a new sequence, which no temporal history may continue.
-    // Also the scene's cut frame and a cut the host asked for (requestCameraCut: the window's view reset).
-    frame.cameraCut = frameIndex == 0 || cameraCutRequested || isCameraCut(scene, frameIndex);
     frame.color = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL, hdr.usage};
     frame.depth = {gbuffer.depth.image,
                    gbuffer.depth.view,
@@ -141,22 +160,6 @@ postfx::FrameInfo Renderer::Impl::frameInfo(VkCommandBuffer cmd, const Scene& sc
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
                    gbuffer.depth.usage};
     frame.output = fogOutput;
-    frame.timeSeconds = in.timeSeconds;
-    frame.budgetMs = scene.budgetMs;
-    frame.preExposure = in.preExposure;
-    frame.camera = in.camera;
-    frame.sun = in.sun;
-    frame.ambient = in.ambient;
-    localLights.clear();
-    for (const Light& l : scene.lights)
-        localLights.push_back(toLocalLight(l));
-    frame.lights = localLights.data();
-    frame.lightCount = uint32_t(localLights.size());
-    frame.shadowMap = in.shadowMap;
-    frame.fog = in.fog;
-    frame.froxelFog = in.froxelFog;  // its volumes point into scene.froxelVolumes
-    frame.atmosphere = in.atmosphere;
-    frame.clouds = in.clouds;
     return frame;
 }
 
@@ -170,22 +173,27 @@ bool Renderer::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t fra
 }
 
 bool Renderer::Impl::drawsShadows(const Scene& scene, const ShadowFit& fit, uint64_t frameIndex) const {
+    return drawsShadows(scene, fit, frameIndex, frameLight(scene));
+}
+
+bool Renderer::Impl::drawsShadows(const Scene& scene, const ShadowFit& fit, uint64_t frameIndex,
+                                  const FrameLight& light) const {
     if (!scene.sun.shadows || !fit.valid) return false;
     const glm::vec3 e = scene.sun.illuminance;
     if (e.r > 0.0f || e.g > 0.0f || e.b > 0.0f) return true;  // the lighting's sun term reads it
     // Otherwise only postfx might: ask its plan for the frame as it would get it, shadow map included.
     postfx::FramePlan plan;
-    const postfx::FrameInfo frame =
-        frameInfo(VK_NULL_HANDLE, scene, frameIndex, fit, true, postfx::ImageInput{});
+    const postfx::FrameInfo frame = frameInfo(VK_NULL_HANDLE, scene, frameIndex, fit, true, light, {});
     return postfx->plan(frame, plan).ok() && plan.reads("host.shadow_map");
 }
 
 bool Renderer::plan(const Scene& scene, uint64_t frameIndex, postfx::FramePlan& out,
                     std::string& error) const {
     const ShadowFit fit = impl_->shadowFit(scene);
+    const FrameLight light = impl_->frameLight(scene);
+    const bool shadows = impl_->drawsShadows(scene, fit, frameIndex, light);
     const postfx::FrameInfo frame =
-        impl_->frameInfo(VK_NULL_HANDLE, scene, frameIndex, fit, impl_->drawsShadows(scene, fit, frameIndex),
-                         postfx::ImageInput{});
+        impl_->frameInfo(VK_NULL_HANDLE, scene, frameIndex, fit, shadows, light, {});
     if (postfx::Status s = impl_->postfx->plan(frame, out); !s) {
         error = "postfx plan: " + s.message;
         return false;
@@ -195,8 +203,9 @@ bool Renderer::plan(const Scene& scene, uint64_t frameIndex, postfx::FramePlan& 
 
 postfx::FrameInfo Renderer::frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const {
     const ShadowFit fit = impl_->shadowFit(scene);
-    return impl_->frameInfo(cmd, scene, frameIndex, fit, impl_->drawsShadows(scene, fit, frameIndex),
-                            postfx::ImageInput{});
+    const FrameLight light = impl_->frameLight(scene);
+    const bool shadows = impl_->drawsShadows(scene, fit, frameIndex, light);
+    return impl_->frameInfo(cmd, scene, frameIndex, fit, shadows, light, {});
 }
 
 postfx::CloudShadowTransform Renderer::Impl::bindCloudShadow(VkCommandBuffer cmd) {
@@ -221,16 +230,16 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
         return false;
     }
     const ShadowFit fit = shadowFit(scene);
-    const bool shadows = drawsShadows(scene, fit, frameIndex);
+    // The frame's light, once: the surfaces' uniforms and lights, the shadow decision and postfx read it.
+    const FrameLight light = frameLight(scene);
+    const bool shadows = drawsShadows(scene, fit, frameIndex, light);
     shadowInfo.enabled = shadows;
     shadowInfo.viewProj = fit.viewProj;
     shadowInfo.texelWorldSize = fit.texelWorldSize;
 
     // Frame uniforms: overwrite after the previous frame's readers (WAR), then publish to this frame's.
-    const AtmosphereLighting& surfaceLight = atmosphereLighting.update(scene);
-    preExposure = scenePreExposure(scene, surfaceLight.ambient, options);
-    shared::FrameUniforms u =
-        makeFrameUniforms(scene, options, projection(scene), fit, shadows, surfaceLight, preExposure);
+    preExposure = light.preExposure;
+    shared::FrameUniforms u = makeFrameUniforms(scene, options, projection(scene), fit, shadows, light);
     const postfx::CloudShadowTransform clouds = bindCloudShadow(cmd);
     u.cloudShadowU = glm::vec4(glm::dvec4(clouds.u));
     u.cloudShadowV = glm::vec4(glm::dvec4(clouds.v));
@@ -266,7 +275,7 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
 
     // postfx reads depth and shadow map and composites into the HDR image (compute only), and
     // returns every image in the layout it was given.
-    const postfx::FrameInfo frame = frameInfo(cmd, scene, frameIndex, fit, shadows, fogOutput);
+    const postfx::FrameInfo frame = frameInfo(cmd, scene, frameIndex, fit, shadows, light, fogOutput);
     if (postfx::Status s = postfx->record(frame); !s.ok()) {
         error = "postfx record: " + s.message;
         return false;

@@ -16,21 +16,17 @@
 
 namespace demo {
 
-// What postfx is told about one frame besides the images: built by ONE function
-// (Renderer::Impl::postfxInputs) for both the GPU frame (postfx::FrameInfo) and the CPU references
-// (postfx::reference::FogInputs, FroxelFogInputs), so that the two cannot diverge.
-struct PostfxInputs {
-    double timeSeconds = 0.0;
-    postfx::CameraInput camera;
-    postfx::SunInput sun;
-    glm::vec3 ambient{0.0f};
-    postfx::ShadowMapInput shadowMap;  // image empty when the frame does not draw the shadow map
-    postfx::FogSettings fog;
-    // froxelFogSettings(scene): its volumes point into the scene's froxelVolumes.
-    postfx::FroxelFogSettings froxelFog;
-    postfx::AtmosphereSettings atmosphere;
-    postfx::CloudSettings clouds;
-    // The factor the HDR image is stored with (postfx::FrameInfo::preExposure; scenePreExposure).
+// What postfx is told about one frame: its FrameInfo without the command buffer and the images (color,
+// depth, output), built by ONE function (Renderer::Impl::postfxInputs) for both the GPU frame and the CPU
+// references (postfx::reference::FogInputs, FroxelFogInputs), so that the two cannot diverge.
+using PostfxInputs = postfx::FrameInfo;
+
+// The light of one frame, computed once per frame (Renderer::Impl::frameLight) and read by both the
+// surfaces' uniforms and postfx's inputs.
+struct FrameLight {
+    AtmosphereLighting surfaces;  // the sun's transmittance, the ambient and the sky (atmosphereLighting)
+    // The factor the HDR image is stored with (postfx::FrameInfo::preExposure; scenePreExposure with
+    // surfaces.ambient).
     float preExposure = 1.0f;
 };
 
@@ -52,7 +48,7 @@ struct Renderer::Impl {
 
     GpuBuffer frameUniforms;   // shared::FrameUniforms, written with vkCmdUpdateBuffer each frame
     GpuBuffer lightsUniforms;  // shared::LightsUniforms, written with vkCmdUpdateBuffer each frame
-    // The scene's lights as postfx reads them (FrameInfo::lights points here; rebuilt by frameInfo).
+    // The scene's lights as postfx reads them (FrameInfo::lights points here; rebuilt by postfxInputs).
     mutable std::vector<postfx::LocalLight> localLights;
     VkDescriptorSetLayout frameSetLayout = VK_NULL_HANDLE;
     VkDescriptorPool framePool = VK_NULL_HANDLE;
@@ -99,18 +95,27 @@ struct Renderer::Impl {
     bool createPostfx(std::string& error);
     void recordReadback(VkCommandBuffer cmd) const;
 
+    // The scene's light for a frame: the surfaces' lighting through the atmosphere and the pre-exposure.
+    FrameLight frameLight(const Scene& scene) const;
     // The shadow map fit, and whether frame `frameIndex` draws it: sun.shadows, something to cast, and a
-    // reader: the lighting (when the sun gives light) or postfx (when its frame plan reads host.shadow_map).
+    // reader: the lighting (when the sun gives light) or postfx (when its frame plan reads host.shadow_map,
+    // asked with the frame's `light`; without it, frameLight computes it).
     ShadowFit shadowFit(const Scene& scene) const;
     bool drawsShadows(const Scene& scene, const ShadowFit& fit, uint64_t frameIndex) const;
+    bool drawsShadows(const Scene& scene, const ShadowFit& fit, uint64_t frameIndex,
+                      const FrameLight& light) const;
     // The camera's projection, exactly as the G-buffer pass uses it.
     glm::mat4 projection(const Scene& scene) const;
-    // postfx's per-frame inputs for frame `frameIndex` of `scene`.
+    // postfx's per-frame inputs for frame `frameIndex` of `scene` with the frame's `light` (without it,
+    // frameLight computes it); the shadow map's image empty when `shadows` is false.
+    PostfxInputs postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit, bool shadows,
+                              const FrameLight& light) const;
     PostfxInputs postfxInputs(const Scene& scene, uint64_t frameIndex, const ShadowFit& fit,
                               bool shadows) const;
-    // postfx's FrameInfo for frame `frameIndex` of `scene` (Renderer::frameInputs), recorded into `cmd`.
+    // postfx's FrameInfo for frame `frameIndex` of `scene` (Renderer::frameInputs), recorded into `cmd`:
+    // postfxInputs with the images.
     postfx::FrameInfo frameInfo(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
-                                const ShadowFit& fit, bool shadows,
+                                const ShadowFit& fit, bool shadows, const FrameLight& light,
                                 const postfx::ImageInput& fogOutput) const;
     // Renderer::recordFrame, with postfx writing to `fogOutput` (FrameInfo::output) when present.
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,

@@ -55,7 +55,7 @@ struct ViewDistancePush {  // push constants of core/view_distance.comp
     vec4 params;           // x: no-geometry depth (0 reversed Z, 1 standard), y, z: extent [px]
 };
 
-// ---- temporal accumulation, both fogs (docs/temporal.md; postfx/src/core/temporal.h) ----
+// ---- temporal accumulation: the fogs, the clouds (docs/temporal.md; postfx/src/core/temporal.h) ----
 PFX_CONST(uint, kTemporalMaxSpheres, 64u);  // postfx::kTemporalMaxRejectedSpheres
 
 struct TemporalUniforms {

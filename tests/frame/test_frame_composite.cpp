@@ -1,4 +1,4 @@
-// One consistent composite (issue 21): with every medium purely absorbing (the atmosphere's Mie and ozone
+// One consistent composite: with every medium purely absorbing (the atmosphere's Mie and ozone
 // absorption without any scattering, clouds and fog of albedo 0), what postfx leaves in the color image is
 // the host's color times each effect's transmittance, and the frame with every effect on is the product
 // of the frames with one effect each (the clouds and the fog under an atmosphere of no medium, so that

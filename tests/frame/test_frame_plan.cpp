@@ -1,4 +1,4 @@
-// The whole frame's plan (issue 21): the atmosphere, the clouds (casting shadows) and the froxel fog with a
+// The whole frame's plan: the atmosphere, the clouds (casting shadows) and the froxel fog with a
 // light, camera and sun still and no wind. The first frame builds every persistent image; every later
 // frame records exactly the passes that depend on the frame (the jittered, temporally accumulated march,
 // scatter and their composites) and lists every LUT, noise texture and the clouds' shadow map as cached.

@@ -1,4 +1,4 @@
-// Pre-exposure (issue 22; docs/integration.md, "Pre-exposure"): with FrameInfo::preExposure p and the
+// Pre-exposure (docs/integration.md, "Pre-exposure"): with FrameInfo::preExposure p and the
 // host's color stored × p, every effect writes its radiance × p: the frame equals p × the frame in physical
 // units (the atmosphere, the clouds and either fog together, p a power of two and not, RGBA32F so that
 // nothing clips), and a temporal history accumulated at one pre-exposure carries on at another (rescaled,

@@ -1,4 +1,4 @@
-// Depth linearised once (issue 21): with two or more effects in the frame, postfx.view_distance turns the
+// Depth linearised once: with two or more effects in the frame, postfx.view_distance turns the
 // host's depth into surface distances once and every effect reads those; with one effect, that effect
 // unprojects the depth itself (no extra pass). Either way each effect sees the same surface: the clouds and
 // the ray-marched fog rendered together (one shared distance image) equal the two rendered one after the

@@ -1,9 +1,9 @@
-// Temporal accumulation of the fogs (docs/temporal.md): each frame's result is blended with the previous
-// frames' result reprojected into the current view, so the jittered frames converge toward the
-// reference while the camera and the lights move. History that no longer belongs is rejected (per pixel
-// or froxel: off screen, disoccluded, outside the neighbourhood, near a light that changed) or reset
-// (the whole image or volume: FrameInfo::cameraCut, a change of extent, settings or medium, of the sun,
-// the ambient or the shadow map's matrix).
+// Temporal accumulation of the fogs and the clouds (docs/temporal.md): each frame's result is blended
+// with the previous frames' result reprojected into the current view, so the jittered frames converge
+// toward the reference while the camera and the lights move. History that no longer belongs is rejected
+// (per pixel or froxel: off screen, disoccluded, outside the neighbourhood, near a light that changed) or
+// reset (the whole image or volume: FrameInfo::cameraCut, a change of extent, settings or medium, of the
+// sun, the ambient or the shadow map's matrix).
 #pragma once
 
 #include <cstdint>
@@ -12,7 +12,7 @@ namespace postfx {
 
 // Every setting: unit, default, valid range; checked when the effect is enabled.
 struct TemporalSettings {
-    // Blend each frame with the reprojected history. Each fog documents its default.
+    // Blend each frame with the reprojected history. Each effect documents its default.
     bool enabled = false;
     // Weight of the current frame: result = history + blendWeight · (current - history) [1]; in (0, 1].
     // 1 keeps no history. After a reset the weight is max(blendWeight, 1/(n+1)) for the n-th frame since

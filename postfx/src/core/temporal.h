@@ -1,6 +1,7 @@
 // An effect's temporal history across recorded frames (docs/temporal.md): whether the history images
 // hold a result that may be blended into this frame, where the previous camera was, and which spheres
-// of changed local lights must not use it. Both fogs hold one; the rules are written once, here.
+// of changed local lights must not use it. The fog, the froxel fog and the clouds hold one; the rules
+// are written once, here.
 //
 // decide() (const: plan() and declare() call it) says what this frame does; recorded() moves the state
 // on after record() recorded the frame, with the same rules; dropped() after a frame the effect did not

@@ -88,7 +88,7 @@ const RendererCase kCases[] = {
     {"fog_far_below.json", false, true},
     {"fog_sun_in_view.json"},
     {"fog_sun_in_view.json", true, false, false},
-    // Issue 22: haze (0.02 /m) of g = 0.8 and 0.999 in front of a 100,000 lux sun: its in-scattering is
+    // Haze (0.02 /m) of g = 0.8 and 0.999 in front of a 100,000 lux sun: its in-scattering is
     // ~3e5 and ~1e8 cd/m² toward the sun, beyond RGBA16F without pre-exposure.
     {"fog_haze_sun_g08.json"},
     {"fog_haze_sun_g08.json", true, false, false},
