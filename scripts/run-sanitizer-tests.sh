@@ -17,7 +17,7 @@ jobs=$(nproc)
 # which also describes types and variables for a debugger.
 # No benchmark (it tests postfx-bench's report, not memory; its GPU code is postfx's), no
 # examples and no windowed demo: the three test programs, postfx-render (its command line on bad input)
-# and the library are built, so that CI stays under 25 minutes; the window's screenshot test runs in the
+# and the library are built, so that CI stays under 20 minutes; the window's screenshot test runs in the
 # main build.
 configure() {
     cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \

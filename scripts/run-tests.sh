@@ -6,7 +6,7 @@
 # (scripts/run-sanitizer-tests.sh: every test but the whole-image comparisons); POSTFX_SKIP_SANITIZERS=1
 # skips that part for a quick local run (.ci/run never skips it). Arguments go to both ctest runs
 # (e.g. -R Fog). Each step prints its wall-clock and CPU time, and the end sums them up: CI must stay
-# under 25 minutes on two cores (docs/reliability.md, "CI time").
+# under 20 minutes on two cores (docs/reliability.md, "CI time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/steps.sh

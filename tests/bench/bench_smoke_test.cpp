@@ -1,4 +1,4 @@
-// Smoke test of postfx-bench on lavapipe: runs `postfx-bench --quick` (64x36, steps 4/16/64, jitter on and
+// Smoke test of postfx-bench on lavapipe: runs `postfx-bench --quick` (64x36, steps 4/64, jitter on and
 // off, resolution scale 1 and 0.5, shadow kernel 1 and 3, the four presets, both baselines at two step
 // lengths) under the validation layer and checks what it writes: the CSV's columns, one row per setting,
 // finite errors, error falling as postfx's steps grow and from preset medium to ultra, a preset giving
@@ -50,7 +50,10 @@ const std::vector<std::string> kColumns = {
     "floor_ms",    "time_over_floor",  "pareto_1",    "pareto_16",
 };
 const std::vector<std::string> kScenes = {"fog_default", "fog_shadowed"};
-const std::vector<int> kSteps = {4, 16, 64};            // --quick
+// --quick has 4,16,64; two step counts (CI time: a setting costs about as much as the next, and each
+// takes a second or more on lavapipe) still show the error falling with steps, and 64 is the low
+// preset's step count.
+const std::vector<int> kSteps = {4, 64};
 const std::vector<std::string> kScales = {"1", "0.5"};  // --quick
 const std::vector<std::string> kKernels = {"1", "3"};   // both scenes have a shadow map
 const std::vector<std::string> kPresets = {"low", "medium", "high", "ultra"};
@@ -126,7 +129,8 @@ protected:
         std::string scenes;
         for (const std::string& s : kScenes)
             scenes += (scenes.empty() ? "" : ",") + s;
-        const std::string command = "'" + gBench + "' --quick --size 64x36 --validation --scenes " + scenes +
+        const std::string command = "'" + gBench +
+                                    "' --quick --size 64x36 --steps 4,64 --validation --scenes " + scenes +
                                     " --scene-dir '" + gSceneDir + "' --out '" + gOut + "'" + kPresetBudgets;
         std::printf("running: %s\n", command.c_str());
         std::fflush(stdout);
