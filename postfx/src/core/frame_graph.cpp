@@ -212,11 +212,13 @@ ImageRef FrameBuilder::find(const ResourceId& id) const {
     return {};
 }
 
-ImageRef FrameBuilder::findPersistent(const ImageDesc& desc, uint64_t buildKey) const {
+ImageRef FrameBuilder::findPersistent(const ResourceId& alias, const ImageDesc& desc, uint64_t buildKey) {
     for (size_t i = 0; i < f_.resources.size(); ++i) {
         const ResourceDecl& r = f_.resources[i];
-        if (r.kind == ResourceDecl::Kind::Persistent && r.buildKey == buildKey && sameDesc(r.desc, desc))
+        if (r.kind == ResourceDecl::Kind::Persistent && r.buildKey == buildKey && sameDesc(r.desc, desc)) {
+            if (r.id != &alias) f_.aliases.emplace_back(&alias, uint16_t(i));
             return {uint16_t(i)};
+        }
     }
     return {};
 }
@@ -298,6 +300,7 @@ Status FrameGraph::create(const Gpu& gpu, uint32_t framesInFlight, const DepthCo
 
 void FrameGraph::release() {
     images_.clear();
+    aliases_.clear();
     buffers_.clear();
     pipelines_.clear();
     if (gpu_)
@@ -319,6 +322,7 @@ void FrameGraph::begin(Frame& f, const FrameInfo& info) const {
     f.passes.clear();
     f.accesses.clear();
     f.uniformData.clear();
+    f.aliases.clear();
     f.composited = false;
     auto add = [&](HostImage which, bool present) {
         f.host[size_t(which)] = kNoResource;
@@ -527,6 +531,9 @@ Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement
         if (f.resources[i].held && owned(f.resources[i]))
             for (OwnedImage& o : images_)
                 if (o.id == f.resources[i].id) resourceImages_[i] = &o;
+    aliases_.clear();
+    for (const auto& [alias, resource] : f.aliases)
+        if (f.resources[resource].held) aliases_.emplace_back(alias, f.resources[resource].id);
     // Pipelines: an effect's live as long as it records a pass; the context's own (postfx.copy) always.
     for (auto it = pipelines_.begin(); it != pipelines_.end();) {
         const bool effectLive =
@@ -754,8 +761,13 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
 }
 
 FrameGraph::HeldImage FrameGraph::heldImage(const char* name) const {
+    const ResourceId* id = nullptr;
     for (const OwnedImage& o : images_)
-        if (o.built && std::strcmp(o.id->name, name) == 0) return {o.image.get(), o.layout, o.pendingWrite};
+        if (std::strcmp(o.id->name, name) == 0) id = o.id;
+    for (const auto& [alias, owner] : aliases_)
+        if (!id && std::strcmp(alias->name, name) == 0) id = owner;
+    const OwnedImage* o = id ? findImage(id) : nullptr;
+    if (o && o->built) return {o->image.get(), o->layout, o->pendingWrite};
     return {};
 }
 
