@@ -661,8 +661,9 @@ TEST(FogReference, CloudShadowVisibilityFiltersAndClampsLikeTheSampler) {
     EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {25.0, 7.0, 25.0}), double(0.2f));  // texel (0, 0)'s centre
     EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {75.0, 0.0, 25.0}), double(0.4f));
     EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {25.0, 0.0, 75.0}), double(0.6f));  // row 1
-    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {50.0, 0.0, 50.0}), 0.25 * (0.2 + 0.4 + 0.6 + 0.8));
-    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {50.0, 0.0, 25.0}), 0.5 * (0.2 + 0.4));
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {50.0, 0.0, 50.0}),
+                     0.25 * (double(0.2f) + double(0.4f) + double(0.6f) + double(0.8f)));
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {50.0, 0.0, 25.0}), 0.5 * (double(0.2f) + double(0.4f)));
     EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {0.0, 0.0, 0.0}), double(0.2f));  // the edge: clamped
     EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {100.0, 0.0, 100.0}), double(0.8f));
     EXPECT_EQ(cloudShadowVisibility(map, {-1.0, 0.0, 50.0}), 1.0);  // outside the map: no shadow
