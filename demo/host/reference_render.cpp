@@ -1,7 +1,7 @@
 // Renderer::renderReference: the GPU frame up to lighting, read back, and postfx's CPU references over it
 // in the composite order: the atmosphere (postfx::reference::renderAtmosphere, reference (a)), the clouds
 // (renderClouds), then the fog (renderFog, or renderFroxelFog for the froxel fog), with the same inputs the
-// GPU frame gave postfx.
+// GPU frame gave postfx, the clouds' shadow map included (the fogs' sunlight and the lit surfaces).
 #include "host/renderer.h"
 #include "host/renderer_impl.h"
 
@@ -77,6 +77,10 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const postfx::FogNoiseSettings& noiseSettings = froxel ? in.froxelFog.noise : in.fog.noise;
     const bool noise = fog && noiseSettings.enabled && !noiseSettings.hostTexture;
     const uint32_t noiseEdge = noiseSettings.textureSize;
+    // The clouds' shadow map, made by postfx after the lighting: the GPU's surfaces read the one held from
+    // the frame before (one frame late). A frame of the same state recorded first holds this frame's, so
+    // that the surfaces are lit under it; the fogs' references read it back (R32F, size² texels).
+    const bool cloudShadows = gpuScene.clouds.enabled && gpuScene.clouds.castShadows;
 
     // With any of postfx's effects, postfx runs as in render() but writes to a scratch image: it validates
     // the inputs and generates the noise texture, and the HDR image keeps the scene without postfx's
@@ -90,17 +94,54 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
                      r.extent,           VK_IMAGE_LAYOUT_GENERAL, r.fogScratch.usage};
     }
 
-    // One host-visible buffer: depth, shadow map, noise (each as the GPU stores it).
+    // One frame on render()'s command buffer and fence of its slot (all are idle: setScene waited), submitted
+    // and waited for; nothing is submitted when recording fails.
+    const size_t slot = frameIndex % kFramesInFlight;
+    VkCommandBuffer cmd = r.commandBuffers[slot];
+    const auto submitFrame = [&](const auto& record) {
+        vkResetCommandBuffer(cmd, 0);
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        vkBeginCommandBuffer(cmd, &bi);
+        const bool recorded = [&] {
+            if (fogOutput.image) {  // the scratch image's old content is never read
+                imageBarrier(cmd, r.fogScratch, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kCompute,
+                             0, kCompute, VK_ACCESS_SHADER_WRITE_BIT);
+            }
+            // A single frame: nothing before it belongs to its history.
+            r.cameraCutRequested = true;
+            return r.recordFrame(cmd, gpuScene, frameIndex, fogOutput, error) && record();
+        }();
+        if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
+        vkResetFences(device, 1, &r.fences[slot]);
+        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+        si.commandBufferCount = 1;
+        si.pCommandBuffers = &cmd;
+        if (!vkCheck(vkQueueSubmit(r.host.queue, 1, &si, r.fences[slot]), "vkQueueSubmit", error)) {
+            r.broken = true;
+            return false;
+        }
+        return vkCheck(vkWaitForFences(device, 1, &r.fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences",
+                       error);
+    };
+    if (cloudShadows && !submitFrame([] { return true; })) return false;
+    const bool cloudShadow = fog && r.postfx->imageView(postfx::kCloudsShadowMap) != VK_NULL_HANDLE;
+    const uint32_t cloudShadowEdge = gpuScene.clouds.shadowMap.size;
+
+    // One host-visible buffer: depth, shadow map, noise, the clouds' shadow map (each as the GPU stores it).
     const size_t pixels = size_t(r.extent.width) * r.extent.height;
     const VkExtent2D shadowExtent = r.shadow.depth.extent;
     const size_t shadowTexels = shadows ? size_t(shadowExtent.width) * shadowExtent.height : 0;
     const size_t noiseTexels = noise ? size_t(noiseEdge) * noiseEdge * noiseEdge : 0;
+    const size_t cloudShadowTexels = cloudShadow ? size_t(cloudShadowEdge) * cloudShadowEdge : 0;
     const VkDeviceSize depthOffset = 0;
     const VkDeviceSize shadowOffset = depthOffset + pixels * sizeof(float);
     const VkDeviceSize noiseOffset = shadowOffset + shadowTexels * sizeof(float);
+    // Floats after bytes: aligned to 4.
+    const VkDeviceSize cloudShadowOffset = (noiseOffset + noiseTexels + 3) / 4 * 4;
     GpuBuffer buffer;
-    if (!createBuffer(r.host, noiseOffset + noiseTexels, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, buffer,
-                      error))
+    if (!createBuffer(r.host, cloudShadowOffset + cloudShadowTexels * sizeof(float),
+                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, buffer, error))
         return false;
     struct BufferGuard {
         VkDevice device;
@@ -108,23 +149,8 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         ~BufferGuard() { destroyBuffer(device, buffer); }
     } guard{device, buffer};
 
-    // One frame on render()'s command buffer and fence of its slot (all are idle: setScene waited);
-    // nothing is submitted when recording fails.
-    const size_t slot = frameIndex % kFramesInFlight;
-    VkCommandBuffer cmd = r.commandBuffers[slot];
-    vkResetCommandBuffer(cmd, 0);
-    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    vkBeginCommandBuffer(cmd, &bi);
-    uint32_t noiseSize = 0;
-    const bool recorded = [&] {
-        if (fogOutput.image) {  // the scratch image's old content is never read
-            imageBarrier(cmd, r.fogScratch, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kCompute, 0,
-                         kCompute, VK_ACCESS_SHADER_WRITE_BIT);
-        }
-        // A single frame: nothing before it belongs to its history.
-        r.cameraCutRequested = true;
-        if (!r.recordFrame(cmd, gpuScene, frameIndex, fogOutput, error)) return false;
+    uint32_t noiseSize = 0, cloudShadowSize = 0;
+    const bool submitted = submitFrame([&] {
         r.recordReadback(cmd);  // the HDR image: postfx only read it
         recordDepthCopy(cmd, r.gbuffer.depth, buffer, depthOffset);
         if (shadows) recordDepthCopy(cmd, r.shadow.depth, buffer, shadowOffset);
@@ -141,21 +167,27 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
                 return false;
             }
         }
+        if (cloudShadow) {
+            VkExtent3D extent{};
+            VkDeviceSize bytes = 0;
+            const postfx::Status s = r.postfx->recordImageReadback(
+                postfx::kCloudsShadowMap, cmd, buffer.buffer, cloudShadowOffset, extent, bytes);
+            cloudShadowSize = extent.width;
+            if (!s.ok()) {
+                error = "postfx cloud shadow readback: " + s.message;
+                return false;
+            }
+        }
         bufferBarrier(cmd, buffer, kTransfer, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_HOST_BIT,
                       VK_ACCESS_HOST_READ_BIT);
         return true;
-    }();
-    if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
-    vkResetFences(device, 1, &r.fences[slot]);
-    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    si.commandBufferCount = 1;
-    si.pCommandBuffers = &cmd;
-    if (!vkCheck(vkQueueSubmit(r.host.queue, 1, &si, r.fences[slot]), "vkQueueSubmit", error)) {
-        r.broken = true;
+    });
+    if (!submitted) return false;
+    if (cloudShadow && cloudShadowSize != cloudShadowEdge) {
+        error = "postfx cloud shadow readback: edge " + std::to_string(cloudShadowSize) + ", expected " +
+                std::to_string(cloudShadowEdge);
         return false;
     }
-    if (!vkCheck(vkWaitForFences(device, 1, &r.fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences", error))
-        return false;
     if (noise && noiseSize != noiseEdge) {
         error = "postfx noise readback: texture edge " + std::to_string(noiseSize) + ", expected " +
                 std::to_string(noiseEdge);
@@ -268,6 +300,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     }
 
     const std::vector<float> shadowDepth = floatsAt(buffer, shadowOffset, shadowTexels);
+    const std::vector<float> cloudShadowTexels01 = floatsAt(buffer, cloudShadowOffset, cloudShadowTexels);
     std::vector<float> noiseTexels01(noiseTexels);
     const auto* bytes = static_cast<const uint8_t*>(buffer.mapped) + noiseOffset;
     for (size_t i = 0; i < noiseTexels; ++i)
@@ -289,6 +322,11 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         if (noise) {
             fi.noise = noiseTexels01;
             fi.noiseSize = noiseSize;
+        }
+        if (cloudShadow) {  // the map of this frame, at this frame's rows (recordFrame kept them)
+            fi.cloudShadow = cloudShadowTexels01;
+            fi.cloudShadowWidth = fi.cloudShadowHeight = cloudShadowSize;
+            fi.cloudShadowRows = r.cloudShadow;
         }
         fi.atmosphere = in.atmosphere;  // the sun through it at each sample
         fi.stepsPerPixel = stepsPerPixel;

@@ -108,8 +108,11 @@ public:
     // all CPU threads). The GPU renders the frame up to lighting; postfx runs too, writing to a scratch
     // image, so that the noise texture it generates can be read back while the HDR image keeps the
     // un-fogged scene (postfx::kFogNoiseTexture or kFroxelFogNoiseTexture). Read back: HDR color, depth,
-    // shadow map (when drawn), noise (when on); the camera, sun, ambient, lights, shadow and time inputs are
-    // those of the GPU frame. Without fog the result is the un-fogged scene. `out` has render()'s layout.
+    // shadow map (when drawn), noise (when on), the clouds' shadow map (when they cast shadows: the fog's
+    // reference dims its sunlight by it); the camera, sun, ambient, lights, shadow and time inputs are
+    // those of the GPU frame. With clouds casting shadows a frame of the same state is recorded first, so
+    // that the surfaces are lit under the map of the frame shown (render()'s lighting reads the previous
+    // frame's). Without fog the result is the un-fogged scene. `out` has render()'s layout.
     // The frame shows sceneAtFrame(scene, options.frames - 1), the state of render()'s last frame (the
     // reference itself is of that one frame: it has no history); its postfx frame is a camera cut.
     // Calls setScene(that state) first. `stride` > 1 evaluates the reference only at the pixels (x, y) with x

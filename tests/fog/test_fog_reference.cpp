@@ -588,6 +588,14 @@ TEST(FogReference, ValidationNamesTheField) {
     f = ok;
     f.color.resize(3);
     expectInvalid(f, "FogInputs.color");
+    const float cloudTexels[3] = {1.0f, std::numeric_limits<float>::quiet_NaN(), 1.0f};
+    f = ok;
+    f.in.cloudShadow = std::span<const float>(cloudTexels, 3);
+    f.in.cloudShadowWidth = f.in.cloudShadowHeight = 2;
+    expectInvalid(f, "FogInputs.cloudShadow: 3 values, expected 4");
+    f.in.cloudShadowWidth = 3;
+    f.in.cloudShadowHeight = 1;
+    expectInvalid(f, "FogInputs.cloudShadow: value 1 is not finite");
     f = ok;
     f.in.settings.noise.enabled = true;
     f.in.noiseSize = 4;
@@ -640,6 +648,53 @@ TEST(FogReference, MarchConvergesWithStepCount) {
     // march converges at first order only (~2e-4 here): shadowed references need many steps.
     Frame shadowed = busyFrame();
     EXPECT_LT(convergenceError(shadowed), 1e-3);
+}
+
+// The clouds' shadow map as the GPU samples it (shaders/common/cloud_shadow.glsl, a linear clamp-to-edge
+// sampler): uv from the rows, 1 outside [0, 1]², bilinear between texel centres, edge texels clamped.
+TEST(FogReference, CloudShadowVisibilityFiltersAndClampsLikeTheSampler) {
+    using postfx::reference::detail::CloudShadowMap;
+    using postfx::reference::detail::cloudShadowVisibility;
+    // 2×2 texels over x, z ∈ [0, 100] m: uv = (x / 100, z / 100); row 0 at v = 0.
+    const float texels[] = {0.2f, 0.4f, 0.6f, 0.8f};
+    CloudShadowMap map{std::span<const float>(texels, 4), 2, 2, {0.01, 0.0, 0.0, 0.0}, {0.0, 0.0, 0.01, 0.0}};
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {25.0, 7.0, 25.0}), double(0.2f));  // texel (0, 0)'s centre
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {75.0, 0.0, 25.0}), double(0.4f));
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {25.0, 0.0, 75.0}), double(0.6f));  // row 1
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {50.0, 0.0, 50.0}),
+                     0.25 * (double(0.2f) + double(0.4f) + double(0.6f) + double(0.8f)));
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {50.0, 0.0, 25.0}), 0.5 * (double(0.2f) + double(0.4f)));
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {0.0, 0.0, 0.0}), double(0.2f));  // the edge: clamped
+    EXPECT_DOUBLE_EQ(cloudShadowVisibility(map, {100.0, 0.0, 100.0}), double(0.8f));
+    EXPECT_EQ(cloudShadowVisibility(map, {-1.0, 0.0, 50.0}), 1.0);  // outside the map: no shadow
+    EXPECT_EQ(cloudShadowVisibility(map, {50.0, 0.0, 101.0}), 1.0);
+    map.texels = {};
+    EXPECT_EQ(cloudShadowVisibility(map, {50.0, 0.0, 50.0}), 1.0);  // no map
+}
+
+// The clouds' shadow map dims the sun's in-scattering (the ambient's not): a map reading 0.25 wherever the
+// rays go (constant rows: uv (0.5, 0.5) everywhere) gives a quarter of the marched sun-lit radiance.
+TEST(FogReference, CloudShadowDimsTheSunOnly) {
+    Frame f(8, 6);
+    f.in.settings.analyticTail = false;  // the tail reads no cloud shadow (as on the GPU)
+    const std::vector<float> lit = f.render();
+    const float quarter[4] = {0.25f, 0.25f, 0.25f, 0.25f};
+    f.in.cloudShadow = std::span<const float>(quarter, 4);
+    f.in.cloudShadowWidth = f.in.cloudShadowHeight = 2;
+    f.in.cloudShadowRows.u = {0.0, 0.0, 0.0, 0.5};
+    f.in.cloudShadowRows.v = {0.0, 0.0, 0.0, 0.5};
+    const std::vector<float> shadowed = f.render();
+    ASSERT_EQ(lit.size(), shadowed.size());
+    for (size_t i = 0; i < lit.size(); ++i) {
+        if (i % 4 == 3) continue;
+        ASSERT_GT(lit[i], 0.0f);
+        EXPECT_NEAR(shadowed[i], 0.25 * lit[i], 1e-6 * lit[i]) << i;
+    }
+    f.in.ambient = glm::vec3(1.0f);  // the ambient's share is not dimmed
+    f.in.sun.illuminance = glm::vec3(0.0f);
+    const std::vector<float> ambient = f.render();
+    f.in.cloudShadow = {};
+    EXPECT_EQ(f.render(), ambient);
 }
 
 }  // namespace

@@ -127,3 +127,25 @@ TEST_F(FramePlanTest, StillFramesRecordOnlyWhatDependsOnTheFrame) {
     for (const char* kept : {"clouds.base_noise", "clouds.detail_noise"})
         EXPECT_EQ(std::find(moved.begin(), moved.end(), kept), moved.end()) << kept;
 }
+
+// The shared noise is found by either effect's name: the host reads the froxel fog's noise
+// (kFroxelFogNoiseTexture) though the clouds declared, named and built it (clouds.base_noise).
+TEST_F(FramePlanTest, SharedNoiseIsHeldUnderEveryEffectsName) {
+    planAndRun();
+    const VkImageView shared = context->imageView(postfx::kCloudsBaseNoise);
+    ASSERT_NE(shared, VkImageView(VK_NULL_HANDLE));
+    EXPECT_EQ(context->imageView(postfx::kFroxelFogNoiseTexture), shared);
+    VkExtent3D fogExtent{}, cloudsExtent{};
+    const std::vector<uint8_t> fog =
+        readHeldImage(*host, gpu, *context, postfx::kFroxelFogNoiseTexture.value, fogExtent);
+    const std::vector<uint8_t> clouds =
+        readHeldImage(*host, gpu, *context, postfx::kCloudsBaseNoise.value, cloudsExtent);
+    EXPECT_EQ(fogExtent.width, 32u);
+    EXPECT_EQ(fog, clouds);
+
+    // Without the clouds the froxel fog holds its own, under its name only.
+    frame.clouds.enabled = false;
+    planAndRun();
+    EXPECT_EQ(context->imageView(postfx::kCloudsBaseNoise), VkImageView(VK_NULL_HANDLE));
+    EXPECT_NE(context->imageView(postfx::kFroxelFogNoiseTexture), VkImageView(VK_NULL_HANDLE));
+}

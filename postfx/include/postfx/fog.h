@@ -136,7 +136,8 @@ inline constexpr uint32_t kFogAutoFeatureNoise = 1;      // fog.noise.enabled
 inline constexpr uint32_t kFogAutoFeatureShadowMap = 2;  // FrameInfo::shadowMap.image present
 
 // The fog's generated noise texture (3D, R8_UNORM, size³, repeat-tileable), for Context::imageView and
-// Context::recordImageReadback: held while fog with generated noise runs.
+// Context::recordImageReadback: held while fog with generated noise runs. When the clouds generate the
+// same texture (formula, size and seed: their base noise) the effects share one image, which both names find.
 inline constexpr ResourceName kFogNoiseTexture{"fog.noise"};
 
 // The fog's typed view of the context's generic calls (Context::autoQuality, autoQualityTimings,

@@ -42,6 +42,15 @@ struct FogInputs {
     bool shadowReversedZ = false;
     float shadowDepthBias = 0.0f;
 
+    // The clouds' shadow map (Context::recordImageReadback of kCloudsShadowMap: the transmittance toward the
+    // sun), width·height texels, row-major, row 0 at v = 0; empty for none. Each march sample's sunlight is
+    // multiplied by it as the GPU's fogs read it (shaders/common/cloud_shadow.glsl): uv from cloudShadowRows
+    // (cloudShadowTransform of the frame that made the map) at the sample's world position, 1 outside
+    // [0, 1]², else bilinear between texel centres, clamped to the edge texels. Not in the analytic tail.
+    std::span<const float> cloudShadow;
+    uint32_t cloudShadowWidth = 0, cloudShadowHeight = 0;
+    CloudShadowTransform cloudShadowRows;
+
     // Noise texels in [0, 1], noiseSize³ of them, x fastest then y then z. Required when
     // settings.noise.enabled.
     std::span<const float> noise;
@@ -77,6 +86,15 @@ struct FroxelFogInputs {
     DMat4 shadowWorldToClip{1.0};
     bool shadowReversedZ = false;
     float shadowDepthBias = 0.0f;
+
+    // The clouds' shadow map (Context::recordImageReadback of kCloudsShadowMap: the transmittance toward the
+    // sun), width·height texels, row-major, row 0 at v = 0; empty for none. Each march sample's sunlight is
+    // multiplied by it as the GPU's fogs read it (shaders/common/cloud_shadow.glsl): uv from cloudShadowRows
+    // (cloudShadowTransform of the frame that made the map) at the sample's world position, 1 outside
+    // [0, 1]², else bilinear between texel centres, clamped to the edge texels. Not in the analytic tail.
+    std::span<const float> cloudShadow;
+    uint32_t cloudShadowWidth = 0, cloudShadowHeight = 0;
+    CloudShadowTransform cloudShadowRows;
 
     // Noise texels in [0, 1], noiseSize³ of them, x fastest then y then z. Required when
     // settings.noise.enabled.

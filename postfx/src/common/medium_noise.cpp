@@ -33,7 +33,7 @@ core::ImageRef declareGeneratedNoise(core::FrameBuilder& b, const core::Resource
     // The key names the formula too: a texture of the same formula, size and seed another effect declared
     // this frame is the same texture, shared (the fogs' noise and the clouds' base noise).
     const uint64_t key = (uint64_t(kind) << 56) | (uint64_t(size) << 32) | seed;
-    if (const core::ImageRef shared = b.findPersistent(desc, key); shared.valid()) return shared;
+    if (const core::ImageRef shared = b.findPersistent(id, desc, key); shared.valid()) return shared;
     const core::ImageRef image = b.persistentImage(id, desc, key);
     const uint32_t groups = size / gpu::kNoiseGroupSize;
     const gpu::NoisePush push{glm::uvec4(size, seed, kind, 0u)};

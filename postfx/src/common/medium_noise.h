@@ -32,7 +32,8 @@ struct NoiseDeclaration {
 // runs only when no texture of that size and seed is held): the Perlin–Worley fBm (kNoisePerlinWorley)
 // or the Worley fBm alone (kNoiseWorley). `size` is a power of two >= kNoiseGroupSize. When an effect
 // declared the same texture (formula, size, seed) earlier this frame, that one is returned: one image and
-// one build for all of them, named by the first (FrameBuilder::findPersistent).
+// one build for all of them, named by the first and found by every sharer's name too
+// (FrameBuilder::findPersistent).
 core::ImageRef declareGeneratedNoise(core::FrameBuilder& builder, const core::ResourceId& id,
                                      const core::ComputePipelineDesc& pass, uint32_t size, uint32_t seed,
                                      uint32_t kind);

@@ -17,6 +17,22 @@ Status checkCount(const char* field, size_t count, uint64_t expected, const char
                          std::to_string(expected) + " (" + what + ")");
 }
 
+Status checkCloudShadow(const char* prefix, std::span<const float> texels, uint32_t width, uint32_t height,
+                        const CloudShadowTransform& rows) {
+    if (texels.empty()) return Status::success();
+    const std::string field = std::string(prefix) + ".cloudShadow";
+    if (Status s = checkCount(field.c_str(), texels.size(), uint64_t(width) * height,
+                              "cloudShadowWidth·cloudShadowHeight");
+        !s)
+        return s;
+    for (size_t i = 0; i < texels.size(); ++i)
+        if (!std::isfinite(texels[i]))
+            return core::invalid(field + ": value " + std::to_string(i) + " is not finite");
+    if (!core::allFinite(glm::dvec4(rows.u)) || !core::allFinite(glm::dvec4(rows.v)))
+        return core::invalid(std::string(prefix) + ".cloudShadowRows: not finite");
+    return Status::success();
+}
+
 glm::dmat4 clipToView(const CameraInput& camera) {
     glm::dmat4 rotation(camera.view);
     rotation[3] = dvec4(0.0, 0.0, 0.0, 1.0);

@@ -2,6 +2,7 @@
 // froxel fog's (froxel_fog/froxel_reference.cpp): pixel rays, the composite, rows spread over threads.
 #pragma once
 
+#include <postfx/clouds.h>
 #include <postfx/fog.h>
 #include <postfx/inputs.h>
 
@@ -24,6 +25,11 @@ namespace postfx::reference::detail {
 
 // InvalidArgument "<field>: <count> values, expected <expected> (<what>)" unless count == expected.
 Status checkCount(const char* field, size_t count, uint64_t expected, const char* what);
+
+// The clouds' shadow map of a reference's inputs (`prefix`: "FogInputs", "FroxelFogInputs"), when given:
+// width·height texels, each finite, and finite rows.
+Status checkCloudShadow(const char* prefix, std::span<const float> texels, uint32_t width, uint32_t height,
+                        const CloudShadowTransform& rows);
 
 // Rotation-only view: the view matrix with its translation column zeroed (the march is camera-relative).
 glm::dmat4 clipToView(const CameraInput& camera);
@@ -58,6 +64,7 @@ struct MediumModel {
     glm::dvec3 noiseOrigin;  // noise coordinate of the camera, wrapped to [0, 1)
     double noiseScale, noiseThreshold, noiseMultiplier;
     ShadowMap shadow;
+    CloudShadowMap cloudShadow;  // the clouds' (their transmittance toward the sun); empty: none
     // The air (inputs' atmosphere.enabled): the sun's transmittance through it, null when off.
     std::shared_ptr<const common::Air> atmosphere;
 };
@@ -101,6 +108,8 @@ void fillMediumModel(MediumModel& m, const Inputs& in, const FogMedium& s, uint3
     m.shadow = {in.shadowDepth,       in.shadowWidth,     in.shadowHeight,
                 in.shadowWorldToClip, in.shadowReversedZ, double(in.shadowDepthBias),
                 shadowKernel};
+    m.cloudShadow = {in.cloudShadow, in.cloudShadowWidth, in.cloudShadowHeight,
+                     glm::dvec4(in.cloudShadowRows.u), glm::dvec4(in.cloudShadowRows.v)};
     m.atmosphere = nullptr;
     if (in.atmosphere.enabled) m.atmosphere = common::makeAir(in.atmosphere);
 }

@@ -98,6 +98,22 @@ double shadowVisibility(const ShadowMap& map, const glm::dvec3& world) {
     return double(lit) / double(map.kernel * map.kernel);
 }
 
+double cloudShadowVisibility(const CloudShadowMap& map, const glm::dvec3& world) {
+    if (map.texels.empty()) return 1.0;
+    const double u = glm::dot(glm::dvec3(map.u), world) + map.u.w;
+    const double v = glm::dot(glm::dvec3(map.v), world) + map.v.w;
+    if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return 1.0;  // NaN too
+    const double s = u * double(map.width) - 0.5, t = v * double(map.height) - 0.5;
+    const double i = std::floor(s), j = std::floor(t), a = s - i, b = t - j;
+    const auto texel = [&](double x, double y) {
+        const int64_t cx = std::clamp<int64_t>(int64_t(x), 0, int64_t(map.width) - 1);
+        const int64_t cy = std::clamp<int64_t>(int64_t(y), 0, int64_t(map.height) - 1);
+        return double(map.texels[size_t(cy * int64_t(map.width) + cx)]);
+    };
+    return (1.0 - b) * ((1.0 - a) * texel(i, j) + a * texel(i + 1.0, j)) +
+           b * ((1.0 - a) * texel(i, j + 1.0) + a * texel(i + 1.0, j + 1.0));
+}
+
 // Self-shadowing: τsun = density · h(y) / (height_falloff · toSun.y) when height_falloff · toSun.y > 0,
 // ∞ otherwise (sun at or below the horizon, or homogeneous fog); Tsun = exp(-τsun).
 double sunTransmittance(double density, double h, double heightFalloff, double toSunY) {

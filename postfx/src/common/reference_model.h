@@ -28,6 +28,18 @@ struct ShadowMap {
     uint32_t kernel = 1;  // odd
 };
 
+// The clouds' shadow map as the references read it.
+struct CloudShadowMap {
+    std::span<const float> texels;  // width·height, row-major, row 0 at v = 0; empty: no map
+    uint32_t width = 0, height = 0;
+    glm::dvec4 u{0.0}, v{0.0};  // uv = (dot(u.xyz, x) + u.w, dot(v.xyz, x) + v.w) of world position x
+};
+
+// The clouds' transmittance toward the sun at world position `world`, read as the GPU reads the map
+// (shaders/common/cloud_shadow.glsl with a linear, clamp-to-edge sampler): 1 outside uv ∈ [0, 1]² or
+// without a map; otherwise bilinear between the texel centres (i + 0.5) / size, the indices clamped.
+double cloudShadowVisibility(const CloudShadowMap& map, const glm::dvec3& world);
+
 // One tap at shadow depth `z` (c.z/c.w) against texel depth `stored`, for z not before the near plane:
 // inside [0, 1] the biased depth comparison; beyond the far plane lit only where the texel holds no caster
 // (stored is the cleared far value: 1 standard, 0 reversed).

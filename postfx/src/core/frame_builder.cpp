@@ -78,11 +78,13 @@ ImageRef FrameBuilder::find(const ResourceId& id) const {
     return {};
 }
 
-ImageRef FrameBuilder::findPersistent(const ImageDesc& desc, uint64_t buildKey) const {
+ImageRef FrameBuilder::findPersistent(const ResourceId& alias, const ImageDesc& desc, uint64_t buildKey) {
     for (size_t i = 0; i < f_.resources.size(); ++i) {
         const ResourceDecl& r = f_.resources[i];
-        if (r.kind == ResourceDecl::Kind::Persistent && r.buildKey == buildKey && sameDesc(r.desc, desc))
+        if (r.kind == ResourceDecl::Kind::Persistent && r.buildKey == buildKey && sameDesc(r.desc, desc)) {
+            if (r.id != &alias) f_.aliases.emplace_back(&alias, uint16_t(i));
             return {uint16_t(i)};
+        }
     }
     return {};
 }

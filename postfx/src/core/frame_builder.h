@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace postfx::core {
@@ -96,7 +97,9 @@ struct Frame {
     // Two or more of the frame's effects read the host's depth: postfx.view_distance unprojects it once
     // for all of them (FrameBuilder::depthInput); set by the context before the effects declare.
     bool shareDepth = false;
-    bool composited = false;       // a pass has written the composite target
+    bool composited = false;  // a pass has written the composite target
+    // Other names of shared persistent images (findPersistent): the later declarer's id and the image.
+    std::vector<std::pair<const ResourceId*, uint16_t>> aliases;
     std::vector<uint8_t> scratch;  // compile()'s
 };
 
@@ -161,8 +164,9 @@ public:
     ImageRef find(const ResourceId& id) const;
     // A persistent image declared earlier this frame with `desc` and `buildKey` (invalid if none): for
     // contents several effects would build alike (a noise texture of one formula, size and seed), so that
-    // they share one image and one build.
-    ImageRef findPersistent(const ImageDesc& desc, uint64_t buildKey) const;
+    // they share one image and one build. When found, `alias` becomes another name of it: the host finds
+    // it by either name (Context::imageView, recordImageReadback).
+    ImageRef findPersistent(const ResourceId& alias, const ImageDesc& desc, uint64_t buildKey);
     // Uniform data another effect declared earlier this frame (invalid if it did not).
     BufferRef findUniforms(const ResourceId& id) const;
     // Uniform data for this frame: `bytes` copied into a ring of framesInFlight slots.

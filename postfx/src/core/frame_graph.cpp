@@ -25,6 +25,7 @@ Status FrameGraph::create(const Gpu& gpu, uint32_t framesInFlight, const DepthCo
 
 void FrameGraph::release() {
     images_.clear();
+    aliases_.clear();
     buffers_.clear();
     pipelines_.clear();
     if (gpu_)
@@ -46,6 +47,7 @@ void FrameGraph::begin(Frame& f, const FrameInfo& info) const {
     f.passes.clear();
     f.accesses.clear();
     f.uniformData.clear();
+    f.aliases.clear();
     f.composited = false;
     auto add = [&](HostImage which, bool present) {
         f.host[size_t(which)] = kNoResource;
@@ -206,6 +208,9 @@ Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement
         if (f.resources[i].held && owned(f.resources[i]))
             for (OwnedImage& o : images_)
                 if (o.id == f.resources[i].id) resourceImages_[i] = &o;
+    aliases_.clear();
+    for (const auto& [alias, resource] : f.aliases)
+        if (f.resources[resource].held) aliases_.emplace_back(alias, f.resources[resource].id);
     return preparePipelines(f, frameIndex, retirement);
 }
 

@@ -58,7 +58,8 @@ public:
     Status record(Frame& frame, VkCommandBuffer cmd, uint64_t frameIndex, DescriptorArena& arena,
                   PassTimer& timer, Retirement& retirement);
 
-    // A held persistent image by plan name (built, else null).
+    // A held persistent image by plan name, or by the name of an effect sharing it in the last recorded
+    // frame (built, else null).
     struct HeldImage {
         const GpuImage* image = nullptr;
         VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
@@ -112,6 +113,8 @@ private:
     DepthConvention depth_;
     std::vector<const char*> effectNames_;
     std::vector<OwnedImage> images_;
+    // The last recorded frame's other names of held images (Frame::aliases): the alias and the owner.
+    std::vector<std::pair<const ResourceId*, const ResourceId*>> aliases_;
     std::vector<OwnedBuffer> buffers_;
     std::vector<CachedPipeline> pipelines_;
     VkSampler samplers_[3] = {};

@@ -196,8 +196,13 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
 }
 
 FrameGraph::HeldImage FrameGraph::heldImage(const char* name) const {
+    const ResourceId* id = nullptr;
     for (const OwnedImage& o : images_)
-        if (o.built && std::strcmp(o.id->name, name) == 0) return {o.image.get(), o.layout, o.pendingWrite};
+        if (std::strcmp(o.id->name, name) == 0) id = o.id;
+    for (const auto& [alias, owner] : aliases_)
+        if (!id && std::strcmp(alias->name, name) == 0) id = owner;
+    const OwnedImage* o = id ? findImage(id) : nullptr;
+    if (o && o->built) return {o->image.get(), o->layout, o->pendingWrite};
     return {};
 }
 

@@ -68,6 +68,10 @@ Status validate(const FogInputs& in) {
             return invalid("FogInputs.shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
                            " must be finite and >= 0");
     }
+    if (Status s = detail::checkCloudShadow("FogInputs", in.cloudShadow, in.cloudShadowWidth,
+                                            in.cloudShadowHeight, in.cloudShadowRows);
+        !s)
+        return s;
     return Status::success();
 }
 
@@ -145,7 +149,8 @@ void marchPixel(const Model& m, const Ray& ray, const dvec3& sunPhase, Radiance&
         if (sigmaT == 0.0) continue;  // empty step: adds nothing, T unchanged
         dvec3 sun(0.0);               // V·Tsun; not looked up when the sun adds nothing
         if (sunPhase != dvec3(0.0)) {
-            double v = detail::shadowVisibility(m.shadow, m.camera + x);
+            double v = detail::shadowVisibility(m.shadow, m.camera + x) *
+                       detail::cloudShadowVisibility(m.cloudShadow, m.camera + x);
             if (m.selfShadow) v *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
             sun = v > 0.0 ? v * detail::atmosphereSunTransmittance(m, x) : dvec3(0.0);
         }

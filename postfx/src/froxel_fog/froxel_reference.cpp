@@ -71,6 +71,10 @@ Status validate(const FroxelFogInputs& in) {
             return invalid("FroxelFogInputs.shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
                            " must be finite and >= 0");
     }
+    if (Status s = detail::checkCloudShadow("FroxelFogInputs", in.cloudShadow, in.cloudShadowWidth,
+                                            in.cloudShadowHeight, in.cloudShadowRows);
+        !s)
+        return s;
     return Status::success();
 }
 
@@ -159,7 +163,8 @@ void marchPixel(const Model& m, const detail::PixelRay& ray, const dvec3& sunPha
         if (sigmaT == 0.0) continue;
         dvec3 sun(0.0);
         if (sunPhase != dvec3(0.0)) {
-            double v = detail::shadowVisibility(m.shadow, m.camera + x);
+            double v = detail::shadowVisibility(m.shadow, m.camera + x) *
+                       detail::cloudShadowVisibility(m.cloudShadow, m.camera + x);
             if (m.selfShadow) v *= detail::sunTransmittance(m.density, h, m.heightFalloff, m.toSun.y);
             sun = v > 0.0 ? v * detail::atmosphereSunTransmittance(m, x) : dvec3(0.0);
         }
