@@ -1,6 +1,7 @@
 #include "fog/fog_settings.h"
 
 #include "core/checks.h"
+#include "core/settings_check.h"
 #include "core/temporal.h"
 
 #include <algorithm>
@@ -12,14 +13,8 @@
 namespace postfx::fog {
 namespace {
 
-using core::checkRange;
-
 Status bad(const std::string& field, const std::string& why) {
     return core::invalid(field + ": " + why);
-}
-
-std::string text(double v) {
-    return core::numberText(v);
 }
 
 // The quality presets, the one place their values are written (docs/effects/fog.md#quality-presets).
@@ -61,88 +56,32 @@ std::vector<double> qualityPresetErrors() {
     return out;
 }
 
-uint64_t mediumKey(const FogMedium& m) {
-    using core::hashValue;
-    uint64_t h = core::kHashSeed;
-    h = hashValue(h, m.density);
-    for (int c = 0; c < 3; ++c)
-        h = hashValue(h, m.albedo[c]);
-    h = hashValue(h, m.anisotropy);
-    h = hashValue(h, m.heightFalloff);
-    h = hashValue(h, m.baseHeight);
-    h = hashValue(h, m.maxDistance);
-    h = hashValue(h, m.selfShadow);
-    h = hashValue(h, m.analyticTail);
-    const FogNoiseSettings& n = m.noise;
-    h = hashValue(h, n.enabled);
-    if (!n.enabled) return h;
-    h = hashValue(h, n.textureSize);
-    h = hashValue(h, n.seed);
-    h = hashValue(h, n.tiling);
-    h = hashValue(h, n.threshold);
-    h = hashValue(h, n.multiplier);
-    for (int c = 0; c < 3; ++c)
-        h = hashValue(h, n.wind[c]);
-    h = hashValue(h, n.hostTexture);
-    return hashValue(h, n.hostTextureLayout);
-}
-
 float clampedAnisotropy(float g) {
     return std::clamp(g, -kMaxAnisotropy, kMaxAnisotropy);
 }
 
-Status validateMedium(const FogMedium& m, const std::string& p) {
-    if (Status r = checkRange((p + ".density").c_str(), m.density, 0.0, 1e6); !r) return r;
-    for (int c = 0; c < 3; ++c)
-        if (Status r = checkRange((p + ".albedo").c_str(), m.albedo[c], 0.0, 1.0); !r) return r;
-    if (Status r = checkRange((p + ".anisotropy").c_str(), m.anisotropy, -1.0, 1.0); !r) return r;
-    if (Status r = checkRange((p + ".height_falloff").c_str(), m.heightFalloff, 0.0, 10.0); !r) return r;
-    if (!std::isfinite(m.baseHeight)) return bad(p + ".base_height", "is not finite");
-    if (Status r = checkRange((p + ".max_distance").c_str(), m.maxDistance, 0.0, 1e7); !r) return r;
-    if (m.maxDistance <= 0.0f) return bad(p + ".max_distance", "must be > 0");
+Status checkMediumRules(const FogMedium& m, const std::string& p) {
     const FogNoiseSettings& n = m.noise;
     if (!n.enabled) return Status::success();
     if (!n.hostTexture && (n.textureSize < 16 || n.textureSize > 256 || !isPowerOfTwo(n.textureSize)))
-        return bad((p + ".noise.texture_size"),
+        return bad(p + ".noise.textureSize",
                    std::to_string(n.textureSize) + " must be a power of two in [16, 256]");
     if (n.hostTexture && n.hostTextureLayout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL &&
         n.hostTextureLayout != VK_IMAGE_LAYOUT_GENERAL &&
         n.hostTextureLayout != VK_IMAGE_LAYOUT_READ_ONLY_OPTIMAL)
-        return bad((p + ".noise.host_texture_layout"),
+        return bad(p + ".noise.hostTextureLayout",
                    std::to_string(int64_t(n.hostTextureLayout)) +
                        " is not SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL (a layout it can be "
                        "sampled in)");
-    if (Status r = checkRange((p + ".noise.tiling").c_str(), n.tiling, 0.0, 1000.0); !r) return r;
-    if (n.tiling <= 0.0f) return bad((p + ".noise.tiling"), "must be > 0");
-    if (Status r = checkRange((p + ".noise.threshold").c_str(), n.threshold, 0.0, 1.0); !r) return r;
-    if (Status r = checkRange((p + ".noise.multiplier").c_str(), n.multiplier, 0.0, 1e3); !r) return r;
-    for (int c = 0; c < 3; ++c)
-        if (Status r = checkRange((p + ".noise.wind").c_str(), n.wind[c], -1e3, 1e3); !r) return r;
-    return Status::success();
-}
-
-Status validateTemporal(const TemporalSettings& t, const std::string& p) {
-    const std::string key = p + ".temporal.blend_weight";
-    if (Status r = checkRange(key.c_str(), t.blendWeight, 0.0, 1.0); !r) return r;
-    if (t.blendWeight <= 0.0f) return bad(key, text(t.blendWeight) + " must be > 0");
     return Status::success();
 }
 
 Status validateSettings(const FogSettings& s) {
-    if (uint32_t(s.quality) > uint32_t(FogQuality::Auto))
-        return bad("fog.quality", std::to_string(uint32_t(s.quality)) +
-                                      " is not a FogQuality (Custom, Low, Medium, High, Ultra or Auto)");
-    if (s.steps < 1 || s.steps > 4096)
-        return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
-    if (Status r = checkRange("fog.resolution_scale", s.resolutionScale, 0.25, 1.0); !r) return r;
-    if (!std::isfinite(s.autoBudgetMs)) return bad("fog.auto_budget_ms", "is not finite");
-    if (s.autoBudgetMs <= 0.0f) return bad("fog.auto_budget_ms", text(s.autoBudgetMs) + " must be > 0");
-    if (Status r = checkRange("fog.transmittance_cutoff", s.transmittanceCutoff, 0.0, 1.0); !r) return r;
-    if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
+    const std::string p = "FrameInfo.fog";
+    if (Status r = core::checkSettings(fogSettingsTable(), &s, p); !r) return r;
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
-        return bad("fog.shadow_kernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
-    if (Status r = validateTemporal(s.temporal, "fog"); !r) return r;
-    return validateMedium(s, "fog");
+        return bad(p + ".shadowKernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
+    return checkMediumRules(s, p);
 }
 
 }  // namespace postfx::fog
