@@ -1,30 +1,23 @@
-// Scene files: `effects.froxel_fog` <-> postfx::FroxelFogSettings and its volumes (the medium keys it
-// shares with effects.fog: medium_json.cpp). Keep docs/scene-format.md#effectsfroxel_fog in sync.
+// Scene files: `effects.froxel_fog` <-> postfx::FroxelFogSettings, read and written from its settings table
+// (postfx::froxelFogSettingsTable, settings_json.cpp), and its volumes, read by hand (each entry's keys
+// depend on its shape). Keep docs/scene-format.md#effectsfroxel_fog in sync.
 #include "scene/froxel_fog_json.h"
 
 #include "scene/json_read.h"
 #include "scene/json_text.h"
-#include "scene/medium_json.h"
+#include "scene/settings_json.h"
+
+#include <postfx/settings_table.h>
 
 namespace demo {
 namespace {
 
 using namespace json_read;
 
-// The froxel fog's own keys (besides "enabled" and the medium's).
-constexpr const char* kFroxelKeys[] = {"grid",     "tile_size_px", "depth_distribution",    "depth_exponent",
-                                       "tricubic", "jitter",       "light_list_min_lights", "volumes",
-                                       "temporal"};
+// Read by hand besides the table's keys: a list whose entries take keys by their shape (readVolume).
+constexpr const char* kVolumesKey[] = {"volumes"};
 constexpr const char* kBoxVolumeKeys[] = {"shape", "center", "half_size", "density", "edge_falloff"};
 constexpr const char* kSphereVolumeKeys[] = {"shape", "center", "radius", "density", "edge_falloff"};
-
-postfx::FroxelDepthDistribution readDistribution(const json& j, const std::string& path) {
-    if (j.is_string()) {
-        if (j.get<std::string>() == "power") return postfx::FroxelDepthDistribution::Power;
-        if (j.get<std::string>() == "log") return postfx::FroxelDepthDistribution::Log;
-    }
-    fail(path, "expected \"power\" or \"log\"" + got(j));
-}
 
 // One entry of `volumes`; ranges are checked with the rest by validateFroxelFogSettings.
 postfx::FogVolume readVolume(const json& j, const std::string& path) {
@@ -78,63 +71,41 @@ json volumeToJson(const postfx::FogVolume& v) {
 
 }  // namespace
 
-const char* froxelDepthDistributionName(postfx::FroxelDepthDistribution distribution) {
-    return distribution == postfx::FroxelDepthDistribution::Log ? "log" : "power";
-}
-
 const char* fogVolumeShapeName(postfx::FogVolumeShape shape) {
     return shape == postfx::FogVolumeShape::Sphere ? "sphere" : "box";
 }
 
 void readFroxelFog(const json& j, const std::string& path, postfx::FroxelFogSettings& settings,
                    std::vector<postfx::FogVolume>& volumes) {
-    expectObject(j, path);
-    checkKeys(j, path, medium_json::effectKeys(kFroxelKeys));
     postfx::FroxelFogSettings s;
     s.enabled = true;  // the object's presence turns the froxel fog on unless it says otherwise
-    if (const json* v = find(j, "enabled")) s.enabled = readBool(*v, child(path, "enabled"));
-    medium_json::readMedium(j, path, s);
-    if (const json* v = find(j, "grid")) s.grid = readUvec3(*v, child(path, "grid"));
-    if (const json* v = find(j, "tile_size_px")) s.tileSizePx = readUint32(*v, child(path, "tile_size_px"));
-    if (const json* v = find(j, "depth_distribution"))
-        s.depthDistribution = readDistribution(*v, child(path, "depth_distribution"));
-    if (const json* v = find(j, "depth_exponent"))
-        s.depthExponent = readNumber(*v, child(path, "depth_exponent"));
-    if (const json* v = find(j, "tricubic")) s.tricubic = readBool(*v, child(path, "tricubic"));
-    if (const json* v = find(j, "jitter")) s.jitter = readBool(*v, child(path, "jitter"));
-    if (const json* v = find(j, "light_list_min_lights"))
-        s.lightListMinLights = readUint32(*v, child(path, "light_list_min_lights"));
-    if (const json* v = find(j, "temporal"))
-        medium_json::readTemporal(*v, child(path, "temporal"), s.temporal);
+    // and a `noise` object the noise
+    if (j.is_object() && find(j, "noise")) s.noise.enabled = true;
+    settings_json::readFields(j, path, postfx::froxelFogSettingsTable(), &s, kVolumesKey);
     std::vector<postfx::FogVolume> vs;
     if (const json* v = find(j, "volumes")) vs = readVolumes(*v, child(path, "volumes"));
 
     // Ranges: postfx's own check (as for effects.fog), with the noise's keys checked even while it is off.
-    // postfx names the field "froxel_fog.<key>"; it becomes "effects.froxel_fog.<key>".
+    // postfx names the field "FrameInfo.froxelFog.<member>" (a volume's "...volumes[i].<member>"); it
+    // becomes "effects.froxel_fog.<key>".
     postfx::FroxelFogSettings check = s;
     check.noise.enabled = true;
     check.volumes = vs.data();
     check.volumeCount = uint32_t(vs.size());
-    medium_json::throwIfInvalid(postfx::validateFroxelFogSettings(check), "froxel_fog", path);
+    settings_json::throwIfInvalid(postfx::validateFroxelFogSettings(check), "FrameInfo.froxelFog",
+                                  postfx::froxelFogSettingsTable(), path, "volumes",
+                                  postfx::fogVolumeSettingsTable());
     settings = s;
     volumes = std::move(vs);
 }
 
 json froxelFogToJson(const postfx::FroxelFogSettings& s, const std::vector<postfx::FogVolume>& volumes) {
+    json j = json::object();
+    settings_json::writeFields(postfx::froxelFogSettingsTable(), &s, j);
     json vs = json::array();
     for (const postfx::FogVolume& v : volumes)
         vs.push_back(volumeToJson(v));
-    json j = {{"enabled", s.enabled},
-              {"grid", {s.grid.x, s.grid.y, s.grid.z}},
-              {"tile_size_px", s.tileSizePx},
-              {"depth_distribution", froxelDepthDistributionName(s.depthDistribution)},
-              {"depth_exponent", number(s.depthExponent)},
-              {"tricubic", s.tricubic},
-              {"jitter", s.jitter},
-              {"light_list_min_lights", s.lightListMinLights},
-              {"temporal", medium_json::temporalToJson(s.temporal)},
-              {"volumes", std::move(vs)}};
-    medium_json::writeMedium(s, j);
+    j["volumes"] = std::move(vs);
     return j;
 }
 

@@ -23,9 +23,7 @@ void readFroxelFog(const nlohmann::json& j, const std::string& path, postfx::Fro
 nlohmann::json froxelFogToJson(const postfx::FroxelFogSettings& settings,
                                const std::vector<postfx::FogVolume>& volumes);
 
-// The scene-file names of the depth distributions ("power", "log") and of the volume shapes ("box",
-// "sphere").
-const char* froxelDepthDistributionName(postfx::FroxelDepthDistribution distribution);
+// The scene-file names of the volume shapes ("box", "sphere").
 const char* fogVolumeShapeName(postfx::FogVolumeShape shape);
 
 }  // namespace demo

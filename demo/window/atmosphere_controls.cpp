@@ -1,6 +1,9 @@
 #include "window/atmosphere_controls.h"
 
 #include "window/medium_controls.h"
+#include "window/settings_controls.h"
+
+#include <postfx/settings_table.h>
 
 #include <imgui.h>
 #include <glm/geometric.hpp>
@@ -18,13 +21,8 @@ using widgets::tooltip;
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic;
 
-// The sliders' ranges: within postfx's (validateAtmosphereSettings), narrower where a wider one is useless.
+// The sliders' ranges of the hand-written controls (the others: the settings table's editor ranges).
 constexpr float kMaxScale = 20.0f;             // Rayleigh and ozone, times the file's
-constexpr float kMinHeight = 10.0f;            // scale heights [m]
-constexpr float kMaxHeight = 1e5f;             // (postfx: 1e7)
-constexpr float kMaxMieCoefficient = 1e-3f;    // [1/m] (postfx: 1); 250× Earth's
-constexpr float kMaxAnisotropy = 0.99f;        // |g| (postfx: < 1)
-constexpr float kMaxSunRadiusDeg = 45.0f;      // postfx's bound
 constexpr float kMaxCameraAltitude = 1e7f;     // [m] scene files' coordinate bound (limits::kMaxCoordinate)
 constexpr float kMinSunElevationDeg = -20.0f;  // night, below the twilight
 
@@ -38,59 +36,27 @@ postfx::Vec3 scaled(const postfx::Vec3& v, float k) {
 bool buildMedia(postfx::AtmosphereSettings& a, const postfx::AtmosphereSettings& file, float& rayleighScale,
                 float& ozoneScale) {
     bool changed = false;
+    // Rayleigh scattering and ozone absorption: one scale of the file's spectrum each (their channels are
+    // ~1e-6 /m apart in a fixed ratio: three sliders of such numbers would only break the colour).
     if (ImGui::SliderFloat("Rayleigh scale", &rayleighScale, 0.0f, kMaxScale, "%.3g", kLog)) {
         rayleighScale = clampOrLow(rayleighScale, 0.0f, kMaxScale);
         a.rayleighScattering = scaled(file.rayleighScattering, rayleighScale);
         changed = true;
     }
     tooltip("air's scattering, times the scene file's (5.8, 13.6, 33.1)e-6 /m on Earth): the blue sky");
-    changed |= ImGui::SliderFloat("Rayleigh height [m]", &a.rayleighScaleHeight, kMinHeight, kMaxHeight,
-                                  "%.0f", kLog);
-    tooltip("scale height: the air's density falls as exp(-altitude / this)");
-    changed |=
-        ImGui::SliderFloat("Mie scattering [1/m]", &a.mieScattering, 0.0f, kMaxMieCoefficient, "%.3g", kLog);
-    tooltip("aerosols' scattering at the ground (Earth: 4e-6): haze, the glow around the sun");
-    changed |=
-        ImGui::SliderFloat("Mie absorption [1/m]", &a.mieAbsorption, 0.0f, kMaxMieCoefficient, "%.3g", kLog);
-    changed |= ImGui::SliderFloat("Mie height [m]", &a.mieScaleHeight, kMinHeight, kMaxHeight, "%.0f", kLog);
-    changed |= ImGui::SliderFloat("Mie anisotropy g", &a.mieAnisotropy, -kMaxAnisotropy, kMaxAnisotropy,
-                                  "%.3f", kClamp);
-    tooltip("Cornette-Shanks g: > 0 scatters forward (bright toward the sun)");
     if (ImGui::SliderFloat("ozone scale", &ozoneScale, 0.0f, kMaxScale, "%.3g", kLog)) {
         ozoneScale = clampOrLow(ozoneScale, 0.0f, kMaxScale);
         a.ozoneAbsorption = scaled(file.ozoneAbsorption, ozoneScale);
         changed = true;
     }
     tooltip("ozone's absorption, times the scene file's: the blue of the sky at twilight");
-    changed |= ImGui::ColorEdit3("ground albedo", &a.groundAlbedo.x, ImGuiColorEditFlags_Float);
-    tooltip("the planet's ground as the atmosphere's multiple scattering sees it (not the scene's objects)");
-    int model = int(a.multipleScattering);
-    if (ImGui::Combo("multiple scattering", &model, "off\0hillaire\0orders\0")) {
-        a.multipleScattering = postfx::AtmosphereMultipleScattering(model);
-        changed = true;
-    }
-    tooltip(
-        "orders: every order of scattering, within 2% of a path tracer (its LUT rebuilt when the media "
-        "change); hillaire: the paper's isotropic approximation, too dark at the horizon");
-    changed |= ImGui::Checkbox("ambient from sky", &a.ambientFromSky);
-    tooltip(
-        "the surfaces' ambient is the sky's irradiance / pi instead of the scene's (recomputed on the CPU, "
-        "tens of ms, when the sun or the media change)");
-    changed |=
-        ImGui::SliderFloat("sun radius [deg]", &a.sunAngularRadiusDeg, 0.0f, kMaxSunRadiusDeg, "%.3f", kLog);
-    tooltip("the sun disk's angular radius (Earth: 0.2678); 0: no disk");
+    const std::span<const postfx::SettingField> table = postfx::atmosphereSettingsTable();
+    // The direction counts must be perfect squares, which a slider would mostly miss: the scene file sets
+    // them.
+    changed |= settingControls(table, &a, "",
+                               {"enabled", "rayleighScattering", "ozoneAbsorption",
+                                "multipleScatteringDirections", "scatteringOrdersDirections"});
     return changed;
-}
-
-void sanitize(postfx::AtmosphereSettings& a) {
-    a.rayleighScaleHeight = clampOrLow(a.rayleighScaleHeight, kMinHeight, kMaxHeight);
-    a.mieScaleHeight = clampOrLow(a.mieScaleHeight, kMinHeight, kMaxHeight);
-    a.mieScattering = clampOrLow(a.mieScattering, 0.0f, kMaxMieCoefficient);
-    a.mieAbsorption = clampOrLow(a.mieAbsorption, 0.0f, kMaxMieCoefficient);
-    a.mieAnisotropy = clampOrLow(a.mieAnisotropy, -kMaxAnisotropy, kMaxAnisotropy);
-    a.sunAngularRadiusDeg = clampOrLow(a.sunAngularRadiusDeg, 0.0f, kMaxSunRadiusDeg);
-    for (int c = 0; c < 3; ++c)
-        a.groundAlbedo[c] = clampOrLow(a.groundAlbedo[c], 0.0f, 1.0f);
 }
 
 }  // namespace
@@ -113,7 +79,7 @@ bool AtmosphereControls::build(Scene& scene) {
     tooltip("the atmosphere as the scene file has it (the sun and camera stay)");
 
     postfx::AtmosphereSettings edited = scene.atmosphere;
-    bool edit = ImGui::Checkbox("enabled", &edited.enabled);
+    bool edit = settingControl(postfx::atmosphereSettingsTable(), "enabled", &edited);
     tooltip("sun.illuminance is then the sun's outside the atmosphere; the sky is drawn by postfx");
 
     // The sun, from the scene's direction every frame (the Fog panel's "Sun" edits it too).
@@ -150,7 +116,7 @@ bool AtmosphereControls::build(Scene& scene) {
     ImGui::TextUnformatted("media");
     edit |= buildMedia(edited, fileAtmosphere_, rayleighScale_, ozoneScale_);
     if (edit) {
-        sanitize(edited);
+        sanitizeSettings(postfx::atmosphereSettingsTable(), &edited);
         // sanitize makes every edited field valid; should a check ever disagree, keep the last settings.
         if (postfx::validateAtmosphereSettings(edited).ok()) {
             scene.atmosphere = edited;

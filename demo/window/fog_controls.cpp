@@ -1,6 +1,9 @@
 #include "window/fog_controls.h"
 
 #include "window/medium_controls.h"
+#include "window/settings_controls.h"
+
+#include <postfx/settings_table.h>
 
 #include <imgui.h>
 
@@ -13,7 +16,6 @@ namespace demo::window {
 namespace {
 
 using widgets::clampOrLow;
-using widgets::sliderUint;
 using widgets::tooltip;
 
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
@@ -22,7 +24,9 @@ constexpr ImGuiSliderFlags kLog = ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlag
 // The choices of the shadow kernel combo (all values postfx accepts).
 constexpr std::array<uint32_t, 4> kShadowKernels{1, 3, 5, 7};
 constexpr std::array<const char*, 4> kShadowKernelNames{"1 x 1", "3 x 3", "5 x 5", "7 x 7"};
-constexpr int kQualityCount = int(postfx::FogQuality::Auto) + 1;  // Custom .. Auto
+// The fields a quality preset sets (besides shadowKernel, a combo of the odd sizes postfx accepts): shown
+// with the preset's values, greyed, unless the quality is Custom.
+constexpr const char* kPresetKnobs[] = {"steps", "resolutionScale", "jitter"};
 
 // Limits postfx puts on the sun (SunInput): each illuminance channel in [0, 1e7] lux.
 constexpr float kMaxIlluminance = 1e7f;
@@ -52,45 +56,37 @@ bool combo(const char* label, uint32_t& value, const std::array<uint32_t, N>& ch
 // cannot be edited (Auto: the custom values, greyed; the overlay shows the preset Auto picked).
 bool buildQuality(postfx::FogSettings& f) {
     bool changed = false;
-    std::array<const char*, kQualityCount> names;  // the scene files' names, in enum order
-    for (int i = 0; i < kQualityCount; ++i)
-        names[size_t(i)] = fogQualityName(postfx::FogQuality(i));
-    int quality = int(f.quality);
-    if (ImGui::Combo("quality", &quality, names.data(), kQualityCount)) {
-        f.quality = postfx::FogQuality(std::clamp(quality, 0, kQualityCount - 1));
-        changed = true;
-    }
-    tooltip(
-        "a preset sets steps, resolution scale, jitter and shadow kernel; auto measures the presets on "
-        "this GPU and uses the most accurate within the budget");
-    if (f.quality == postfx::FogQuality::Auto) {
-        changed |= ImGui::SliderFloat("auto budget [ms]", &f.autoBudgetMs, 0.05f, 50.0f, "%.3g", kLog);
-        tooltip("GPU time the fog's passes may take per frame");
-    }
+    const std::span<const postfx::SettingField> fogTable = postfx::fogSettingsTable();
+    changed |= settingControl(fogTable, "quality", &f);
+    if (f.quality == postfx::FogQuality::Auto) changed |= settingControl(fogTable, "autoBudgetMs", &f);
     const bool custom = f.quality == postfx::FogQuality::Custom;
     postfx::FogSettings preset = postfx::applyFogQuality(f, f.quality);
     postfx::FogSettings& k = custom ? f : preset;  // what the knobs show and edit
     if (!custom) ImGui::BeginDisabled();
-    bool knobs = sliderUint("steps", k.steps, 1, 256);
-    tooltip("march steps per pixel");
-    knobs |= ImGui::SliderFloat("resolution scale", &k.resolutionScale, 0.25f, 1.0f, "%.2f", kClamp);
-    tooltip("march at this fraction of width and height, then upsample depth-aware");
-    knobs |= ImGui::Checkbox("jitter", &k.jitter);
-    tooltip("offset each pixel's march start per frame: banding becomes noise that accumulation removes");
+    const std::span<const postfx::SettingField> table = postfx::fogSettingsTable();
+    bool knobs = false;
+    for (const char* member : kPresetKnobs)
+        knobs |= settingControl(table, member, &k);
     knobs |= combo("shadow kernel [texels]", k.shadowKernel, kShadowKernels, kShadowKernelNames);
     if (!custom) ImGui::EndDisabled();
     return changed || (custom && knobs);
 }
 
 bool buildFog(postfx::FogSettings& f) {
-    bool changed = false;
-    changed |= ImGui::Checkbox("enabled", &f.enabled);
+    const std::span<const postfx::SettingField> table = postfx::fogSettingsTable();
+    bool changed = settingControl(table, "enabled", &f);
     tooltip("the ray-marched fog; turning it on turns the froxel fog off (postfx draws one of them)");
     changed |= buildMediumControls(f);  // the medium, its noise included
     changed |= buildQuality(f);
-    changed |= ImGui::SliderFloat("transmittance cutoff", &f.transmittanceCutoff, 0.0f, 0.1f, "%.4f", kClamp);
-    tooltip("stop marching below this transmittance; 0: never early");
-    changed |= buildTemporalControls(f.temporal);
+    // The fog's other fields: generic controls.
+    changed |= settingControls(
+        table, &f, "",
+        {"enabled", "quality", "autoBudgetMs", "shadowKernel", "steps", "resolutionScale", "jitter"},
+        postfx::fogMediumSettingsTable());
+    if (ImGui::TreeNode("Temporal")) {
+        changed |= settingControls(table, &f, "temporal");
+        ImGui::TreePop();
+    }
     return changed;
 }
 
@@ -132,14 +128,8 @@ glm::vec3 FogControls::sunIlluminance() const {
 }
 
 void FogControls::sanitize(postfx::FogSettings& f) {
-    sanitizeMedium(f);
-    sanitizeTemporal(f.temporal);
-    f.steps = std::clamp<uint32_t>(f.steps, 1, 4096);
-    if (int(f.quality) < 0 || int(f.quality) >= kQualityCount) f.quality = postfx::FogQuality::Custom;
-    if (!(f.autoBudgetMs > 0.0f)) f.autoBudgetMs = 0.05f;  // also NaN
-    f.autoBudgetMs = std::min(f.autoBudgetMs, 1e6f);
-    f.resolutionScale = clampOrLow(f.resolutionScale, 0.25f, 1.0f);
-    f.transmittanceCutoff = clampOrLow(f.transmittanceCutoff, 0.0f, 0.999f);
+    sanitizeSettings(postfx::fogSettingsTable(), &f);
+    sanitizeMedium(f);                                                 // the texture size
     f.shadowKernel = std::clamp<uint32_t>(f.shadowKernel | 1u, 1, 7);  // odd: even sizes round up
 }
 

@@ -1,7 +1,7 @@
 // The ImGui controls both fog panels share (the "Fog" and "Froxel fog" sections of the windowed demo):
-// the participating medium (postfx::FogMedium: density, albedo, anisotropy, height falloff, base height,
-// max distance, self shadow, analytic tail and its "Noise" subsection), the temporal accumulation
-// (postfx::TemporalSettings), and the small widgets they use.
+// the participating medium (postfx::FogMedium, from its settings table: density, albedo, anisotropy,
+// height falloff, base height, max distance, self shadow, analytic tail and its "Noise" subsection), and
+// the small widgets the panels use.
 #pragma once
 
 #include <postfx/fog.h>
@@ -16,21 +16,10 @@ namespace demo::window {
 // changed this frame; the values may then be out of range until sanitizeMedium.
 bool buildMediumControls(postfx::FogMedium& medium);
 
-// Brings every medium field into the range postfx accepts (common::validateMedium, the noise's included
-// whether or not it is on): NaN or out-of-range values are clamped (NaN to the lower end, max distance and
-// tiling to > 0, the texture size to the nearest power of two in [16, 256]). Valid values are left
-// exactly as they are.
+// Brings every medium field into the range postfx accepts (the table's ranges, the noise's included
+// whether or not it is on: sanitizeSettings) and the texture size to the nearest power of two in
+// [16, 256]. Valid values are left exactly as they are.
 void sanitizeMedium(postfx::FogMedium& medium);
-
-// The temporal accumulation's widgets of either fog panel (postfx::TemporalSettings): a "temporal"
-// checkbox and a "blend weight" slider. Returns true if anything changed this frame; the weight may then be
-// out of range until sanitizeTemporal.
-bool buildTemporalControls(postfx::TemporalSettings& temporal);
-
-// Brings the blend weight into (0, 1], postfx's range (validateTemporal): NaN and values <= 0 become
-// kMinBlendWeight, values above 1 become 1. Valid values are left exactly as they are.
-void sanitizeTemporal(postfx::TemporalSettings& temporal);
-inline constexpr float kMinBlendWeight = 0.01f;  // the slider's low end
 
 namespace widgets {
 // v clamped to [lo, hi]; NaN becomes lo.

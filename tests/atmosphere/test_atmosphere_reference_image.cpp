@@ -196,7 +196,7 @@ TEST(AtmosphereReferenceImage, BadInputsNameTheField) {
     EXPECT_NE(message(a).find("AtmosphereInputs.depth"), std::string::npos);
     Frame b;
     b.in.settings.topRadius = 1.0f;
-    EXPECT_NE(message(b).find("atmosphere.top_radius"), std::string::npos);
+    EXPECT_NE(message(b).find("FrameInfo.atmosphere.topRadius"), std::string::npos);
     Frame c;
     c.in.stepsPerPixel = 0;
     EXPECT_NE(message(c).find("AtmosphereInputs.stepsPerPixel"), std::string::npos);
@@ -274,7 +274,7 @@ TEST(AtmosphereFogReference, SunAtNoonIsAttenuatedByTheZenithTransmittance) {
     in.atmosphere.mieAnisotropy = 1.0f;
     std::vector<float> bad;
     const Status s = reference::renderFog(in, bad);
-    EXPECT_NE(s.message.find("atmosphere.mie_anisotropy"), std::string::npos) << s.message;
+    EXPECT_NE(s.message.find("FrameInfo.atmosphere.mieAnisotropy"), std::string::npos) << s.message;
 }
 
 }  // namespace

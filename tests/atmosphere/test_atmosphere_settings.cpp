@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <string>
@@ -43,55 +44,61 @@ TEST(AtmosphereSettings, BadValuesNameTheirKey) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
     const std::vector<BadCase> cases = {
-        {"atmosphere.ground_radius", [](AtmosphereSettings& s) { s.groundRadius = 0.0f; }},
-        {"atmosphere.ground_radius", [&](AtmosphereSettings& s) { s.groundRadius = nan; }},
-        {"atmosphere.top_radius", [](AtmosphereSettings& s) { s.topRadius = s.groundRadius; }},
-        {"atmosphere.top_radius", [](AtmosphereSettings& s) { s.topRadius = 1e9f; }},
-        {"atmosphere.rayleigh_scattering", [](AtmosphereSettings& s) { s.rayleighScattering.y = -1e-6f; }},
-        {"atmosphere.rayleigh_scattering", [&](AtmosphereSettings& s) { s.rayleighScattering.z = inf; }},
-        {"atmosphere.rayleigh_scale_height", [](AtmosphereSettings& s) { s.rayleighScaleHeight = 0.0f; }},
-        {"atmosphere.mie_scattering", [&](AtmosphereSettings& s) { s.mieScattering = nan; }},
-        {"atmosphere.mie_absorption", [](AtmosphereSettings& s) { s.mieAbsorption = -1.0f; }},
-        {"atmosphere.mie_scale_height", [](AtmosphereSettings& s) { s.mieScaleHeight = -5.0f; }},
-        {"atmosphere.mie_anisotropy", [](AtmosphereSettings& s) { s.mieAnisotropy = 1.0f; }},
-        {"atmosphere.mie_anisotropy", [](AtmosphereSettings& s) { s.mieAnisotropy = -1.0f; }},
-        {"atmosphere.mie_anisotropy", [&](AtmosphereSettings& s) { s.mieAnisotropy = nan; }},
-        {"atmosphere.ozone_absorption", [](AtmosphereSettings& s) { s.ozoneAbsorption.x = -1e-9f; }},
-        {"atmosphere.ozone_center_height", [&](AtmosphereSettings& s) { s.ozoneCenterHeight = inf; }},
-        {"atmosphere.ozone_half_width", [](AtmosphereSettings& s) { s.ozoneHalfWidth = 0.0f; }},
-        {"atmosphere.ground_albedo", [](AtmosphereSettings& s) { s.groundAlbedo.y = 1.5f; }},
-        {"atmosphere.sun_angular_radius_deg", [](AtmosphereSettings& s) { s.sunAngularRadiusDeg = 90.0f; }},
-        {"atmosphere.transmittance_lut_size", [](AtmosphereSettings& s) { s.transmittanceLutSize.y = 2; }},
-        {"atmosphere.transmittance_steps", [](AtmosphereSettings& s) { s.transmittanceSteps = 0; }},
-        {"atmosphere.multiple_scattering_lut_size",
+        {"FrameInfo.atmosphere.groundRadius", [](AtmosphereSettings& s) { s.groundRadius = 0.0f; }},
+        {"FrameInfo.atmosphere.groundRadius", [&](AtmosphereSettings& s) { s.groundRadius = nan; }},
+        {"FrameInfo.atmosphere.topRadius", [](AtmosphereSettings& s) { s.topRadius = s.groundRadius; }},
+        {"FrameInfo.atmosphere.topRadius", [](AtmosphereSettings& s) { s.topRadius = 1e9f; }},
+        {"FrameInfo.atmosphere.rayleighScattering",
+         [](AtmosphereSettings& s) { s.rayleighScattering.y = -1e-6f; }},
+        {"FrameInfo.atmosphere.rayleighScattering",
+         [&](AtmosphereSettings& s) { s.rayleighScattering.z = inf; }},
+        {"FrameInfo.atmosphere.rayleighScaleHeight",
+         [](AtmosphereSettings& s) { s.rayleighScaleHeight = 0.0f; }},
+        {"FrameInfo.atmosphere.mieScattering", [&](AtmosphereSettings& s) { s.mieScattering = nan; }},
+        {"FrameInfo.atmosphere.mieAbsorption", [](AtmosphereSettings& s) { s.mieAbsorption = -1.0f; }},
+        {"FrameInfo.atmosphere.mieScaleHeight", [](AtmosphereSettings& s) { s.mieScaleHeight = -5.0f; }},
+        {"FrameInfo.atmosphere.mieAnisotropy", [](AtmosphereSettings& s) { s.mieAnisotropy = 1.0f; }},
+        {"FrameInfo.atmosphere.mieAnisotropy", [](AtmosphereSettings& s) { s.mieAnisotropy = -1.0f; }},
+        {"FrameInfo.atmosphere.mieAnisotropy", [&](AtmosphereSettings& s) { s.mieAnisotropy = nan; }},
+        {"FrameInfo.atmosphere.ozoneAbsorption", [](AtmosphereSettings& s) { s.ozoneAbsorption.x = -1e-9f; }},
+        {"FrameInfo.atmosphere.ozoneCenterHeight", [&](AtmosphereSettings& s) { s.ozoneCenterHeight = inf; }},
+        {"FrameInfo.atmosphere.ozoneHalfWidth", [](AtmosphereSettings& s) { s.ozoneHalfWidth = 0.0f; }},
+        {"FrameInfo.atmosphere.groundAlbedo", [](AtmosphereSettings& s) { s.groundAlbedo.y = 1.5f; }},
+        {"FrameInfo.atmosphere.sunAngularRadiusDeg",
+         [](AtmosphereSettings& s) { s.sunAngularRadiusDeg = 90.0f; }},
+        {"FrameInfo.atmosphere.transmittanceLutSize",
+         [](AtmosphereSettings& s) { s.transmittanceLutSize.y = 2; }},
+        {"FrameInfo.atmosphere.transmittanceSteps", [](AtmosphereSettings& s) { s.transmittanceSteps = 0; }},
+        {"FrameInfo.atmosphere.multipleScatteringLutSize",
          [](AtmosphereSettings& s) { s.multipleScatteringLutSize.x = 2000; }},
-        {"atmosphere.multiple_scattering_directions",
+        {"FrameInfo.atmosphere.multipleScatteringDirections",
          [](AtmosphereSettings& s) { s.multipleScatteringDirections = 60; }},
-        {"atmosphere.multiple_scattering_steps",
+        {"FrameInfo.atmosphere.multipleScatteringSteps",
          [](AtmosphereSettings& s) { s.multipleScatteringSteps = 5000; }},
-        {"atmosphere.multiple_scattering",
+        {"FrameInfo.atmosphere.multipleScattering",
          [](AtmosphereSettings& s) { s.multipleScattering = postfx::AtmosphereMultipleScattering(7); }},
-        {"atmosphere.scattering_orders_lut_size",
+        {"FrameInfo.atmosphere.scatteringOrdersLutSize",
          [](AtmosphereSettings& s) { s.scatteringOrdersLutSize.x = 65; }},
-        {"atmosphere.scattering_orders_lut_size",
+        {"FrameInfo.atmosphere.scatteringOrdersLutSize",
          [](AtmosphereSettings& s) { s.scatteringOrdersLutSize.y = 129; }},
-        {"atmosphere.scattering_orders_lut_size",
+        {"FrameInfo.atmosphere.scatteringOrdersLutSize",
          [](AtmosphereSettings& s) { s.scatteringOrdersLutSize.z = 3; }},
-        {"atmosphere.scattering_orders_azimuth_size",
+        {"FrameInfo.atmosphere.scatteringOrdersAzimuthSize",
          [](AtmosphereSettings& s) { s.scatteringOrdersAzimuthSize = 17; }},
-        {"atmosphere.scattering_orders_directions",
+        {"FrameInfo.atmosphere.scatteringOrdersDirections",
          [](AtmosphereSettings& s) { s.scatteringOrdersDirections = 100 + 1; }},
-        {"atmosphere.scattering_orders_directions",
+        {"FrameInfo.atmosphere.scatteringOrdersDirections",
          [](AtmosphereSettings& s) { s.scatteringOrdersDirections = 625; }},
-        {"atmosphere.scattering_orders_steps", [](AtmosphereSettings& s) { s.scatteringOrdersSteps = 0; }},
-        {"atmosphere.scattering_orders", [](AtmosphereSettings& s) { s.scatteringOrders = 33; }},
-        {"atmosphere.sky_view_lut_size", [](AtmosphereSettings& s) { s.skyViewLutSize.x = 0; }},
-        {"atmosphere.sky_view_steps", [](AtmosphereSettings& s) { s.skyViewSteps = 0; }},
-        {"atmosphere.aerial_perspective_lut_size",
+        {"FrameInfo.atmosphere.scatteringOrdersSteps",
+         [](AtmosphereSettings& s) { s.scatteringOrdersSteps = 0; }},
+        {"FrameInfo.atmosphere.scatteringOrders", [](AtmosphereSettings& s) { s.scatteringOrders = 33; }},
+        {"FrameInfo.atmosphere.skyViewLutSize", [](AtmosphereSettings& s) { s.skyViewLutSize.x = 0; }},
+        {"FrameInfo.atmosphere.skyViewSteps", [](AtmosphereSettings& s) { s.skyViewSteps = 0; }},
+        {"FrameInfo.atmosphere.aerialPerspectiveLutSize",
          [](AtmosphereSettings& s) { s.aerialPerspectiveLutSize.z = 512; }},
-        {"atmosphere.aerial_perspective_distance",
+        {"FrameInfo.atmosphere.aerialPerspectiveDistance",
          [](AtmosphereSettings& s) { s.aerialPerspectiveDistance = 0.0f; }},
-        {"atmosphere.aerial_perspective_steps_per_slice",
+        {"FrameInfo.atmosphere.aerialPerspectiveStepsPerSlice",
          [](AtmosphereSettings& s) { s.aerialPerspectiveStepsPerSlice = 0; }},
     };
     for (const BadCase& c : cases) {
@@ -99,7 +106,9 @@ TEST(AtmosphereSettings, BadValuesNameTheirKey) {
         c.mutate(s);
         const postfx::Status st = postfx::validateAtmosphereSettings(s);
         EXPECT_EQ(st.code, Result::InvalidArgument) << c.key;
-        EXPECT_EQ(st.message.rfind(std::string(c.key) + ":", 0), 0u) << c.key << " -> " << st.message;
+        // The field, a vector's component ("[1]") at most, then the reason.
+        EXPECT_EQ(st.message.rfind(c.key, 0), 0u) << c.key << " -> " << st.message;
+        EXPECT_NE(std::string(":[").find(st.message[std::strlen(c.key)]), std::string::npos) << st.message;
     }
 }
 
@@ -107,7 +116,8 @@ TEST(AtmosphereSettings, TopRadiusMessageSaysWhy) {
     AtmosphereSettings s;
     s.topRadius = 6000e3f;
     const postfx::Status st = postfx::validateAtmosphereSettings(s);
-    EXPECT_EQ(st.message, "atmosphere.top_radius: 6e+06 must be greater than ground_radius (6.36e+06)");
+    EXPECT_EQ(st.message,
+              "FrameInfo.atmosphere.topRadius: 6e+06 must be greater than groundRadius (6.36e+06)");
 }
 
 }  // namespace

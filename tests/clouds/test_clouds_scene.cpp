@@ -66,7 +66,7 @@ TEST(CloudsScene, EveryKeyRoundTrips) {
 
 TEST(CloudsScene, BadValuesNameTheirKeyPath) {
     const std::pair<const char*, const char*> cases[] = {
-        {R"({"top_height": 1000})", "effects.clouds.top_height: 1000 must be greater than bottom_height"},
+        {R"({"top_height": 1000})", "effects.clouds.top_height: 1000 must be greater than bottomHeight"},
         {R"({"shape": "sphere"})", "effects.clouds.shape: expected \"layer\" or \"box\""},
         {R"({"noise": {"base_size": 100}})", "effects.clouds.noise.base_size: 100 is not a power of two"},
         {R"({"multiple_scattering": {"contribution": 0.9}})",

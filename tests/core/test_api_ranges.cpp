@@ -275,61 +275,71 @@ void frameRows(std::vector<Row>& bad, std::vector<Row>& good) {
 void fogRows(std::vector<Row>& bad, std::vector<Row>& good) {
     auto fogRange = [&](const std::string& key, FogField at, float lo, float hi, bool openLo = false,
                         bool openHi = false) { addRange<float>(bad, good, key, at, lo, hi, openLo, openHi); };
-    addBad(bad, "fog.quality", "cast 6", [](FrameInfo& f) { f.fog.quality = postfx::FogQuality(6); });
-    addBad(bad, "fog.quality", "cast 1000", [](FrameInfo& f) { f.fog.quality = postfx::FogQuality(1000); });
+    addBad(bad, "FrameInfo.fog.quality", "cast 6",
+           [](FrameInfo& f) { f.fog.quality = postfx::FogQuality(6); });
+    addBad(bad, "FrameInfo.fog.quality", "cast 1000",
+           [](FrameInfo& f) { f.fog.quality = postfx::FogQuality(1000); });
     fogRange(
-        "fog.auto_budget_ms", [](FrameInfo& f) -> float& { return f.fog.autoBudgetMs; }, 0.0f,
+        "FrameInfo.fog.autoBudgetMs", [](FrameInfo& f) -> float& { return f.fog.autoBudgetMs; }, 0.0f,
         std::numeric_limits<float>::max(), true);
     fogRange(
-        "fog.density", [](FrameInfo& f) -> float& { return f.fog.density; }, 0.0f, 1e6f);
+        "FrameInfo.fog.density", [](FrameInfo& f) -> float& { return f.fog.density; }, 0.0f, 1e6f);
     for (int c = 0; c < 3; ++c)
         fogRange(
-            "fog.albedo", [c](FrameInfo& f) -> float& { return f.fog.albedo[c]; }, 0.0f, 1.0f);
+            "FrameInfo.fog.albedo", [c](FrameInfo& f) -> float& { return f.fog.albedo[c]; }, 0.0f, 1.0f);
     fogRange(
-        "fog.anisotropy", [](FrameInfo& f) -> float& { return f.fog.anisotropy; }, -1.0f, 1.0f);
+        "FrameInfo.fog.anisotropy", [](FrameInfo& f) -> float& { return f.fog.anisotropy; }, -1.0f, 1.0f);
     fogRange(
-        "fog.height_falloff", [](FrameInfo& f) -> float& { return f.fog.heightFalloff; }, 0.0f, 10.0f);
-    addBad(bad, "fog.base_height", "NaN", [](FrameInfo& f) { f.fog.baseHeight = kNan; });
-    addBad(bad, "fog.base_height", "Inf", [](FrameInfo& f) { f.fog.baseHeight = -kInf; });
+        "FrameInfo.fog.heightFalloff", [](FrameInfo& f) -> float& { return f.fog.heightFalloff; }, 0.0f,
+        10.0f);
+    addBad(bad, "FrameInfo.fog.baseHeight", "NaN", [](FrameInfo& f) { f.fog.baseHeight = kNan; });
+    addBad(bad, "FrameInfo.fog.baseHeight", "Inf", [](FrameInfo& f) { f.fog.baseHeight = -kInf; });
     fogRange(
-        "fog.max_distance", [](FrameInfo& f) -> float& { return f.fog.maxDistance; }, 0.0f, 1e7f, true);
-    addBad(bad, "fog.steps", "0", [](FrameInfo& f) { f.fog.steps = 0; });
-    addBad(bad, "fog.steps", "4097", [](FrameInfo& f) { f.fog.steps = 4097; });
-    good.push_back({"fog.steps", "1", [](FrameInfo& f) { f.fog.steps = 1; }});
-    good.push_back({"fog.steps", "4096", [](FrameInfo& f) { f.fog.steps = 4096; }});
+        "FrameInfo.fog.maxDistance", [](FrameInfo& f) -> float& { return f.fog.maxDistance; }, 0.0f, 1e7f,
+        true);
+    addBad(bad, "FrameInfo.fog.steps", "0", [](FrameInfo& f) { f.fog.steps = 0; });
+    addBad(bad, "FrameInfo.fog.steps", "4097", [](FrameInfo& f) { f.fog.steps = 4097; });
+    good.push_back({"FrameInfo.fog.steps", "1", [](FrameInfo& f) { f.fog.steps = 1; }});
+    good.push_back({"FrameInfo.fog.steps", "4096", [](FrameInfo& f) { f.fog.steps = 4096; }});
     fogRange(
-        "fog.resolution_scale", [](FrameInfo& f) -> float& { return f.fog.resolutionScale; }, 0.25f, 1.0f);
+        "FrameInfo.fog.resolutionScale", [](FrameInfo& f) -> float& { return f.fog.resolutionScale; }, 0.25f,
+        1.0f);
     fogRange(
-        "fog.transmittance_cutoff", [](FrameInfo& f) -> float& { return f.fog.transmittanceCutoff; }, 0.0f,
-        1.0f, false, true);
+        "FrameInfo.fog.transmittanceCutoff", [](FrameInfo& f) -> float& { return f.fog.transmittanceCutoff; },
+        0.0f, 1.0f, false, true);
     for (uint32_t k : {0u, 2u, 8u, 9u})
-        addBad(bad, "fog.shadow_kernel", std::to_string(k), [k](FrameInfo& f) { f.fog.shadowKernel = k; });
-    good.push_back({"fog.shadow_kernel", "7", [](FrameInfo& f) { f.fog.shadowKernel = 7; }});
+        addBad(bad, "FrameInfo.fog.shadowKernel", std::to_string(k),
+               [k](FrameInfo& f) { f.fog.shadowKernel = k; });
+    good.push_back({"FrameInfo.fog.shadowKernel", "7", [](FrameInfo& f) { f.fog.shadowKernel = 7; }});
     for (uint32_t size : {8u, 100u, 512u})
-        addBad(bad, "fog.noise.texture_size", std::to_string(size), [size](FrameInfo& f) {
+        addBad(bad, "FrameInfo.fog.noise.textureSize", std::to_string(size), [size](FrameInfo& f) {
             f.fog.noise.hostTexture = VK_NULL_HANDLE;
             f.fog.noise.textureSize = size;
         });
     for (uint32_t size : {16u, 256u})
-        good.push_back({"fog.noise.texture_size", std::to_string(size), [size](FrameInfo& f) {
+        good.push_back({"FrameInfo.fog.noise.textureSize", std::to_string(size), [size](FrameInfo& f) {
                             f.fog.noise.hostTexture = VK_NULL_HANDLE;
                             f.fog.noise.textureSize = size;
                         }});
-    addBad(bad, "fog.noise.host_texture_layout", "UNDEFINED",
+    addBad(bad, "FrameInfo.fog.noise.hostTextureLayout", "UNDEFINED",
            [](FrameInfo& f) { f.fog.noise.hostTextureLayout = VK_IMAGE_LAYOUT_UNDEFINED; });
-    addBad(bad, "fog.noise.host_texture_layout", "cast 12345",
+    addBad(bad, "FrameInfo.fog.noise.hostTextureLayout", "cast 12345",
            [](FrameInfo& f) { f.fog.noise.hostTextureLayout = VkImageLayout(12345); });
-    good.push_back({"fog.noise.host_texture_layout", "GENERAL",
+    good.push_back({"FrameInfo.fog.noise.hostTextureLayout", "GENERAL",
                     [](FrameInfo& f) { f.fog.noise.hostTextureLayout = VK_IMAGE_LAYOUT_GENERAL; }});
     fogRange(
-        "fog.noise.tiling", [](FrameInfo& f) -> float& { return f.fog.noise.tiling; }, 0.0f, 1000.0f, true);
+        "FrameInfo.fog.noise.tiling", [](FrameInfo& f) -> float& { return f.fog.noise.tiling; }, 0.0f,
+        1000.0f, true);
     fogRange(
-        "fog.noise.threshold", [](FrameInfo& f) -> float& { return f.fog.noise.threshold; }, 0.0f, 1.0f);
+        "FrameInfo.fog.noise.threshold", [](FrameInfo& f) -> float& { return f.fog.noise.threshold; }, 0.0f,
+        1.0f);
     fogRange(
-        "fog.noise.multiplier", [](FrameInfo& f) -> float& { return f.fog.noise.multiplier; }, 0.0f, 1e3f);
+        "FrameInfo.fog.noise.multiplier", [](FrameInfo& f) -> float& { return f.fog.noise.multiplier; }, 0.0f,
+        1e3f);
     for (int c = 0; c < 3; ++c)
         fogRange(
-            "fog.noise.wind", [c](FrameInfo& f) -> float& { return f.fog.noise.wind[c]; }, -1e3f, 1e3f);
+            "FrameInfo.fog.noise.wind", [c](FrameInfo& f) -> float& { return f.fog.noise.wind[c]; }, -1e3f,
+            1e3f);
 }
 
 // The froxel fog's fields (FroxelFogSettings, its volumes): each row runs on the valid frame with the
@@ -353,51 +363,58 @@ void froxelRows(std::vector<Row>& bad, std::vector<Row>& good) {
     auto range = [&](const std::string& key, std::function<float&(FrameInfo&)> at, float lo, float hi,
                      bool openLo = false) { addRange<float>(b, g, key, at, lo, hi, openLo); };
     range(
-        "froxel_fog.density", [](FrameInfo& f) -> float& { return f.froxelFog.density; }, 0.0f, 1e6f);
+        "FrameInfo.froxelFog.density", [](FrameInfo& f) -> float& { return f.froxelFog.density; }, 0.0f,
+        1e6f);
     range(
-        "froxel_fog.max_distance", [](FrameInfo& f) -> float& { return f.froxelFog.maxDistance; }, 0.0f, 1e7f,
-        true);
+        "FrameInfo.froxelFog.maxDistance", [](FrameInfo& f) -> float& { return f.froxelFog.maxDistance; },
+        0.0f, 1e7f, true);
     range(
-        "froxel_fog.depth_exponent", [](FrameInfo& f) -> float& { return f.froxelFog.depthExponent; }, 1.0f,
-        8.0f);
+        "FrameInfo.froxelFog.depthExponent", [](FrameInfo& f) -> float& { return f.froxelFog.depthExponent; },
+        1.0f, 8.0f);
     for (int a = 0; a < 3; ++a) {
-        const std::string key = "froxel_fog.grid[" + std::to_string(a) + "]";
+        const std::string key = "FrameInfo.froxelFog.grid[" + std::to_string(a) + "]";
         addBad(b, key, "0", [a](FrameInfo& f) { f.froxelFog.grid[a] = 0; });
         addBad(b, key, "513", [a](FrameInfo& f) { f.froxelFog.grid[a] = 513; });
         g.push_back({key, "1", [a](FrameInfo& f) { f.froxelFog.grid[a] = 1; }});
         g.push_back({key, "512", [a](FrameInfo& f) { f.froxelFog.grid[a] = 512; }});
     }
-    addBad(b, "froxel_fog.tile_size_px", "4097", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4097; });
-    g.push_back({"froxel_fog.tile_size_px", "4096", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4096; }});
-    addBad(b, "froxel_fog.light_list_min_lights", "0",
+    addBad(b, "FrameInfo.froxelFog.tileSizePx", "4097", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4097; });
+    g.push_back(
+        {"FrameInfo.froxelFog.tileSizePx", "4096", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4096; }});
+    addBad(b, "FrameInfo.froxelFog.lightListMinLights", "0",
            [](FrameInfo& f) { f.froxelFog.lightListMinLights = 0; });
-    addBad(b, "froxel_fog.light_list_min_lights", "258",
+    addBad(b, "FrameInfo.froxelFog.lightListMinLights", "258",
            [](FrameInfo& f) { f.froxelFog.lightListMinLights = 258; });
-    g.push_back({"froxel_fog.light_list_min_lights", "257",
+    g.push_back({"FrameInfo.froxelFog.lightListMinLights", "257",
                  [](FrameInfo& f) { f.froxelFog.lightListMinLights = 257; }});
-    addBad(b, "froxel_fog.depth_distribution", "cast 2",
+    addBad(b, "FrameInfo.froxelFog.depthDistribution", "cast 2",
            [](FrameInfo& f) { f.froxelFog.depthDistribution = postfx::FroxelDepthDistribution(2); });
-    addBad(b, "froxel_fog.volumes", "65", [](FrameInfo& f) { f.froxelFog.volumeCount = 65; });
-    g.push_back({"froxel_fog.volumes", "64", [](FrameInfo& f) { f.froxelFog.volumeCount = 64; }});
-    addBad(b, "froxel_fog.volumes", "null", [](FrameInfo& f) { f.froxelFog.volumes = nullptr; });
-    addBad(b, "froxel_fog.volumes[1].shape", "cast 2",
+    addBad(b, "FrameInfo.froxelFog.volumeCount", "65", [](FrameInfo& f) { f.froxelFog.volumeCount = 65; });
+    g.push_back(
+        {"FrameInfo.froxelFog.volumeCount", "64", [](FrameInfo& f) { f.froxelFog.volumeCount = 64; }});
+    addBad(b, "FrameInfo.froxelFog.volumes", "null", [](FrameInfo& f) { f.froxelFog.volumes = nullptr; });
+    addBad(b, "FrameInfo.froxelFog.volumes[1].shape", "cast 2",
            [](FrameInfo&) { gVolumes[1].shape = postfx::FogVolumeShape(2); });
     range(
-        "froxel_fog.volumes[0].density", [](FrameInfo&) -> float& { return gVolumes[0].density; }, 0.0f,
-        1e6f);
+        "FrameInfo.froxelFog.volumes[0].density", [](FrameInfo&) -> float& { return gVolumes[0].density; },
+        0.0f, 1e6f);
     range(
-        "froxel_fog.volumes[1].radius", [](FrameInfo&) -> float& { return gVolumes[1].radius; }, 0.0f, 1e7f);
-    range(
-        "froxel_fog.volumes[0].edge_falloff", [](FrameInfo&) -> float& { return gVolumes[0].edgeFalloff; },
+        "FrameInfo.froxelFog.volumes[1].radius", [](FrameInfo&) -> float& { return gVolumes[1].radius; },
         0.0f, 1e7f);
+    range(
+        "FrameInfo.froxelFog.volumes[0].edgeFalloff",
+        [](FrameInfo&) -> float& { return gVolumes[0].edgeFalloff; }, 0.0f, 1e7f);
     for (int c = 0; c < 3; ++c)
         range(
-            "froxel_fog.volumes[0].half_size", [c](FrameInfo&) -> float& { return gVolumes[0].halfSize[c]; },
-            0.0f, 1e7f);
-    addBad(b, "froxel_fog.volumes[1].center", "NaN", [](FrameInfo&) { gVolumes[1].center.y = kNan; });
-    addBad(b, "froxel_fog.volumes[1].center", "-1.1e9", [](FrameInfo&) { gVolumes[1].center.x = -1.1e9; });
+            "FrameInfo.froxelFog.volumes[0].halfSize",
+            [c](FrameInfo&) -> float& { return gVolumes[0].halfSize[c]; }, 0.0f, 1e7f);
+    addBad(b, "FrameInfo.froxelFog.volumes[1].center", "NaN",
+           [](FrameInfo&) { gVolumes[1].center.y = kNan; });
+    addBad(b, "FrameInfo.froxelFog.volumes[1].center", "-1.1e9",
+           [](FrameInfo&) { gVolumes[1].center.x = -1.1e9; });
     // Both fogs in one frame: the two keys named.
-    addBad(b, "fog.enabled and froxel_fog.enabled", "both", [](FrameInfo& f) { f.fog.enabled = true; });
+    addBad(b, "FrameInfo.fog.enabled and FrameInfo.froxelFog.enabled", "both",
+           [](FrameInfo& f) { f.fog.enabled = true; });
     for (Row& r : b)
         bad.push_back({r.field, r.value, froxel(r.set)});
     for (Row& r : g)

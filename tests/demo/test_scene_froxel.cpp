@@ -1,7 +1,7 @@
 // Scene files: effects.froxel_fog (demo/scene/froxel_fog_json.cpp, the medium keys it shares with
-// effects.fog in demo/scene/medium_json.cpp; docs/scene-format.md#effectsfroxel_fog) -- defaults, every
-// key, round trips, errors naming their key path, the fog volumes' limit, the two fogs never both on,
-// and the committed froxel scenes.
+// effects.fog, from the settings tables: demo/scene/settings_json.cpp;
+// docs/scene-format.md#effectsfroxel_fog) -- defaults, every key, round trips, errors naming their key path,
+// the fog volumes' limit, the two fogs never both on, and the committed froxel scenes.
 #include "scene/json_text.h"
 #include "scene/scene.h"
 
@@ -481,7 +481,7 @@ std::vector<FroxelRejection> froxelRejections() {
          "height_falloff, "
          "base_height, max_distance, self_shadow, analytic_tail, noise, grid, tile_size_px, "
          "depth_distribution, "
-         "depth_exponent, tricubic, jitter, light_list_min_lights, volumes or temporal)"},
+         "depth_exponent, tricubic, jitter, light_list_min_lights, temporal or volumes)"},
         {"UnknownNoiseKey", froxel("/noise/octaves", 4),
          "effects.froxel_fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, "
          "threshold, multiplier or wind)"},
@@ -553,14 +553,14 @@ std::vector<FroxelRejection> froxelRejections() {
          "effects.froxel_fog.depth_exponent: 9 is outside"},
         {"TextureSizeNotPowerOfTwo", froxel("/noise/texture_size", 100),
          "effects.froxel_fog.noise.texture_size: "},
-        {"WindTooFast", froxel("/noise/wind", {0, 2000, 0}), "effects.froxel_fog.noise.wind: "},
+        {"WindTooFast", froxel("/noise/wind", {0, 2000, 0}), "effects.froxel_fog.noise.wind[1]: "},
         {"VolumeRadiusNegative", volume(edit(sphere(), "radius", -1)),
          "effects.froxel_fog.volumes[2].radius: -1 is outside [0, 1e+07]"},
         {"VolumeRadiusHuge", volume(edit(sphere(), "radius", 2e7)), "effects.froxel_fog.volumes[2].radius: "},
         {"VolumeHalfSizeNegative", volume(edit(box(), "half_size", {1, -1, 1})),
-         "effects.froxel_fog.volumes[2].half_size: "},
+         "effects.froxel_fog.volumes[2].half_size[1]: "},
         {"VolumeCenterTooFar", volume(edit(box(), "center", {0, 0, 2e9})),
-         "effects.froxel_fog.volumes[2].center: "},
+         "effects.froxel_fog.volumes[2].center[2]: "},
         {"VolumeDensityNegative", volume(edit(box(), "density", -0.5)),
          "effects.froxel_fog.volumes[2].density: "},
         {"VolumeDensityHuge", volume(edit(box(), "density", 2e6)), "effects.froxel_fog.volumes[2].density: "},

@@ -1,6 +1,6 @@
 // Scene files: `effects.fog.temporal` and `effects.froxel_fog.temporal` (postfx::TemporalSettings, read by
-// one function for both fogs, demo/scene/medium_json.cpp) -- the library's defaults, every key read,
-// round trips, errors naming their key path with postfx's ranges.
+// read for both fogs from their settings tables, demo/scene/settings_json.cpp) -- the library's defaults,
+// every key read, round trips, errors naming their key path with postfx's ranges.
 #include "scene/json_text.h"
 #include "scene/scene.h"
 
@@ -121,11 +121,11 @@ TEST(DemoSceneTemporal, ErrorsNameTheKeyPath) {
         {json::array(), ": expected an object"},
         {{{"enabled", "yes"}}, ".enabled: expected true or false, got the string \"yes\""},
         {{{"blend_weight", "half"}}, ".blend_weight: expected a number, got the string \"half\""},
-        {{{"blend_weight", 0}}, ".blend_weight: 0 must be > 0"},
-        {{{"blend_weight", -0.5}}, ".blend_weight: -0.5 is outside [0, 1]"},
-        {{{"blend_weight", 1.5}}, ".blend_weight: 1.5 is outside [0, 1]"},
+        {{{"blend_weight", 0}}, ".blend_weight: 0 is outside (0, 1]"},
+        {{{"blend_weight", -0.5}}, ".blend_weight: -0.5 is outside (0, 1]"},
+        {{{"blend_weight", 1.5}}, ".blend_weight: 1.5 is outside (0, 1]"},
         // The weight is checked while temporal is off too, so that turning it on cannot make a file invalid.
-        {{{"enabled", false}, {"blend_weight", 2}}, ".blend_weight: 2 is outside [0, 1]"},
+        {{{"enabled", false}, {"blend_weight", 2}}, ".blend_weight: 2 is outside (0, 1]"},
         {{{"weight", 0.5}}, ".weight: unknown key (expected enabled or blend_weight)"},
     };
     for (const char* fog : kFogs) {

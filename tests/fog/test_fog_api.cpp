@@ -179,20 +179,20 @@ TEST_F(FogApiTest, RejectsBadSettingsNamingTheField) {
         void (*edit)(postfx::FrameInfo&);
     };
     const Case cases[] = {
-        {"fog.density", [](postfx::FrameInfo& f) { f.fog.density = -1.0f; }},
-        {"fog.albedo", [](postfx::FrameInfo& f) { f.fog.albedo.g = NAN; }},
-        {"fog.anisotropy", [](postfx::FrameInfo& f) { f.fog.anisotropy = 1.5f; }},
-        {"fog.steps", [](postfx::FrameInfo& f) { f.fog.steps = 0; }},
-        {"fog.resolution_scale", [](postfx::FrameInfo& f) { f.fog.resolutionScale = 0.2f; }},
-        {"fog.resolution_scale", [](postfx::FrameInfo& f) { f.fog.resolutionScale = NAN; }},
-        {"fog.max_distance", [](postfx::FrameInfo& f) { f.fog.maxDistance = 0.0f; }},
-        {"fog.shadow_kernel", [](postfx::FrameInfo& f) { f.fog.shadowKernel = 4; }},
-        {"fog.noise.tiling",
+        {"FrameInfo.fog.density", [](postfx::FrameInfo& f) { f.fog.density = -1.0f; }},
+        {"FrameInfo.fog.albedo", [](postfx::FrameInfo& f) { f.fog.albedo.g = NAN; }},
+        {"FrameInfo.fog.anisotropy", [](postfx::FrameInfo& f) { f.fog.anisotropy = 1.5f; }},
+        {"FrameInfo.fog.steps", [](postfx::FrameInfo& f) { f.fog.steps = 0; }},
+        {"FrameInfo.fog.resolutionScale", [](postfx::FrameInfo& f) { f.fog.resolutionScale = 0.2f; }},
+        {"FrameInfo.fog.resolutionScale", [](postfx::FrameInfo& f) { f.fog.resolutionScale = NAN; }},
+        {"FrameInfo.fog.maxDistance", [](postfx::FrameInfo& f) { f.fog.maxDistance = 0.0f; }},
+        {"FrameInfo.fog.shadowKernel", [](postfx::FrameInfo& f) { f.fog.shadowKernel = 4; }},
+        {"FrameInfo.fog.noise.tiling",
          [](postfx::FrameInfo& f) {
              f.fog.noise.enabled = true;
              f.fog.noise.tiling = 0.0f;
          }},
-        {"fog.noise.texture_size",
+        {"FrameInfo.fog.noise.textureSize",
          [](postfx::FrameInfo& f) {
              f.fog.noise.enabled = true;
              f.fog.noise.textureSize = 100;

@@ -217,7 +217,7 @@ TEST_F(FogNoiseTest, GeneratesOnlyWhenSizeOrSeedChanges) {
         std::vector<float> color;
         const postfx::Status s = FogHarness(*host, gpu).run(*context, images, f, color);
         EXPECT_EQ(s.code, Result::InvalidArgument) << bad;
-        EXPECT_NE(s.message.find("texture_size"), std::string::npos) << s.message;
+        EXPECT_NE(s.message.find("FrameInfo.fog.noise.textureSize"), std::string::npos) << s.message;
     }
     EXPECT_EQ(postfx::fogNoiseView(*context), VkImageView(VK_NULL_HANDLE));
 

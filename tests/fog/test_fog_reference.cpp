@@ -578,10 +578,10 @@ TEST(FogReference, ValidationNamesTheField) {
     Frame ok(4, 4);
     Frame f = ok;
     f.in.settings.density = -1.0f;
-    expectInvalid(f, "fog.density");
+    expectInvalid(f, "FrameInfo.fog.density");
     f = ok;
     f.in.settings.anisotropy = std::numeric_limits<float>::quiet_NaN();
-    expectInvalid(f, "fog.anisotropy");
+    expectInvalid(f, "FrameInfo.fog.anisotropy");
     f = ok;
     f.depth.resize(12);
     expectInvalid(f, "FogInputs.depth: 12 values, expected 16");

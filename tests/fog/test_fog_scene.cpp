@@ -380,7 +380,7 @@ std::vector<FogRejection> fogRejections() {
         {"TilingZero", fog("/noise/tiling", 0), "effects.fog.noise.tiling: "},
         {"ThresholdTwo", fog("/noise/threshold", 2), "effects.fog.noise.threshold: "},
         {"MultiplierNegative", fog("/noise/multiplier", -1), "effects.fog.noise.multiplier: "},
-        {"WindTooFast", fog("/noise/wind", {0, 2000, 0}), "effects.fog.noise.wind: "},
+        {"WindTooFast", fog("/noise/wind", {0, 2000, 0}), "effects.fog.noise.wind[1]: "},
         // noise keys are range-checked even while the noise (or the fog) is off
         {"TilingZeroNoiseOff",
          {{"fog", {{"enabled", false}, {"noise", {{"enabled", false}, {"tiling", 0}}}}}},

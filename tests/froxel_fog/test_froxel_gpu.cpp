@@ -288,7 +288,8 @@ TEST_F(FroxelFogGpuTest, BothFogsInOneFrameIsAnError) {
     FogHarness harness(*host, gpu);
     const postfx::Status s = harness.run(*context, c.images, c.prepared(), out);
     EXPECT_EQ(s.code, postfx::Result::InvalidArgument);
-    EXPECT_NE(s.message.find("fog.enabled and froxel_fog.enabled"), std::string::npos) << s.message;
+    EXPECT_NE(s.message.find("FrameInfo.fog.enabled and FrameInfo.froxelFog.enabled"), std::string::npos)
+        << s.message;
 }
 
 }  // namespace

@@ -344,40 +344,45 @@ TEST(FroxelFogSettings, DefaultsAreValidAndEveryFieldIsChecked) {
     };
     const float nan = std::nanf("");
     const std::vector<Row> rows = {
-        {[](FroxelFogSettings& s, FogVolume&) { s.density = -1.0f; }, "froxel_fog.density"},
-        {[&](FroxelFogSettings& s, FogVolume&) { s.albedo.y = nan; }, "froxel_fog.albedo"},
-        {[](FroxelFogSettings& s, FogVolume&) { s.anisotropy = 1.5f; }, "froxel_fog.anisotropy"},
-        {[](FroxelFogSettings& s, FogVolume&) { s.heightFalloff = 11.0f; }, "froxel_fog.height_falloff"},
-        {[](FroxelFogSettings& s, FogVolume&) { s.baseHeight = INFINITY; }, "froxel_fog.base_height"},
-        {[](FroxelFogSettings& s, FogVolume&) { s.maxDistance = 0.0f; }, "froxel_fog.max_distance"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.density = -1.0f; }, "FrameInfo.froxelFog.density"},
+        {[&](FroxelFogSettings& s, FogVolume&) { s.albedo.y = nan; }, "FrameInfo.froxelFog.albedo[1]"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.anisotropy = 1.5f; }, "FrameInfo.froxelFog.anisotropy"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.heightFalloff = 11.0f; },
+         "FrameInfo.froxelFog.heightFalloff"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.baseHeight = INFINITY; }, "FrameInfo.froxelFog.baseHeight"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.maxDistance = 0.0f; }, "FrameInfo.froxelFog.maxDistance"},
         {[](FroxelFogSettings& s, FogVolume&) {
              s.noise.enabled = true;
              s.noise.tiling = 0.0f;
          },
-         "froxel_fog.noise.tiling"},
+         "FrameInfo.froxelFog.noise.tiling"},
         {[](FroxelFogSettings& s, FogVolume&) {
              s.grid = {0, 90, 128};
          },
-         "froxel_fog.grid[0]"},
+         "FrameInfo.froxelFog.grid[0]"},
         {[](FroxelFogSettings& s, FogVolume&) {
              s.grid = {160, 90, 513};
          },
-         "froxel_fog.grid[2]"},
-        {[](FroxelFogSettings& s, FogVolume&) { s.tileSizePx = 5000; }, "froxel_fog.tile_size_px"},
+         "FrameInfo.froxelFog.grid[2]"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.tileSizePx = 5000; }, "FrameInfo.froxelFog.tileSizePx"},
         {[](FroxelFogSettings& s, FogVolume&) { s.depthDistribution = FroxelDepthDistribution(7); },
-         "froxel_fog.depth_distribution"},
-        {[](FroxelFogSettings& s, FogVolume&) { s.depthExponent = 0.5f; }, "froxel_fog.depth_exponent"},
+         "FrameInfo.froxelFog.depthDistribution"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.depthExponent = 0.5f; },
+         "FrameInfo.froxelFog.depthExponent"},
         {[](FroxelFogSettings& s, FogVolume&) { s.volumeCount = postfx::kMaxFogVolumes + 1; },
-         "froxel_fog.volumes"},
-        {[](FroxelFogSettings& s, FogVolume&) { s.volumes = nullptr; }, "froxel_fog.volumes"},
+         "FrameInfo.froxelFog.volumeCount"},
+        {[](FroxelFogSettings& s, FogVolume&) { s.volumes = nullptr; }, "FrameInfo.froxelFog.volumes"},
         {[](FroxelFogSettings&, FogVolume& v) { v.shape = FogVolumeShape(9); },
-         "froxel_fog.volumes[0].shape"},
-        {[](FroxelFogSettings&, FogVolume& v) { v.center.z = 2e9; }, "froxel_fog.volumes[0].center"},
-        {[](FroxelFogSettings&, FogVolume& v) { v.halfSize.x = -1.0f; }, "froxel_fog.volumes[0].half_size"},
-        {[&](FroxelFogSettings&, FogVolume& v) { v.radius = nan; }, "froxel_fog.volumes[0].radius"},
-        {[](FroxelFogSettings&, FogVolume& v) { v.density = -0.1f; }, "froxel_fog.volumes[0].density"},
+         "FrameInfo.froxelFog.volumes[0].shape"},
+        {[](FroxelFogSettings&, FogVolume& v) { v.center.z = 2e9; },
+         "FrameInfo.froxelFog.volumes[0].center[2]"},
+        {[](FroxelFogSettings&, FogVolume& v) { v.halfSize.x = -1.0f; },
+         "FrameInfo.froxelFog.volumes[0].halfSize[0]"},
+        {[&](FroxelFogSettings&, FogVolume& v) { v.radius = nan; }, "FrameInfo.froxelFog.volumes[0].radius"},
+        {[](FroxelFogSettings&, FogVolume& v) { v.density = -0.1f; },
+         "FrameInfo.froxelFog.volumes[0].density"},
         {[](FroxelFogSettings&, FogVolume& v) { v.edgeFalloff = -1.0f; },
-         "froxel_fog.volumes[0].edge_falloff"},
+         "FrameInfo.froxelFog.volumes[0].edgeFalloff"},
     };
     for (const Row& row : rows) {
         FogVolume volume = goodVolume;
@@ -410,7 +415,7 @@ TEST(FroxelFogReference, RefusesBadLightsAndInputsNamingThem) {
     EXPECT_NE(f.status().message.find("FroxelFogInputs.lights"), std::string::npos);
     f.lights.clear();
     f.in.settings.density = -1.0f;
-    EXPECT_NE(f.status().message.find("froxel_fog.density"), std::string::npos);
+    EXPECT_NE(f.status().message.find("FrameInfo.froxelFog.density"), std::string::npos);
     f.in.settings.density = 0.1f;
     f.depth.clear();
     EXPECT_NE(f.status().message.find("FroxelFogInputs.depth"), std::string::npos);
@@ -419,7 +424,7 @@ TEST(FroxelFogReference, RefusesBadLightsAndInputsNamingThem) {
 TEST(FroxelFogSettings, RayMarchedFogKeepsItsKeyNames) {
     postfx::FogSettings s;
     s.density = -1.0f;
-    EXPECT_EQ(postfx::validateFogSettings(s).message.rfind("fog.density:", 0), 0u);
+    EXPECT_EQ(postfx::validateFogSettings(s).message.rfind("FrameInfo.fog.density:", 0), 0u);
 }
 
 // --- (g) Slice distribution -------------------------------------------------------------------------

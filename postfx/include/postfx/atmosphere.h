@@ -3,7 +3,8 @@
 // own surfaces consistently. The model and its LUTs are in docs/effects/atmosphere.md.
 //
 // Every setting: unit, default, valid range. Out-of-range values are rejected (validateAtmosphereSettings)
-// with an error naming the field by its scene-file key under effects.atmosphere ("atmosphere.top_radius").
+// with an error naming the field by its C++ path ("FrameInfo.atmosphere.topRadius"); the ranges are
+// atmosphereSettingsTable()'s (postfx/settings_table.h).
 // Defaults are Earth as in the paper's reference code. World y = 0 is the ground; the planet's centre is at
 // (0, -groundRadius, 0).
 #pragma once
@@ -113,8 +114,8 @@ inline constexpr ResourceName kAtmosphereAerialPerspectiveLut{"atmosphere.aerial
 inline constexpr ResourceName kAtmosphereAerialTransmittanceLut{"atmosphere.aerial_transmittance"};
 
 // Checks every setting against its documented range: InvalidArgument naming the first bad field with its
-// scene-file key ("atmosphere.top_radius: must be greater than ground_radius (6.36e+06)"). Checked whether
-// or not `enabled` is set.
+// C++ path ("FrameInfo.atmosphere.topRadius: 6e+06 must be greater than groundRadius (6.36e+06)"). Checked
+// whether or not `enabled` is set.
 POSTFX_API Status validateAtmosphereSettings(const AtmosphereSettings& settings);
 
 // The sun's transmittance through the atmosphere from world position `worldPosition` [m] toward `toSun`

@@ -5,7 +5,8 @@
 // is reference::renderClouds (postfx/reference.h).
 //
 // Every setting: unit, default, valid range. Out-of-range values are rejected (validateCloudSettings) with
-// an error naming the field by its scene-file key under effects.clouds ("clouds.top_height").
+// an error naming the field by its C++ path ("FrameInfo.clouds.topHeight"); the ranges are
+// cloudSettingsTable()'s (postfx/settings_table.h).
 #pragma once
 
 #include <postfx/export.h>
@@ -190,7 +191,7 @@ inline constexpr uint32_t kCloudAutoFeatureNoise = 4;       // clouds.noise.enab
 POSTFX_API CloudSettings applyCloudQuality(const CloudSettings& settings, CloudQuality quality);
 
 // Checks every setting against its documented range; InvalidArgument naming the first bad field with its
-// scene-file key ("clouds.top_height: 1000 must be greater than bottom_height (1500)"). Checked whether or
+// C++ path ("FrameInfo.clouds.topHeight: 1000 must be greater than bottomHeight (1500)"). Checked whether or
 // not `enabled` is set.
 POSTFX_API Status validateCloudSettings(const CloudSettings& settings);
 

@@ -53,8 +53,9 @@ enum class FogQuality {
 };
 
 // The participating medium both fogs share (the ray-marched fog, FogSettings, and the froxel fog,
-// FroxelFogSettings in postfx/froxel_fog.h): one definition, one validation. Messages name the keys with
-// the effect's prefix ("fog.density", "froxel_fog.density").
+// FroxelFogSettings in postfx/froxel_fog.h): one definition, one table of its fields
+// (postfx/settings_table.h). Messages name the field by its C++ path ("FrameInfo.fog.density",
+// "FrameInfo.froxelFog.density").
 struct FogMedium {
     // Extinction σt at base_height where noise = 1 [1/m]; in [0, 1e6]. 0.02 gives a visibility of ~150 m.
     float density = 0.02f;
@@ -120,7 +121,8 @@ struct FogAutoTimings {
 };
 
 // Checks every setting against its documented range; InvalidArgument naming the first bad field with
-// its scene-file name ("fog.noise.tiling: 0 must be > 0"). Context::record runs the same check.
+// its C++ path from FrameInfo ("FrameInfo.fog.noise.tiling: 0 is outside (0, 1000]"). Context::record runs
+// the same check. The ranges are fogSettingsTable()'s (postfx/settings_table.h).
 POSTFX_API Status validateFogSettings(const FogSettings& settings);
 
 // Size of the fog's march for a color image of `width`×`height` at `resolutionScale` [px]:

@@ -3,7 +3,8 @@
 // pixel; the CPU reference is reference::renderFroxelFog (postfx/reference.h).
 //
 // Every setting: unit, default, valid range, checked by validateFroxelFogSettings with an error naming
-// the field by its scene-file key ("froxel_fog.grid[2]: 0 is outside [1, 512]").
+// the field by its C++ path ("FrameInfo.froxelFog.grid[2]: 0 is outside [1, 512]"); the ranges are
+// froxelFogSettingsTable()'s and fogVolumeSettingsTable()'s (postfx/settings_table.h).
 #pragma once
 
 #include <postfx/export.h>
@@ -43,7 +44,7 @@ enum class FroxelDepthDistribution : uint32_t {
 inline constexpr uint32_t kMaxFroxelGridSize = 512;
 
 // The froxel fog: the shared medium (FogMedium, the same keys and ranges as the ray-marched fog, named
-// "froxel_fog.*") and its grid. max_distance is the grid's far end.
+// "FrameInfo.froxelFog.*") and its grid. max_distance is the grid's far end.
 struct FroxelFogSettings : FogMedium {
     bool enabled = false;
     // Froxels along the view's x, y and depth [1]; each in [1, 512]. x and y are replaced by tileSizePx.
@@ -70,8 +71,9 @@ struct FroxelFogSettings : FogMedium {
     TemporalSettings temporal{true, 0.05f};
 };
 
-// Checks every setting against its documented range (the medium's as FogMedium's, named "froxel_fog.*",
-// the noise's when it is enabled, every volume's); InvalidArgument naming the first bad field.
+// Checks every setting against its documented range (the medium's as FogMedium's, named
+// "FrameInfo.froxelFog.*", the noise's when it is enabled, every volume's); InvalidArgument naming the first
+// bad field.
 POSTFX_API Status validateFroxelFogSettings(const FroxelFogSettings& settings);
 
 // Distance along the view ray of the slice boundary at z01 ∈ [0, 1] (0: the near plane, 1: far =

@@ -9,5 +9,6 @@
 #include <postfx/froxel_fog.h>
 #include <postfx/inputs.h>
 #include <postfx/result.h>
+#include <postfx/settings_table.h>
 #include <postfx/types.h>
 #include <postfx/version.h>

@@ -10,6 +10,7 @@
 #include "common/shared_resources.h"
 #include "core/camera_math.h"
 #include "core/exposure.h"
+#include "core/settings_check.h"
 #include "postfx_objects_spirv.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -150,32 +151,10 @@ uint64_t shadowBuildKey(const gpu::CloudUniforms& u, const CloudSettings& s) {
 uint64_t temporalKey(const FrameInfo& frame) {
     using core::hashValue;
     const CloudSettings& s = frame.clouds;
-    uint64_t h = core::kHashSeed;
+    uint64_t h = core::hashSettings(core::kHashSeed, cloudSettingsTable(), &s);  // the table's history fields
     h = hashValue(h, frame.color.extent.width);
     h = hashValue(h, frame.color.extent.height);
     h = hashValue(h, frame.color.format);
-    h = hashValue(h, s.shape);
-    h = hashValue(h, s.bottomHeight);
-    h = hashValue(h, s.topHeight);
-    h = hashValue(h, s.box.center);
-    h = hashValue(h, s.box.halfSize);
-    h = hashValue(h, s.box.yawDeg);
-    h = hashValue(h, s.box.pitchDeg);
-    for (float v : {s.coverage, s.cloudType, s.density, s.albedo, s.anisotropyForward, s.anisotropyBack,
-                    s.lobeMix, s.multipleScattering.attenuation, s.multipleScattering.contribution,
-                    s.multipleScattering.eccentricity, s.lightDistance, s.maxDistance, s.resolutionScale,
-                    s.noise.tiling, s.noise.detailStrength})
-        h = hashValue(h, v);
-    for (uint32_t v :
-         {uint32_t(s.multipleScattering.model), s.multipleScattering.octaves, s.steps, s.lightSteps,
-          s.noise.baseSize, s.noise.detailSize, s.noise.seed, uint32_t(s.noise.enabled), uint32_t(s.jitter)})
-        h = hashValue(h, v);
-    h = hashValue(h, s.noise.hostBaseTexture);
-    h = hashValue(h, s.noise.hostDetailTexture);
-    h = hashValue(h, s.coverageMap.texture);
-    h = hashValue(h, s.coverageMap.size);
-    h = hashValue(h, s.coverageMap.originX);
-    h = hashValue(h, s.coverageMap.originZ);
     h = hashValue(h, frame.atmosphere.enabled);
     if (frame.atmosphere.enabled) h = hashValue(h, common::airViewSettingsKey(frame.atmosphere));
     return h;

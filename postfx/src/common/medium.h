@@ -1,6 +1,6 @@
 // The shared medium (FogMedium: the ray-marched and the froxel fog; docs/effects/fog.md, "Model"): its
-// checks, its bounds, the key of its settings and its part of the uniforms (gpu::FogUniforms,
-// shaders/common/medium_shared.h; the GLSL side is shaders/common/medium/).
+// rules beside its settings table (common/medium_table.h), its bounds and its part of the uniforms
+// (gpu::FogUniforms, shaders/common/medium_shared.h; the GLSL side is shaders/common/medium/).
 #pragma once
 
 #include <postfx/context.h>
@@ -16,14 +16,10 @@ namespace postfx::common {
 constexpr float kMaxAnisotropy = 0.999f;                       // |g| is clamped to this
 constexpr float kMaxHeightExponent = gpu::kMaxHeightExponent;  // -height_falloff·(y - base_height) <= this
 
-// The shared medium's checks (FogMedium), used by both fogs: InvalidArgument naming the field with the
-// effect's key `prefix` ("fog" or "froxel_fog": "froxel_fog.density: -1 is outside [0, 1e+06]"); the
-// noise's settings are checked when the noise is enabled.
-Status validateMedium(const FogMedium& medium, const std::string& prefix);
-
-// The temporal settings' checks (TemporalSettings), named with the effect's `prefix`
-// ("fog.temporal.blend_weight: 0 must be > 0").
-Status validateTemporal(const TemporalSettings& temporal, const std::string& prefix);
+// The shared medium's checks that are not ranges of its table (common/medium_table.h), used by both fogs:
+// the generated noise's texture size (a power of two in [16, 256]) and the host texture's layout, while the
+// noise is on; named with the settings' C++ path `prefix` ("FrameInfo.froxelFog.noise.textureSize: ...").
+Status checkMediumRules(const FogMedium& medium, const std::string& prefix);
 
 // The medium is empty everywhere: density 0, or noise on with multiplier 0 or a threshold at or above the
 // texels' maximum of 1. The fog then records nothing (docs/frame-plan.md) and the reference leaves the
@@ -40,9 +36,6 @@ constexpr double kNegligibleOpticalDepth = 1e-4;
 // optical depth; noise_max = clamp(1 - threshold, 0, 1) · multiplier (noise values are in [0, 1]).
 // +Inf when the height term does not fall (height_falloff 0), -Inf for an empty medium.
 double fogMediumTop(const FogMedium& s, bool noiseEnabled);
-
-// A hash of every FogMedium field (the noise's included): a change resets the temporal history.
-uint64_t mediumKey(const FogMedium& medium);
 
 // g clamped to [-kMaxAnisotropy, kMaxAnisotropy].
 float clampedAnisotropy(float g);

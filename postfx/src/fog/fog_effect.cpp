@@ -4,6 +4,7 @@
 #include "common/medium_noise.h"
 #include "common/shared_resources.h"
 #include "core/checks.h"
+#include "core/settings_check.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
 #include "postfx_objects_spirv.h"
@@ -98,17 +99,11 @@ namespace {
 uint64_t temporalKey(const FrameInfo& frame) {
     using core::hashValue;
     const FogSettings& s = frame.fog;
-    uint64_t h = common::mediumKey(s);
+    uint64_t h = core::hashSettings(core::kHashSeed, fogSettingsTable(), &s);  // the table's history fields
     h = hashValue(h, frame.color.extent.width);
     h = hashValue(h, frame.color.extent.height);
     h = hashValue(h, frame.color.format);
-    h = hashValue(h, s.steps);
-    h = hashValue(h, s.jitter);
-    h = hashValue(h, s.resolutionScale);
-    h = hashValue(h, s.transmittanceCutoff);
-    h = hashValue(h, s.skipEmptySpace);
-    h = hashValue(h, common::castsCloudShadows(frame));  // the sun's light under the clouds
-    return hashValue(h, s.shadowKernel);
+    return hashValue(h, common::castsCloudShadows(frame));  // the sun's light under the clouds
 }
 
 }  // namespace
@@ -118,7 +113,8 @@ FogEffect::FogEffect(const core::Gpu& gpu) : noiseFormatSupported_(common::noise
 Status FogEffect::validate(const FrameInfo& frame) const {
     if (!frame.fog.enabled) return Status::success();
     if (Status s = validateSettings(frame.fog); !s) return s;
-    if (Status s = common::checkNoiseSupported(frame.fog.noise, noiseFormatSupported_, "fog"); !s) return s;
+    if (Status s = common::checkNoiseSupported(frame.fog.noise, noiseFormatSupported_, "FrameInfo.fog"); !s)
+        return s;
     return Status::success();
 }
 

@@ -3,6 +3,7 @@
 #include "common/medium.h"
 #include "common/reduced_resolution.h"
 #include "core/checks.h"
+#include "core/settings_check.h"
 #include "core/temporal.h"
 
 #include <algorithm>
@@ -14,14 +15,8 @@
 namespace postfx::fog {
 namespace {
 
-using core::checkRange;
-
 Status bad(const std::string& field, const std::string& why) {
     return core::invalid(field + ": " + why);
-}
-
-std::string text(double v) {
-    return core::numberText(v);
 }
 
 // The quality presets, the one place their values are written (docs/effects/fog.md#quality-presets).
@@ -60,20 +55,11 @@ std::vector<double> qualityPresetErrors() {
 }
 
 Status validateSettings(const FogSettings& s) {
-    if (uint32_t(s.quality) > uint32_t(FogQuality::Auto))
-        return bad("fog.quality", std::to_string(uint32_t(s.quality)) +
-                                      " is not a FogQuality (Custom, Low, Medium, High, Ultra or Auto)");
-    if (s.steps < 1 || s.steps > 4096)
-        return bad("fog.steps", std::to_string(s.steps) + " is outside [1, 4096]");
-    if (Status r = checkRange("fog.resolution_scale", s.resolutionScale, 0.25, 1.0); !r) return r;
-    if (!std::isfinite(s.autoBudgetMs)) return bad("fog.auto_budget_ms", "is not finite");
-    if (s.autoBudgetMs <= 0.0f) return bad("fog.auto_budget_ms", text(s.autoBudgetMs) + " must be > 0");
-    if (Status r = checkRange("fog.transmittance_cutoff", s.transmittanceCutoff, 0.0, 1.0); !r) return r;
-    if (s.transmittanceCutoff >= 1.0f) return bad("fog.transmittance_cutoff", "must be < 1");
+    const std::string p = "FrameInfo.fog";
+    if (Status r = core::checkSettings(fogSettingsTable(), &s, p); !r) return r;
     if (s.shadowKernel < 1 || s.shadowKernel > 7 || s.shadowKernel % 2 == 0)
-        return bad("fog.shadow_kernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
-    if (Status r = common::validateTemporal(s.temporal, "fog"); !r) return r;
-    return common::validateMedium(s, "fog");
+        return bad(p + ".shadowKernel", std::to_string(s.shadowKernel) + " must be odd, in [1, 7]");
+    return common::checkMediumRules(s, p);
 }
 
 }  // namespace postfx::fog

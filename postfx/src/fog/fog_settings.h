@@ -12,7 +12,8 @@
 
 namespace postfx::fog {
 
-// InvalidArgument naming the field ("fog.density: -1 is negative") for any value out of range or NaN.
+// InvalidArgument naming the field ("FrameInfo.fog.density: -1 is outside [0, 1e+06]") for any value out of
+// range or NaN: the table's ranges (fogSettingsTable) and the rules beside them.
 Status validateSettings(const FogSettings& settings);
 
 // Each preset's error on the committed accuracy–cost front, Low first (QualityPreset::error).

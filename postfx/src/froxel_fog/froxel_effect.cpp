@@ -4,6 +4,7 @@
 #include "common/medium.h"
 #include "common/medium_noise.h"
 #include "common/shared_resources.h"
+#include "core/settings_check.h"
 #include "froxel_fog/froxel_uniforms.h"
 #include "postfx_objects_spirv.h"
 
@@ -106,26 +107,15 @@ bool volumesHoldDensity(const FroxelFogSettings& s) {
 uint64_t temporalKey(const FrameInfo& frame) {
     using core::hashValue;
     const FroxelFogSettings& s = frame.froxelFog;
-    uint64_t h = common::mediumKey(s);
+    uint64_t h =
+        core::hashSettings(core::kHashSeed, froxelFogSettingsTable(), &s);  // the table's history fields
     const UVec3 grid = froxelGridSize(s, frame.color.extent.width, frame.color.extent.height);
     for (int a = 0; a < 3; ++a)
         h = hashValue(h, grid[a]);
-    h = hashValue(h, s.depthDistribution);
-    h = hashValue(h, s.depthExponent);
-    h = hashValue(h, s.jitter);
     h = hashValue(h, common::castsCloudShadows(frame));  // the sun's light under the clouds
     h = hashValue(h, s.volumeCount);
-    for (uint32_t i = 0; i < s.volumeCount; ++i) {
-        const FogVolume& v = s.volumes[i];
-        h = hashValue(h, v.shape);
-        for (int a = 0; a < 3; ++a) {
-            h = hashValue(h, v.center[a]);
-            h = hashValue(h, v.halfSize[a]);
-        }
-        h = hashValue(h, v.radius);
-        h = hashValue(h, v.density);
-        h = hashValue(h, v.edgeFalloff);
-    }
+    for (uint32_t i = 0; i < s.volumeCount; ++i)
+        h = core::hashSettings(h, fogVolumeSettingsTable(), &s.volumes[i]);
     return h;
 }
 
@@ -139,10 +129,11 @@ Status FroxelFogEffect::validate(const FrameInfo& frame) const {
     if (!s.enabled) return Status::success();
     if (frame.fog.enabled)
         return {Result::InvalidArgument,
-                "fog.enabled and froxel_fog.enabled: both fogs are on in one frame; they model the same "
+                "FrameInfo.fog.enabled and FrameInfo.froxelFog.enabled: both fogs are on in one frame; they "
+                "model the same "
                 "medium, so enable one of them (docs/effects/froxel-fog.md)"};
     if (Status r = validateFroxelFogSettings(s); !r) return r;
-    return common::checkNoiseSupported(s.noise, noiseFormatSupported_, "froxel_fog");
+    return common::checkNoiseSupported(s.noise, noiseFormatSupported_, "FrameInfo.froxelFog");
 }
 
 bool FroxelFogEffect::active(const FrameInfo& frame) const {

@@ -1,66 +1,34 @@
-// FroxelFogSettings' checks and the grid's slice distribution (docs/effects/froxel-fog.md).
+// FroxelFogSettings' checks (its settings table's ranges, the medium's rules, the volumes') and the grid's
+// slice distribution (docs/effects/froxel-fog.md).
 #include "common/medium.h"
+#include "common/medium_table.h"
 #include "core/checks.h"
+#include "core/settings_check.h"
 
 #include <postfx/froxel_fog.h>
 #include <postfx/inputs.h>
+#include <postfx/settings_table.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 namespace postfx {
-namespace {
-
-using core::checkRange;
-using core::invalid;
-
-constexpr double kMaxCoordinate = 1e9;  // volume centres, as local lights' positions [m]
-constexpr double kMaxVolumeSize = 1e7;  // half sizes, radii, edge falloff [m]
-
-Status checkVolume(const FogVolume& v, uint32_t index) {
-    const std::string n = "froxel_fog.volumes[" + std::to_string(index) + "]";
-    if (v.shape != FogVolumeShape::Box && v.shape != FogVolumeShape::Sphere)
-        return invalid(n + ".shape: " + std::to_string(uint32_t(v.shape)) + " is not box or sphere");
-    for (int c = 0; c < 3; ++c)
-        if (Status s = checkRange((n + ".center").c_str(), v.center[c], -kMaxCoordinate, kMaxCoordinate); !s)
-            return s;
-    for (int c = 0; c < 3; ++c)
-        if (Status s = checkRange((n + ".half_size").c_str(), v.halfSize[c], 0.0, kMaxVolumeSize); !s)
-            return s;
-    if (Status s = checkRange((n + ".radius").c_str(), v.radius, 0.0, kMaxVolumeSize); !s) return s;
-    if (Status s = checkRange((n + ".density").c_str(), v.density, 0.0, 1e6); !s) return s;
-    if (Status s = checkRange((n + ".edge_falloff").c_str(), v.edgeFalloff, 0.0, kMaxVolumeSize); !s)
-        return s;
-    return Status::success();
-}
-
-}  // namespace
 
 Status validateFroxelFogSettings(const FroxelFogSettings& s) {
-    if (Status r = common::validateMedium(s, "froxel_fog"); !r) return r;
-    if (Status r = common::validateTemporal(s.temporal, "froxel_fog"); !r) return r;
-    for (int a = 0; a < 3; ++a)
-        if (s.grid[a] < 1 || s.grid[a] > kMaxFroxelGridSize)
-            return invalid("froxel_fog.grid[" + std::to_string(a) + "]: " + std::to_string(s.grid[a]) +
-                           " is outside [1, " + std::to_string(kMaxFroxelGridSize) + "]");
-    if (s.tileSizePx > 4096)
-        return invalid("froxel_fog.tile_size_px: " + std::to_string(s.tileSizePx) + " is outside [0, 4096]");
-    if (s.depthDistribution != FroxelDepthDistribution::Power &&
-        s.depthDistribution != FroxelDepthDistribution::Log)
-        return invalid("froxel_fog.depth_distribution: " + std::to_string(uint32_t(s.depthDistribution)) +
-                       " is not power or log");
-    if (Status r = checkRange("froxel_fog.depth_exponent", s.depthExponent, 1.0, 8.0); !r) return r;
-    if (s.lightListMinLights < 1 || s.lightListMinLights > kMaxLocalLights + 1)
-        return invalid("froxel_fog.light_list_min_lights: " + std::to_string(s.lightListMinLights) +
-                       " is outside [1, " + std::to_string(kMaxLocalLights + 1) + "]");
+    const std::string p = "FrameInfo.froxelFog";
+    if (Status r = core::checkSettings(froxelFogSettingsTable(), &s, p); !r) return r;
+    if (Status r = common::checkMediumRules(s, p); !r) return r;
     if (s.volumeCount > kMaxFogVolumes)
-        return invalid("froxel_fog.volumes: " + std::to_string(s.volumeCount) +
-                       " volumes exceed kMaxFogVolumes (" + std::to_string(kMaxFogVolumes) + ")");
+        return core::invalid(p + ".volumeCount: " + std::to_string(s.volumeCount) +
+                             " exceeds kMaxFogVolumes (" + std::to_string(kMaxFogVolumes) + ")");
     if (s.volumeCount > 0 && !s.volumes)
-        return invalid("froxel_fog.volumes: null with volumeCount " + std::to_string(s.volumeCount));
+        return core::invalid(p + ".volumes: null with volumeCount " + std::to_string(s.volumeCount));
     for (uint32_t i = 0; i < s.volumeCount; ++i)
-        if (Status r = checkVolume(s.volumes[i], i); !r) return r;
+        if (Status r = core::checkSettings(fogVolumeSettingsTable(), &s.volumes[i],
+                                           p + ".volumes[" + std::to_string(i) + "]");
+            !r)
+            return r;
     return Status::success();
 }
 

@@ -22,23 +22,29 @@ struct Field {
 const float kNan = std::numeric_limits<float>::quiet_NaN();
 
 const Field kFields[] = {
-    {"fog.density", [](postfx::FogSettings& s) -> float& { return s.density; }, -1e-6f, 1.1e6f},
-    {"fog.albedo", [](postfx::FogSettings& s) -> float& { return s.albedo.g; }, -1e-6f, 1.001f},
-    {"fog.anisotropy", [](postfx::FogSettings& s) -> float& { return s.anisotropy; }, -1.001f, 1.001f},
-    {"fog.height_falloff", [](postfx::FogSettings& s) -> float& { return s.heightFalloff; }, -1e-6f, 10.01f},
-    {"fog.base_height", [](postfx::FogSettings& s) -> float& { return s.baseHeight; }, kNan, kNan},
-    {"fog.max_distance", [](postfx::FogSettings& s) -> float& { return s.maxDistance; }, 0.0f, 1.1e7f},
-    {"fog.resolution_scale", [](postfx::FogSettings& s) -> float& { return s.resolutionScale; }, 0.2499f,
+    {"FrameInfo.fog.density", [](postfx::FogSettings& s) -> float& { return s.density; }, -1e-6f, 1.1e6f},
+    {"FrameInfo.fog.albedo", [](postfx::FogSettings& s) -> float& { return s.albedo.g; }, -1e-6f, 1.001f},
+    {"FrameInfo.fog.anisotropy", [](postfx::FogSettings& s) -> float& { return s.anisotropy; }, -1.001f,
      1.001f},
-    {"fog.transmittance_cutoff", [](postfx::FogSettings& s) -> float& { return s.transmittanceCutoff; },
-     -1e-6f, 1.0f},
-    {"fog.auto_budget_ms", [](postfx::FogSettings& s) -> float& { return s.autoBudgetMs; }, 0.0f, kNan},
-    {"fog.noise.tiling", [](postfx::FogSettings& s) -> float& { return s.noise.tiling; }, 0.0f, 1001.0f},
-    {"fog.noise.threshold", [](postfx::FogSettings& s) -> float& { return s.noise.threshold; }, -1e-6f,
-     1.001f},
-    {"fog.noise.multiplier", [](postfx::FogSettings& s) -> float& { return s.noise.multiplier; }, -1e-6f,
+    {"FrameInfo.fog.heightFalloff", [](postfx::FogSettings& s) -> float& { return s.heightFalloff; }, -1e-6f,
+     10.01f},
+    {"FrameInfo.fog.baseHeight", [](postfx::FogSettings& s) -> float& { return s.baseHeight; }, kNan, kNan},
+    {"FrameInfo.fog.maxDistance", [](postfx::FogSettings& s) -> float& { return s.maxDistance; }, 0.0f,
+     1.1e7f},
+    {"FrameInfo.fog.resolutionScale", [](postfx::FogSettings& s) -> float& { return s.resolutionScale; },
+     0.2499f, 1.001f},
+    {"FrameInfo.fog.transmittanceCutoff",
+     [](postfx::FogSettings& s) -> float& { return s.transmittanceCutoff; }, -1e-6f, 1.0f},
+    {"FrameInfo.fog.autoBudgetMs", [](postfx::FogSettings& s) -> float& { return s.autoBudgetMs; }, 0.0f,
+     kNan},
+    {"FrameInfo.fog.noise.tiling", [](postfx::FogSettings& s) -> float& { return s.noise.tiling; }, 0.0f,
      1001.0f},
-    {"fog.noise.wind", [](postfx::FogSettings& s) -> float& { return s.noise.wind.z; }, -1001.0f, 1001.0f},
+    {"FrameInfo.fog.noise.threshold", [](postfx::FogSettings& s) -> float& { return s.noise.threshold; },
+     -1e-6f, 1.001f},
+    {"FrameInfo.fog.noise.multiplier", [](postfx::FogSettings& s) -> float& { return s.noise.multiplier; },
+     -1e-6f, 1001.0f},
+    {"FrameInfo.fog.noise.wind", [](postfx::FogSettings& s) -> float& { return s.noise.wind.z; }, -1001.0f,
+     1001.0f},
 };
 
 postfx::FogSettings valid() {
@@ -70,18 +76,18 @@ TEST(FogStabilityBadParameters, NanInfAndOutOfRangeInEverySettingAreRejectedNami
 TEST(FogStabilityBadParameters, IntegerSettingsOutsideTheirRangeAreRejected) {
     postfx::FogSettings s = valid();
     s.steps = 0;
-    expectRejected(s, "fog.steps", "0");
+    expectRejected(s, "FrameInfo.fog.steps", "0");
     s = valid();
     s.steps = 4097;
-    expectRejected(s, "fog.steps", "4097");
+    expectRejected(s, "FrameInfo.fog.steps", "4097");
     for (uint32_t kernel : {0u, 2u, 9u}) {
         s = valid();
         s.shadowKernel = kernel;
-        expectRejected(s, "fog.shadow_kernel", std::to_string(kernel));
+        expectRejected(s, "FrameInfo.fog.shadowKernel", std::to_string(kernel));
     }
     s = valid();
     s.noise.textureSize = 100;
-    expectRejected(s, "fog.noise.texture_size", "100");
+    expectRejected(s, "FrameInfo.fog.noise.textureSize", "100");
 }
 
 }  // namespace
