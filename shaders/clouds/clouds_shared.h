@@ -17,7 +17,8 @@ PFX_CONST(uint, kCloudBindingColorOut, 2);     // storage image: output
 PFX_CONST(uint, kCloudBindingDepth, 3);        // sampler2D: host depth (texelFetch)
 PFX_CONST(uint, kCloudBindingBaseNoise, 4);    // sampler3D (repeat): base shape, Perlin–Worley
 PFX_CONST(uint, kCloudBindingDetailNoise, 5);  // sampler3D (repeat): detail, Worley fBm
-// Variant ATMOSPHERE: the atmosphere's uniforms and LUTs (shaders/atmosphere/atmosphere_shared.h).
+// The atmosphere's uniforms and LUTs (shaders/atmosphere/atmosphere_shared.h), read by the march with
+// kCloudConstantAtmosphere.
 PFX_CONST(uint, kCloudBindingAtmosphere, 6);        // uniform buffer: AtmosphereUniforms
 PFX_CONST(uint, kCloudBindingTransmittanceLut, 7);  // sampler2D: the sun's transmittance (r, μ)
 PFX_CONST(uint, kCloudBindingApScattering, 8);      // sampler3D: aerial perspective's in-scattering
@@ -36,6 +37,13 @@ PFX_CONST(uint, kCloudBindingDistanceIn, 14);   // storage image r32ui: last fra
 PFX_CONST(uint, kCloudBindingTemporal, 15);     // uniform buffer: TemporalUniforms (common/shared.h)
 PFX_CONST(uint, kCloudBindingShadowOut, 16);    // storage image r32f: the shadow map (clouds.shadow)
 PFX_CONST(uint, kCloudBindingCoverageMap, 17);  // sampler2D (repeat): the host's coverage map
+
+// Specialization constants of the march (march.comp), bools fixed when its pipeline is created
+// (postfx/src/clouds/clouds_effect.cpp): one shader for every frame, the compiler dropping what a frame
+// does not take.
+PFX_CONST(uint, kCloudConstantAtmosphere, 0u);  // constant_id: the atmosphere's light and aerial perspective
+PFX_CONST(uint, kCloudConstantScatter, 1u);     // constant_id: (L', T) into the march's image, not composited
+PFX_CONST(uint, kCloudConstantTemporal, 2u);    // constant_id: with scatter, also the texel's distances
 
 // Flags in CloudUniforms.flags.x
 PFX_CONST(uint, kCloudFlagNoise, 1u);   // sample the noise textures (off: the field is 1)

@@ -1,7 +1,8 @@
 // The clouds' light at a sample (docs/effects/clouds.md, "Light"), mirrored in double by
-// postfx/src/clouds/clouds_model.cpp: the sun through the atmosphere (ATMOSPHERE) and through the cloud
-// toward it (a short march), scattered by a dual-lobe Henyey–Greenstein phase with Wrenninge's octaves,
-// plus the ambient light. Expects `cl`, density.glsl and, with ATMOSPHERE, `atmo` and transmittanceLut.
+// postfx/src/clouds/clouds_model.cpp: the sun through the atmosphere (kCloudAtmosphere) and through the
+// cloud toward it (a short march), scattered by a dual-lobe Henyey–Greenstein phase with Wrenninge's
+// octaves, plus the ambient light. Expects `cl`, density.glsl, kCloudAtmosphere, `atmo` and
+// transmittanceLut.
 #ifndef POSTFX_CLOUDS_LIGHTING_GLSL
 #define POSTFX_CLOUDS_LIGHTING_GLSL
 
@@ -41,13 +42,11 @@ float cloudPhase(vec3 d, float scale) {
     return mix(forward, back, cl.phase.z);
 }
 
-#ifdef ATMOSPHERE
 // The atmosphere's transmittance from camera-relative x toward the sun (0 where the planet hides it).
 vec3 cloudAtmosphereTransmittance(vec3 x) {
     return sunTransmittanceFromLut(transmittanceLut, atmo.camera.xyz + x, cl.toSun.xyz, atmo.radii.x,
                                    atmo.radii.y, vec2(atmo.transmittanceLut.xy));
 }
-#endif
 
 // The slab's unit normal at camera-relative x: up through a flat layer, the planet's radial direction
 // through a curved one, the box's own y.
@@ -158,9 +157,7 @@ vec3 cloudInScattered(vec3 x, vec3 d, float sigma, float h) {
         }
     }
     vec3 sun = cl.sun.rgb;
-#ifdef ATMOSPHERE
-    sun *= cloudAtmosphereTransmittance(x);
-#endif
+    if (kCloudAtmosphere) sun *= cloudAtmosphereTransmittance(x);
     float ambient;
     if (slab) {
         ambient = cloudSlabAmbient(n, d, sigma, h, thickness);

@@ -5,20 +5,25 @@
 // equal steps whatever its length; each sample's extinction σt comes from the density field, its light
 // from lighting.glsl, and each step is integrated in closed form (T·S·(1 - e^{-σt·Δ})/σt, in which the
 // density appears once). The march stops once T < kCloudTransmittanceCutoff.
-// out = color·T + L. With ATMOSPHERE the clouds are seen through the air in front of them: the aerial
-// perspective (L_ap, T_ap) at the clouds' extinction-weighted mean distance gives
+// out = color·T + L. With the atmosphere (kCloudAtmosphere) the clouds are seen through the air in front
+// of them: the aerial perspective (L_ap, T_ap) at the clouds' extinction-weighted mean distance gives
 // L' = T_ap·L + (1 - T)·L_ap·E (the air in front of the clouds, which the sky behind them already held,
 // is no longer attenuated by them).
-// Variants: COLOR_RGBA32F (the color format), ATMOSPHERE; SCATTER writes (L', T) into the march's own
-// image at its extent (reduced resolution or temporal: upsample.comp composites it), TEMPORAL also the
-// texel's distances (clouds/distances.glsl): the reprojection distance (the clouds' mean distance, or
-// where the ray ends when it meets none; -1 for a NaN depth: no history) and the surface's.
+// Variant COLOR_RGBA32F: the color format. The rest are specialization constants (clouds_shared.h), so
+// that one shader serves every frame and the compiler drops what a frame does not take: kCloudAtmosphere;
+// kCloudScatter writes (L', T) into the march's own image at its extent (reduced resolution or temporal:
+// upsample.comp composites it), kCloudTemporal also the texel's distances (clouds/distances.glsl): the
+// reprojection distance (the clouds' mean distance, or where the ray ends when it meets none; -1 for a
+// NaN depth: no history) and the surface's. Every binding is in the layout whatever the constants; those
+// a frame does not use hold stand-ins, never accessed.
 #extension GL_GOOGLE_include_directive : require
 
 #include "clouds/clouds_shared.h"
-#ifdef ATMOSPHERE
 #include "common/air_shared.h"
-#endif
+
+layout(constant_id = kCloudConstantAtmosphere) const bool kCloudAtmosphere = false;
+layout(constant_id = kCloudConstantScatter) const bool kCloudScatter = false;
+layout(constant_id = kCloudConstantTemporal) const bool kCloudTemporal = false;
 
 layout(local_size_x = kCloudGroupSize, local_size_y = kCloudGroupSize) in;
 
@@ -30,12 +35,9 @@ layout(binding = kCloudBindingBaseNoise) uniform sampler3D baseNoise;
 layout(binding = kCloudBindingDetailNoise) uniform sampler3D detailNoise;
 layout(binding = kCloudBindingCoverageMap) uniform sampler2D coverageMap;
 #include "clouds/images.glsl"
-#if defined(SCATTER) && defined(TEMPORAL)
 layout(binding = kCloudBindingDistance, r32ui) uniform restrict writeonly uimage2D distanceOut;
 #include "clouds/distances.glsl"
-#endif
 
-#ifdef ATMOSPHERE
 layout(binding = kCloudBindingAtmosphere, std140) uniform Atmosphere {
     AtmosphereUniforms atmo;
 };
@@ -49,7 +51,6 @@ layout(binding = kCloudBindingMultiScattering) uniform sampler3D multiScattering
 #include "common/air/aerial_perspective_lookup.glsl"
 #include "common/air/march.glsl"
 #include "common/air/aerial_perspective_far.glsl"
-#endif
 
 #include "clouds/ray.glsl"
 #include "clouds/density.glsl"
@@ -97,22 +98,19 @@ void main() {
     }
     bool met = tau > 0.0;  // any extinction on the ray
     float meanDistance = weightSum > 0.0 ? weightedDistance / weightSum : ray.far;
-#ifdef ATMOSPHERE
-    if (met) {
+    if (kCloudAtmosphere && met) {
         vec3 apL, apT;
         aerialPerspectiveAnyDistance(d * meanDistance, kCloudFarAerialPerspectiveSteps, apL, apT);
         L = apT * L + oneMinusExp(tau) * apL * atmo.sun.rgb;
     }
-#endif
-#ifdef SCATTER
-    imageStore(scatterImage, ivec2(texel), vec4(min(L, vec3(kColorMax)), T));
-#ifdef TEMPORAL
-    imageStore(distanceOut, ivec2(texel),
-               uvec4(packCloudDistances(isnan(ray.surface) ? -1.0 : meanDistance, ray.surface)));
-#endif
-#else
-    vec4 color = imageLoad(colorIn, ivec2(texel));
-    vec3 result = met ? compositeOver(color.rgb, T, L) : color.rgb;
-    imageStore(colorOut, ivec2(texel), vec4(result, color.a));
-#endif
+    if (kCloudScatter) {
+        imageStore(scatterImage, ivec2(texel), vec4(min(L, vec3(kColorMax)), T));
+        if (kCloudTemporal)
+            imageStore(distanceOut, ivec2(texel),
+                       uvec4(packCloudDistances(isnan(ray.surface) ? -1.0 : meanDistance, ray.surface)));
+    } else {
+        vec4 color = imageLoad(colorIn, ivec2(texel));
+        vec3 result = met ? compositeOver(color.rgb, T, L) : color.rgb;
+        imageStore(colorOut, ivec2(texel), vec4(result, color.a));
+    }
 }

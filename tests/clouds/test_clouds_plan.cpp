@@ -3,6 +3,7 @@
 // temporal or shadows: the march alone); coverage or density 0 runs nothing; with the atmosphere the march
 // follows its passes and reads its LUTs; the fogs read the shadow map after it is made; the recorded passes
 // are the plan's; the resources' bytes.
+#include "core/context_impl.h"
 #include "fog_harness.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -159,6 +160,34 @@ TEST_F(CloudsPlanTest, WithTheAtmosphereTheMarchReadsItsLuts) {
     }
     // Two effects: the depth is unprojected once, before both (docs/architecture.md, "Shared inputs").
     EXPECT_EQ(planAndRun(), (Passes{"postfx.view_distance", "atmosphere.apply", "clouds.march"})) << "still";
+}
+
+// The march is one shader whose atmosphere, own image and temporal distances are specialization
+// constants: a frame switching between its 6 combinations keeps at most 4 pipelines of it (the graph's
+// rule per description), the plan still the combination's.
+TEST_F(CloudsPlanTest, SwitchingTheMarchsCombinationsKeepsAtMostFourPipelines) {
+    const postfx::core::FrameGraph& graph = postfx::ContextAccess::of(*context).graph;
+    frame.clouds.castShadows = false;
+    for (int round = 0; round < 2; ++round)
+        for (bool atmosphere : {false, true})
+            for (int mode = 0; mode < 3; ++mode) {  // composite, own image, own image with temporal
+                frame.atmosphere.enabled = atmosphere;
+                frame.clouds.resolutionScale = mode == 0 ? 1.0f : 0.5f;
+                frame.clouds.temporal.enabled = mode == 2;
+                const Passes passes = planAndRun();
+                const bool upsample =
+                    std::find(passes.begin(), passes.end(), "clouds.upsample") != passes.end();
+                const bool temporal =
+                    std::find(passes.begin(), passes.end(), "clouds.temporal") != passes.end();
+                EXPECT_EQ(upsample, mode != 0) << atmosphere << mode;
+                EXPECT_EQ(temporal, mode == 2) << atmosphere << mode;
+                EXPECT_EQ(bytesOf("clouds.no_atmosphere"), atmosphere ? 0u : 2u) << atmosphere << mode;
+                EXPECT_EQ(bytesOf("clouds.no_distance"), mode == 2 ? 0u : 4u) << atmosphere << mode;
+                const size_t held = graph.heldPipelines("clouds.march");
+                EXPECT_GE(held, 1u);
+                EXPECT_LE(held, 4u) << atmosphere << mode;
+            }
+    EXPECT_EQ(graph.heldPipelines("clouds.march"), 4u);
 }
 
 }  // namespace

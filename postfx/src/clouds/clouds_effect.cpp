@@ -27,42 +27,16 @@ constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
 
+// The march's layout has every binding whatever its specialization constants (marchConstants): those a
+// frame does not use hold stand-ins, never accessed (shaders/clouds/march.comp).
 constexpr core::Binding kMarchBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},   {gpu::kCloudBindingColorIn, kStorage},
-    {gpu::kCloudBindingColorOut, kStorage},   {gpu::kCloudBindingDepth, kSampled},
-    {gpu::kCloudBindingBaseNoise, kSampled},  {gpu::kCloudBindingDetailNoise, kSampled},
-    {gpu::kCloudBindingCoverageMap, kSampled}};
-constexpr core::Binding kMarchAtmosphereBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},         {gpu::kCloudBindingColorIn, kStorage},
     {gpu::kCloudBindingColorOut, kStorage},         {gpu::kCloudBindingDepth, kSampled},
     {gpu::kCloudBindingBaseNoise, kSampled},        {gpu::kCloudBindingDetailNoise, kSampled},
     {gpu::kCloudBindingCoverageMap, kSampled},      {gpu::kCloudBindingAtmosphere, kUniform},
     {gpu::kCloudBindingTransmittanceLut, kSampled}, {gpu::kCloudBindingApScattering, kSampled},
-    {gpu::kCloudBindingApTransmittance, kSampled},  {gpu::kCloudBindingMultiScattering, kSampled}};
-// The march into its own image (SCATTER): no color images; with TEMPORAL the distance image too.
-constexpr core::Binding kScatterBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},    {gpu::kCloudBindingScatter, kStorage},
-    {gpu::kCloudBindingDepth, kSampled},       {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingCoverageMap, kSampled}};
-constexpr core::Binding kScatterAtmosphereBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},       {gpu::kCloudBindingScatter, kStorage},
-    {gpu::kCloudBindingDepth, kSampled},          {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled},    {gpu::kCloudBindingCoverageMap, kSampled},
-    {gpu::kCloudBindingAtmosphere, kUniform},     {gpu::kCloudBindingTransmittanceLut, kSampled},
-    {gpu::kCloudBindingApScattering, kSampled},   {gpu::kCloudBindingApTransmittance, kSampled},
-    {gpu::kCloudBindingMultiScattering, kSampled}};
-constexpr core::Binding kScatterTemporalBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},    {gpu::kCloudBindingScatter, kStorage},
-    {gpu::kCloudBindingDepth, kSampled},       {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled}, {gpu::kCloudBindingCoverageMap, kSampled},
-    {gpu::kCloudBindingDistance, kStorage}};
-constexpr core::Binding kScatterTemporalAtmosphereBindings[] = {
-    {gpu::kCloudBindingUniforms, kUniform},        {gpu::kCloudBindingScatter, kStorage},
-    {gpu::kCloudBindingDepth, kSampled},           {gpu::kCloudBindingBaseNoise, kSampled},
-    {gpu::kCloudBindingDetailNoise, kSampled},     {gpu::kCloudBindingCoverageMap, kSampled},
-    {gpu::kCloudBindingAtmosphere, kUniform},      {gpu::kCloudBindingTransmittanceLut, kSampled},
-    {gpu::kCloudBindingApScattering, kSampled},    {gpu::kCloudBindingApTransmittance, kSampled},
-    {gpu::kCloudBindingMultiScattering, kSampled}, {gpu::kCloudBindingDistance, kStorage}};
+    {gpu::kCloudBindingApTransmittance, kSampled},  {gpu::kCloudBindingMultiScattering, kSampled},
+    {gpu::kCloudBindingScatter, kStorage},          {gpu::kCloudBindingDistance, kStorage}};
 constexpr core::Binding kTemporalBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},   {gpu::kCloudBindingScatter, kStorage},
     {gpu::kCloudBindingDistance, kStorage},   {gpu::kCloudBindingHistoryIn, kStorage},
@@ -80,23 +54,10 @@ constexpr core::Binding kShadowBindings[] = {{gpu::kCloudBindingUniforms, kUnifo
                                              {gpu::kCloudBindingShadowOut, kStorage}};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
 
-// [mode: composite, scatter, scatter + temporal][atmosphere][rgba32]
-const core::ComputePipelineDesc kMarch[3][2][2] = {
-    {{{"clouds.march", spirv::clouds_march_comp, kMarchBindings},
-      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F, kMarchBindings}},
-     {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE, kMarchAtmosphereBindings},
-      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE, kMarchAtmosphereBindings}}},
-    {{{"clouds.march", spirv::clouds_march_comp_SCATTER, kScatterBindings},
-      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_SCATTER, kScatterBindings}},
-     {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE_SCATTER, kScatterAtmosphereBindings},
-      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE_SCATTER,
-       kScatterAtmosphereBindings}}},
-    {{{"clouds.march", spirv::clouds_march_comp_SCATTER_TEMPORAL, kScatterTemporalBindings},
-      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_SCATTER_TEMPORAL, kScatterTemporalBindings}},
-     {{"clouds.march", spirv::clouds_march_comp_ATMOSPHERE_SCATTER_TEMPORAL,
-       kScatterTemporalAtmosphereBindings},
-      {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F_ATMOSPHERE_SCATTER_TEMPORAL,
-       kScatterTemporalAtmosphereBindings}}}};
+// [rgba32]: a storage image's format is the shader's own (COLOR_RGBA32F), not a specialization constant.
+const core::ComputePipelineDesc kMarch[2] = {
+    {"clouds.march", spirv::clouds_march_comp, kMarchBindings},
+    {"clouds.march", spirv::clouds_march_comp_COLOR_RGBA32F, kMarchBindings}};
 const core::ComputePipelineDesc kTemporal[2] = {
     {"clouds.temporal", spirv::clouds_temporal_comp, kTemporalBindings},
     {"clouds.temporal", spirv::clouds_temporal_comp_COLOR_RGBA32F, kTemporalBindings}};
@@ -113,6 +74,17 @@ const core::ComputePipelineDesc kDetailNoisePass{"clouds.detail_noise", spirv::c
 
 uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kCloudGroupSize - 1) / gpu::kCloudGroupSize;
+}
+
+// The march's specialization constants (clouds_shared.h): a pipeline per combination a frame uses, the
+// graph keeping the last 4 (FrameBuilder::constants).
+core::PipelineConstants marchConstants(bool atmosphere, bool scatter, bool temporal) {
+    core::PipelineConstants c;
+    c.values[gpu::kCloudConstantAtmosphere] = atmosphere;
+    c.values[gpu::kCloudConstantScatter] = scatter;
+    c.values[gpu::kCloudConstantTemporal] = temporal;
+    c.count = 3;
+    return c;
 }
 
 // Everything the shadow map's texels depend on: the field where it is sampled (the shape, the density's
@@ -361,8 +333,25 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kCloudBindingShadowOut, shadowMap, Use::StorageWrite);
     }
 
-    b.pass(kMarch[scatter ? 1 + temporal : 0][withAtmosphere][rgba32], groupsFor(march.x), groupsFor(march.y),
-           1)
+    // Stand-ins at the march's bindings this frame does not use (never accessed): a 2D array for the
+    // aerial perspective's transmittance without the atmosphere, an r32ui image for the distances
+    // without temporal.
+    core::ImageRef noAtmosphere, noDistance;
+    if (!withAtmosphere) {
+        core::ImageDesc array = one;
+        array.type = VK_IMAGE_TYPE_2D;
+        array.layers = 2;
+        noAtmosphere = b.transientImage(kNoAtmosphere, array);
+    }
+    if (!temporal) {
+        core::ImageDesc distance;
+        distance.format = VK_FORMAT_R32_UINT;
+        distance.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+        noDistance = b.transientImage(kNoDistance, distance);
+    }
+
+    b.pass(kMarch[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
+        .constants(marchConstants(withAtmosphere, scatter, temporal))
         .bind(gpu::kCloudBindingUniforms, uniforms)
         .bind(gpu::kCloudBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kCloudBindingBaseNoise, base, noiseUse, SamplerKind::LinearRepeat)
@@ -383,10 +372,19 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
                   Use::Sampled, SamplerKind::LinearClamp)
             .bind(gpu::kCloudBindingMultiScattering, multiScattering.valid() ? multiScattering : msStandIn,
                   multiScattering.valid() ? Use::Sampled : Use::BoundOnly, SamplerKind::LinearClamp);
+    } else {  // of the bindings' kinds: the clouds' uniforms, the depth, the base noise (3D), the 2D array
+        b.bind(gpu::kCloudBindingAtmosphere, uniforms)
+            .bind(gpu::kCloudBindingTransmittanceLut, depthInput.image, Use::BoundOnly)
+            .bind(gpu::kCloudBindingApScattering, base, Use::BoundOnly)
+            .bind(gpu::kCloudBindingApTransmittance, noAtmosphere, Use::BoundOnly)
+            .bind(gpu::kCloudBindingMultiScattering, base, Use::BoundOnly);
     }
-    if (!scatter) {  // full size without temporal: the march composites
+    if (!temporal) b.bind(gpu::kCloudBindingDistance, noDistance, Use::StorageBoundOnly);
+    if (!scatter) {  // full size without temporal: the march composites (the target stands in for its image)
+        const core::ImageRef target = b.compositeTarget();
         b.bind(gpu::kCloudBindingColorIn, b.compositeSource(), Use::StorageRead)
-            .bind(gpu::kCloudBindingColorOut, b.compositeTarget(), Use::StorageWrite);
+            .bind(gpu::kCloudBindingColorOut, target, Use::StorageWrite)
+            .bind(gpu::kCloudBindingScatter, target, Use::StorageBoundOnly);
         return Status::success();
     }
     core::ImageDesc marchDesc;
@@ -394,7 +392,10 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     marchDesc.extent = {march.x, march.y, 1};
     marchDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
     const core::ImageRef scatterImage = b.transientImage(kScatter, marchDesc);
-    b.bind(gpu::kCloudBindingScatter, scatterImage, Use::StorageWrite);
+    // The march's image stands in for the color it does not composite.
+    b.bind(gpu::kCloudBindingScatter, scatterImage, Use::StorageWrite)
+        .bind(gpu::kCloudBindingColorIn, scatterImage, Use::StorageBoundOnly)
+        .bind(gpu::kCloudBindingColorOut, scatterImage, Use::StorageBoundOnly);
     core::ImageRef result = scatterImage;
     if (temporal) {
         core::ImageDesc historyDesc = marchDesc;  // RGBA32F: in half, small updates would be lost

@@ -17,7 +17,11 @@ inline constexpr core::ResourceId kBaseNoise{"clouds.base_noise"};      // r8 3D
 inline constexpr core::ResourceId kDetailNoise{"clouds.detail_noise"};  // r8 3D, Worley fBm (persistent)
 inline constexpr core::ResourceId kNoNoise{"clouds.no_noise"};          // 1-texel stand-in, noise off
 inline constexpr core::ResourceId kNoCoverageMap{"clouds.no_coverage_map"};  // 1-texel stand-in, no map
-inline constexpr core::ResourceId kUniforms{"clouds.uniforms"};              // CloudUniforms
+// Stand-ins at the march's bindings a frame does not use: without the atmosphere the aerial perspective's
+// transmittance (a 2D array of two 1-texel layers), without temporal the distance image (1 r32ui texel).
+inline constexpr core::ResourceId kNoAtmosphere{"clouds.no_atmosphere"};
+inline constexpr core::ResourceId kNoDistance{"clouds.no_distance"};
+inline constexpr core::ResourceId kUniforms{"clouds.uniforms"};  // CloudUniforms
 // Reduced resolution or temporal (docs/effects/clouds.md, "Resolution and temporal"): the march's (L, T)
 // and reprojection distance at its extent, two accumulated (L, T) and two distance images read and
 // written in turn, and the TemporalUniforms.

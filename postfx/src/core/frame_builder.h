@@ -46,6 +46,8 @@ enum class Use : uint8_t {
     StorageReadWrite,  // storage image, read and written
     Sampled,           // combined image sampler, read
     BoundOnly,         // combined image sampler bound because the pipeline's layout has it, never read
+    StorageBoundOnly,  // storage image bound because the pipeline's layout has it, never accessed (the
+                       // shader's code for it is off, e.g. by a specialization constant)
     Uniform,           // uniform buffer: this frame's slot
 };
 
@@ -179,7 +181,7 @@ public:
     FrameBuilder& bind(uint32_t binding, BufferRef buffer);
     FrameBuilder& push(const void* data, uint32_t bytes);  // at most 128 bytes
     // The pass's specialization constants (constant_id 0, 1, ...): one pipeline per distinct set, created
-    // the first frame it is recorded.
+    // the first frame it is recorded; the last 4 used of a description are kept.
     FrameBuilder& constants(const PipelineConstants& constants);
 
 private:

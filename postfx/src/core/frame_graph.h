@@ -71,6 +71,9 @@ public:
 
     // Objects held now (for tests): owned images, uniform rings and pipelines.
     size_t heldObjects() const { return images_.size() + buffers_.size() + pipelines_.size(); }
+    // Pipelines held now whose description is named `name` (for tests): its specializations, for every
+    // description of that name.
+    size_t heldPipelines(const char* name) const;
 
 private:
     friend class FrameBuilder;

@@ -15,7 +15,8 @@ inline bool writes(Use u) {
     return u == Use::StorageWrite || u == Use::StorageReadWrite;
 }
 inline bool storage(Use u) {
-    return u == Use::StorageRead || u == Use::StorageWrite || u == Use::StorageReadWrite;
+    return u == Use::StorageRead || u == Use::StorageWrite || u == Use::StorageReadWrite ||
+           u == Use::StorageBoundOnly;
 }
 inline bool isImage(const ResourceDecl& r) {
     return r.kind != ResourceDecl::Kind::Uniform;
@@ -61,9 +62,12 @@ inline VkDeviceSize slotBytes(uint32_t bytes) {
 // What one pass does with one resource, merged over its bindings.
 struct Merged {
     bool read = false, write = false, storage = false, sampled = false, discard = true;
-    bool bound = false;  // bound but declared unread (Use::BoundOnly): not a read in the plan, but
-                         // synchronized as one (validation counts every statically used binding)
+    // Bound but declared unaccessed (Use::BoundOnly, Use::StorageBoundOnly): not a read or write in the
+    // plan, but synchronized as the shader's code could access it (validation counts every statically
+    // used binding): a sampled image as a read, a storage image as a read and a write.
+    bool bound = false, boundStorage = false;
     bool synchronizedRead() const { return read || bound; }
+    bool synchronizedWrite() const { return write || boundStorage; }
 };
 
 inline Merged merge(const Frame& f, const PassDecl& p, uint16_t resource) {
@@ -75,8 +79,9 @@ inline Merged merge(const Frame& f, const PassDecl& p, uint16_t resource) {
         m.write |= writes(x.use);
         m.storage |= storage(x.use);
         m.sampled |= x.use == Use::Sampled || x.use == Use::BoundOnly;
-        m.bound |= x.use == Use::BoundOnly;
-        if (x.use != Use::StorageWrite) m.discard = false;
+        m.bound |= x.use == Use::BoundOnly || x.use == Use::StorageBoundOnly;
+        m.boundStorage |= x.use == Use::StorageBoundOnly;
+        if (x.use != Use::StorageWrite && x.use != Use::StorageBoundOnly) m.discard = false;
     }
     m.discard = m.discard && m.write;
     return m;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <string>
+#include <string_view>
 
 namespace postfx::core {
 
@@ -44,6 +45,12 @@ void FrameGraph::retireOldestVariant(const ComputePipelineDesc* desc, uint64_t f
     if (variants < kMaxVariantsPerPipeline || oldest == pipelines_.end()) return;
     retirement.retire(frameIndex, std::move(oldest->pipeline));
     pipelines_.erase(oldest);
+}
+
+size_t FrameGraph::heldPipelines(const char* name) const {
+    return size_t(std::count_if(pipelines_.begin(), pipelines_.end(), [&](const CachedPipeline& c) {
+        return std::string_view(c.desc->name) == name;
+    }));
 }
 
 // The pipelines of the compiled frame's live passes: created when first recorded, an effect's released

@@ -118,15 +118,15 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
             if (r.kind == ResourceDecl::Kind::Host) {
                 const size_t h = size_t(r.host);
                 if ((m.synchronizedRead() && hostPendingWrite[h]) ||
-                    (m.write && (hostPendingWrite[h] || hostReadSinceWrite[h])))
+                    (m.synchronizedWrite() && (hostPendingWrite[h] || hostReadSinceWrite[h])))
                     batch.computeMemory(hostPendingWrite[h] ? VK_ACCESS_SHADER_WRITE_BIT : 0,
                                         (m.synchronizedRead() ? VK_ACCESS_SHADER_READ_BIT : 0) |
-                                            (m.write ? VK_ACCESS_SHADER_WRITE_BIT : 0));
+                                            (m.synchronizedWrite() ? VK_ACCESS_SHADER_WRITE_BIT : 0));
             } else if (owned(r)) {
                 OwnedImage& o = *resourceImages_[x.resource];
                 const VkImageLayout layout = ownedLayout(m);
                 const bool hazard = (m.synchronizedRead() && o.pendingWrite) ||
-                                    (m.write && (o.pendingWrite || o.readSinceWrite));
+                                    (m.synchronizedWrite() && (o.pendingWrite || o.readSinceWrite));
                 if (layout != o.layout || hazard) {
                     ImageTransition t;
                     t.image = o.image->handle();
@@ -137,7 +137,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     t.srcAccess = o.pendingWrite ? VK_ACCESS_SHADER_WRITE_BIT : 0;
                     t.dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
                     t.dstAccess = (m.synchronizedRead() ? VK_ACCESS_SHADER_READ_BIT : 0) |
-                                  (m.write ? VK_ACCESS_SHADER_WRITE_BIT : 0);
+                                  (m.synchronizedWrite() ? VK_ACCESS_SHADER_WRITE_BIT : 0);
                     batch.add(t);
                     o.layout = layout;
                     o.pendingWrite = false;
@@ -178,7 +178,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                 }
             }
             if (!pending) continue;
-            if (m.write) {
+            if (m.synchronizedWrite()) {
                 *pending = true;
                 *readSince = false;
             } else if (m.synchronizedRead()) {
