@@ -3,8 +3,8 @@
 // the atmosphere's LUT settings); the wind moves the history instead of resetting it, and the shadow map,
 // the accumulation's own settings and quality (applied before) do not key it.
 #include "clouds/clouds_settings.h"
-#include "core/checks.h"
 #include "common/medium_table.h"
+#include "core/checks.h"
 
 #include <postfx/clouds.h>
 
