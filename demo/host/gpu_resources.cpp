@@ -1,5 +1,8 @@
 #include "host/gpu_resources.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace demo {
 namespace {
 
@@ -30,6 +33,35 @@ bool allocate(const VulkanHost& host, const VkMemoryRequirements& req, VkMemoryP
 }
 
 }  // namespace
+
+bool createDescriptorSet(VkDevice device, std::span<const VkDescriptorSetLayoutBinding> bindings,
+                         VkDescriptorSetLayout& layout, VkDescriptorPool& pool, VkDescriptorSet& set,
+                         std::string& error) {
+    VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    lci.bindingCount = uint32_t(bindings.size());
+    lci.pBindings = bindings.data();
+    if (!vkCheck(vkCreateDescriptorSetLayout(device, &lci, nullptr, &layout), "vkCreateDescriptorSetLayout",
+                 error))
+        return false;
+    std::vector<VkDescriptorPoolSize> sizes;  // one per descriptor type, its bindings' count summed
+    for (const VkDescriptorSetLayoutBinding& b : bindings) {
+        auto it = std::find_if(sizes.begin(), sizes.end(),
+                               [&](const VkDescriptorPoolSize& s) { return s.type == b.descriptorType; });
+        if (it == sizes.end()) it = sizes.insert(sizes.end(), {b.descriptorType, 0});
+        it->descriptorCount += b.descriptorCount;
+    }
+    VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pci.maxSets = 1;
+    pci.poolSizeCount = uint32_t(sizes.size());
+    pci.pPoolSizes = sizes.data();
+    if (!vkCheck(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "vkCreateDescriptorPool", error))
+        return false;
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = pool;
+    ai.descriptorSetCount = 1;
+    ai.pSetLayouts = &layout;
+    return vkCheck(vkAllocateDescriptorSets(device, &ai, &set), "vkAllocateDescriptorSets", error);
+}
 
 bool vkCheck(VkResult r, const char* what, std::string& error) {
     if (r == VK_SUCCESS) return true;

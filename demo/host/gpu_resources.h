@@ -41,6 +41,12 @@ bool createShaderModule(VkDevice device, std::span<const uint32_t> spirv, VkShad
 bool createComputePipeline(VkDevice device, std::span<const uint32_t> spirv, VkPipelineLayout layout,
                            const char* what, VkPipeline& out, std::string& error);
 
+// One descriptor set of `bindings` from a pool of its own, sized for exactly that set: its layout, pool
+// and set. The caller destroys the pool (which frees the set) and the layout.
+bool createDescriptorSet(VkDevice device, std::span<const VkDescriptorSetLayoutBinding> bindings,
+                         VkDescriptorSetLayout& layout, VkDescriptorPool& pool, VkDescriptorSet& set,
+                         std::string& error);
+
 // One image memory barrier (whole image, the image's aspect).
 void imageBarrier(VkCommandBuffer cmd, const GpuImage& image, VkImageLayout oldLayout,
                   VkImageLayout newLayout, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,

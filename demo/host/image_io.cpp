@@ -1,6 +1,6 @@
 // Image files of the demo: .exr (linear 32-bit float RGBA) and .png (tonemapped 8-bit sRGB), via
-// OpenImageIO.
-#include "host/renderer.h"
+// OpenImageIO. Built as a module of its own, loaded on first use (image_io.h says why).
+#include "host/image_io.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
@@ -52,9 +52,8 @@ bool write(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc 
     return true;
 }
 
-}  // namespace
-
-bool writeImage(const std::string& path, const ImageF& image, float ev100, std::string& error) {
+// `exposure`: the PNG's, from camera.ev100 (demo::exposureFromEv100, the loader computes it).
+bool writeWithOiio(const std::string& path, const ImageF& image, float exposure, std::string& error) {
     const std::string ext = lowerExtension(path);
     const size_t pixels = size_t(image.width) * image.height;
     if (pixels == 0 || image.rgba.size() != pixels * 4) {
@@ -69,8 +68,6 @@ bool writeImage(const std::string& path, const ImageF& image, float ev100, std::
         return write(path, spec, OIIO::TypeDesc::FLOAT, image.rgba.data(), error);
     }
     if (ext == ".png") {
-        // Photometric exposure (Lagarde & de Rousiers 2014): saturation-based, max luminance 1.2·2^EV100.
-        const float exposure = exposureFromEv100(ev100);
         std::vector<uint8_t> rgb(pixels * 3);
         for (size_t i = 0; i < pixels; ++i) {
             for (int c = 0; c < 3; ++c) {
@@ -87,7 +84,7 @@ bool writeImage(const std::string& path, const ImageF& image, float ev100, std::
 
 // .exr: linear RGBA as stored. .png: 8-bit sRGB decoded to linear display values in [0, 1] (not
 // scene radiance: the tonemap is not inverted). Missing alpha reads as 1, grey as R = G = B.
-bool readImage(const std::string& path, ImageF& image, std::string& error) {
+bool readWithOiio(const std::string& path, ImageF& image, std::string& error) {
     const std::string ext = lowerExtension(path);
     if (ext != ".exr" && ext != ".png") {
         error = unknownExtension(path);
@@ -124,4 +121,27 @@ bool readImage(const std::string& path, ImageF& image, std::string& error) {
     return true;
 }
 
+bool writePng8WithOiio(const std::string& path, uint32_t width, uint32_t height, uint32_t channels,
+                       const std::vector<uint8_t>& pixels, std::string& error) {
+    if (lowerExtension(path) != ".png") {
+        error = "writePng8: '" + path + "' is not a .png";
+        return false;
+    }
+    if (width == 0 || height == 0 || channels == 0 || channels > 4 ||
+        pixels.size() != size_t(width) * height * channels) {
+        error = "cannot write '" + path + "': " + std::to_string(pixels.size()) + " bytes for " +
+                std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(channels);
+        return false;
+    }
+    const OIIO::ImageSpec spec(int(width), int(height), int(channels), OIIO::TypeDesc::UINT8);
+    return write(path, spec, OIIO::TypeDesc::UINT8, pixels.data(), error);
+}
+
+}  // namespace
 }  // namespace demo
+
+extern "C" __attribute__((visibility("default"))) const demo::ImageIoFunctions* postfx_demo_image_io() {
+    static const demo::ImageIoFunctions functions{&demo::writeWithOiio, &demo::readWithOiio,
+                                                  &demo::writePng8WithOiio};
+    return &functions;
+}

@@ -46,27 +46,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
         {kBindingLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
         {kBindingCloudShadow, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
     }};
-    VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    lci.bindingCount = uint32_t(bindings.size());
-    lci.pBindings = bindings.data();
-    if (!vkCheck(vkCreateDescriptorSetLayout(device, &lci, nullptr, &setLayout_),
-                 "vkCreateDescriptorSetLayout", error))
-        return false;
-    const std::array<VkDescriptorPoolSize, 3> sizes{{{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 2},
-                                                     {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5},
-                                                     {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1}}};
-    VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pci.maxSets = 1;
-    pci.poolSizeCount = uint32_t(sizes.size());
-    pci.pPoolSizes = sizes.data();
-    if (!vkCheck(vkCreateDescriptorPool(device, &pci, nullptr, &pool_), "vkCreateDescriptorPool", error))
-        return false;
-    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    ai.descriptorPool = pool_;
-    ai.descriptorSetCount = 1;
-    ai.pSetLayouts = &setLayout_;
-    if (!vkCheck(vkAllocateDescriptorSets(device, &ai, &set_), "vkAllocateDescriptorSets", error))
-        return false;
+    if (!createDescriptorSet(device, bindings, setLayout_, pool_, set_, error)) return false;
 
     const VkDescriptorBufferInfo ubo{in.frameUniforms->buffer, 0, sizeof(FrameUniforms)};
     const VkDescriptorBufferInfo lightsUbo{in.lights->buffer, 0, sizeof(LightsUniforms)};

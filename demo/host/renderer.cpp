@@ -90,25 +90,7 @@ bool Renderer::Impl::createFrameSet(std::string& error) {
     const VkDevice device = host.device;
     const VkDescriptorSetLayoutBinding binding{shared::kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
                                                VK_SHADER_STAGE_VERTEX_BIT, nullptr};
-    VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    lci.bindingCount = 1;
-    lci.pBindings = &binding;
-    if (!vkCheck(vkCreateDescriptorSetLayout(device, &lci, nullptr, &frameSetLayout),
-                 "vkCreateDescriptorSetLayout", error))
-        return false;
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1};
-    VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pci.maxSets = 1;
-    pci.poolSizeCount = 1;
-    pci.pPoolSizes = &size;
-    if (!vkCheck(vkCreateDescriptorPool(device, &pci, nullptr, &framePool), "vkCreateDescriptorPool", error))
-        return false;
-    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    ai.descriptorPool = framePool;
-    ai.descriptorSetCount = 1;
-    ai.pSetLayouts = &frameSetLayout;
-    if (!vkCheck(vkAllocateDescriptorSets(device, &ai, &frameSet), "vkAllocateDescriptorSets", error))
-        return false;
+    if (!createDescriptorSet(device, {&binding, 1}, frameSetLayout, framePool, frameSet, error)) return false;
     const VkDescriptorBufferInfo info{frameUniforms.buffer, 0, sizeof(shared::FrameUniforms)};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = frameSet;

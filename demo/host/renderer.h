@@ -8,6 +8,7 @@
 // (1 when sun.shadows is false); pixels with no geometry get scene.sky.
 #pragma once
 
+#include "host/image_io.h"
 #include "host/vulkan_host.h"
 #include "scene/motion.h"
 #include "scene/scene.h"
@@ -47,12 +48,6 @@ struct RenderOptions {
 };
 
 // Linear RGBA32F pixels, row-major, top row first.
-struct ImageF {
-    uint32_t width = 0;
-    uint32_t height = 0;
-    std::vector<float> rgba;
-    const float* at(uint32_t x, uint32_t y) const { return &rgba[(size_t(y) * width + x) * 4]; }
-};
 
 // One of the renderer's images, as handed to postfx or to a window's blit/tonemap.
 struct ImageInfo {
@@ -178,13 +173,5 @@ private:
 
 // Divides the pre-exposure out of RGBA radiance (alpha untouched): physical units again.
 void unexpose(std::vector<float>& rgba, float preExposure);
-
-// Writes linear radiance: .exr as 32-bit float RGBA un-tonemapped (zip), .png as 8-bit RGB tonemapped:
-// exposure 1 / (1.2 · 2^ev100) (camera.ev100), ACES fitted curve (Narkowicz 2015), sRGB OETF.
-// Returns false with `error` on failure (an unknown extension is named).
-bool writeImage(const std::string& path, const ImageF& image, float ev100, std::string& error);
-// .exr -> linear RGBA as stored; .png -> sRGB decoded to linear display values in [0, 1] (the tonemap
-// is not inverted). Missing alpha reads as 1.
-bool readImage(const std::string& path, ImageF& image, std::string& error);
 
 }  // namespace demo

@@ -36,25 +36,7 @@ bool TonemapPass::create(const VulkanHost& host, const ImageInfo& hdr, std::stri
         {shared::kTonemapBindingOut, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, VK_SHADER_STAGE_COMPUTE_BIT,
          nullptr},
     }};
-    VkDescriptorSetLayoutCreateInfo lci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-    lci.bindingCount = uint32_t(bindings.size());
-    lci.pBindings = bindings.data();
-    if (!vkCheck(vkCreateDescriptorSetLayout(device_, &lci, nullptr, &setLayout_),
-                 "vkCreateDescriptorSetLayout", error))
-        return false;
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 2};
-    VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    pci.maxSets = 1;
-    pci.poolSizeCount = 1;
-    pci.pPoolSizes = &size;
-    if (!vkCheck(vkCreateDescriptorPool(device_, &pci, nullptr, &pool_), "vkCreateDescriptorPool", error))
-        return false;
-    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    ai.descriptorPool = pool_;
-    ai.descriptorSetCount = 1;
-    ai.pSetLayouts = &setLayout_;
-    if (!vkCheck(vkAllocateDescriptorSets(device_, &ai, &set_), "vkAllocateDescriptorSets", error))
-        return false;
+    if (!createDescriptorSet(device_, bindings, setLayout_, pool_, set_, error)) return false;
     const std::array<VkDescriptorImageInfo, 2> images{{
         {VK_NULL_HANDLE, hdr.view, VK_IMAGE_LAYOUT_GENERAL},
         {VK_NULL_HANDLE, output_.view, VK_IMAGE_LAYOUT_GENERAL},

@@ -19,15 +19,9 @@ layout(binding = kAtmosphereBindingSkyView) uniform sampler2D skyViewLut;
 layout(binding = kAtmosphereBindingApScattering) uniform sampler3D apScattering;
 layout(binding = kAtmosphereBindingApTransmittance) uniform sampler2DArray apTransmittance;
 layout(binding = kAtmosphereBindingDepth) uniform sampler2D depthTexture;
-#ifdef COLOR_RGBA32F
-layout(binding = kAtmosphereBindingColorIn, rgba32f) uniform restrict readonly image2D colorIn;
-layout(binding = kAtmosphereBindingColorOut, rgba32f) uniform restrict writeonly image2D colorOut;
-const float kColorMax = 3.402823466e38;
-#else
-layout(binding = kAtmosphereBindingColorIn, rgba16f) uniform restrict readonly image2D colorIn;
-layout(binding = kAtmosphereBindingColorOut, rgba16f) uniform restrict writeonly image2D colorOut;
-const float kColorMax = 65504.0;  // largest finite half: never write Inf
-#endif
+#include "common/color_format.glsl"
+layout(binding = kAtmosphereBindingColorIn, COLOR_FORMAT) uniform restrict readonly image2D colorIn;
+layout(binding = kAtmosphereBindingColorOut, COLOR_FORMAT) uniform restrict writeonly image2D colorOut;
 
 #include "common/air/model.glsl"
 #include "common/composite.glsl"

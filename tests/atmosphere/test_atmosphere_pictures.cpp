@@ -10,9 +10,9 @@
 #include "atmosphere/atmosphere_effect.h"
 #include "core/gpu_resources.h"
 #include "fog_harness.h"
+#include "host/image_io.h"
 #include "lut_readback.h"
 
-#include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
@@ -52,12 +52,8 @@ void writePng(const Picture& p, const std::string& path) {
     std::vector<uint8_t> bytes(p.rgb.size());
     for (size_t i = 0; i < bytes.size(); ++i)
         bytes[i] = uint8_t(std::lround(srgb(p.rgb[i]) * 255.0f));
-    auto out = OIIO::ImageOutput::create(path);
-    ASSERT_TRUE(out) << path;
-    OIIO::ImageSpec spec(int(p.width), int(p.height), 3, OIIO::TypeDesc::UINT8);
-    ASSERT_TRUE(out->open(path, spec) && out->write_image(OIIO::TypeDesc::UINT8, bytes.data()) &&
-                out->close())
-        << path << ": " << out->geterror();
+    std::string error;
+    ASSERT_TRUE(demo::writePng8(path, p.width, p.height, 3, bytes, error)) << error;
     std::printf("[ atmosphere ] wrote %s (%ux%u)\n", path.c_str(), p.width, p.height);
 }
 
@@ -131,13 +127,10 @@ protected:
         const Lut lut{readLutTexels(*host, gpu, *context, name)};
         if (std::getenv("POSTFX_PICTURES_RAW")) {  // the texels as float, slices stacked vertically
             const std::string path = outDir + "/" + name + ".raw.exr";
-            auto out = OIIO::ImageOutput::create(path);
-            OIIO::ImageSpec spec(int(lut.width), int(lut.height * std::max(lut.depth, 1u)), 4,
-                                 OIIO::TypeDesc::FLOAT);
-            if (out && out->open(path, spec)) {
-                out->write_image(OIIO::TypeDesc::FLOAT, lut.rgba.data());
-                out->close();
-            }
+            const demo::ImageF texels{lut.width, lut.height * std::max(lut.depth, 1u), lut.rgba};
+            std::string error;
+            if (!demo::writeImage(path, texels, 0.0f, error))
+                std::printf("[ atmosphere ] %s\n", error.c_str());
         }
         std::printf("[ atmosphere ] %s %ux%ux%u: max %g, mean %g\n", name, lut.width, lut.height, lut.depth,
                     maxRgb(lut), meanRgb(lut));

@@ -2,11 +2,14 @@
 
 #include "image_compare.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <vector>
 
 namespace test {
 
@@ -32,13 +35,10 @@ void expectMatchesGolden(const demo::ImageF& image, const std::string& group, co
     EXPECT_TRUE(demo::writeImage(actualPath, image, 15.0f, error)) << error;
     // Red: |actual - expected| summed over RGB, white at 500 (about 5% of a sunlit surface).
     const std::vector<float> diff = diffImage(image.rgba, expected.rgba, 500.0);
-    if (auto out = OIIO::ImageOutput::create(diffPath)) {
-        OIIO::ImageSpec spec(int(image.width), int(image.height), 4, OIIO::TypeDesc::UINT8);
-        if (out->open(diffPath, spec)) {
-            out->write_image(OIIO::TypeDesc::FLOAT, diff.data());
-            out->close();
-        }
-    }
+    std::vector<uint8_t> diffBytes(diff.size());
+    for (size_t i = 0; i < diff.size(); ++i)
+        diffBytes[i] = uint8_t(std::lround(std::clamp(diff[i], 0.0f, 1.0f) * 255.0f));
+    EXPECT_TRUE(demo::writePng8(diffPath, image.width, image.height, 4, diffBytes, error)) << error;
     ADD_FAILURE() << name << " differs from " << golden << ": " << stats.summary() << "; wrote " << actualPath
                   << " and " << diffPath;
 }

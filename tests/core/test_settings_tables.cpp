@@ -187,7 +187,7 @@ std::map<std::string, std::vector<std::string>> docRows(const std::string& path,
     return rows;
 }
 
-TEST(SettingsTables, DefaultsAreADefaultConstructedStructs) {
+TEST(CoreSettingsTables, DefaultsAreADefaultConstructedStructs) {
     for (const Table& t : tables()) {
         t.withDefault([&](void* s) {
             for (const SettingField& f : t.fields) {
@@ -204,7 +204,7 @@ TEST(SettingsTables, DefaultsAreADefaultConstructedStructs) {
     }
 }
 
-TEST(SettingsTables, MembersAndKeysAreUniqueAndSwitchesExist) {
+TEST(CoreSettingsTables, MembersAndKeysAreUniqueAndSwitchesExist) {
     for (const Table& t : tables()) {
         std::set<std::string> members, keys;
         for (const SettingField& f : t.fields) {
@@ -227,7 +227,7 @@ TEST(SettingsTables, MembersAndKeysAreUniqueAndSwitchesExist) {
     }
 }
 
-TEST(SettingsTables, DocsParameterTablesMatch) {
+TEST(CoreSettingsTables, DocsParameterTablesMatch) {
     for (const Table& t : tables()) {
         if (!t.doc) continue;
         const std::string path = std::string(POSTFX_SOURCE_DIR) + "/docs/effects/" + t.doc + ".md";

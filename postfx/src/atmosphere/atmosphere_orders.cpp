@@ -1,7 +1,7 @@
 // The "orders" multiple-scattering model in double (atmosphere_orders.h).
 #include "atmosphere/atmosphere_orders.h"
 
-#include "atmosphere/atmosphere_parallel.h"
+#include "common/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -126,7 +126,7 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
     const double groundRadius = m.groundRadius, topRadius = m.topRadius;
 
     for (uint32_t order = 1; order <= s.orders; ++order) {
-        parallelFor(uint32_t(cells), s.threads, [&](uint32_t cell) {
+        common::parallelFor(uint32_t(cells), s.threads, [&](uint32_t cell) {
             const uint32_t ir = cell / s.sunSize, is = cell % s.sunSize;
             const double y = double(ir) / (s.radiusSize - 1);
             const double r = groundRadius + y * y * (topRadius - groundRadius);

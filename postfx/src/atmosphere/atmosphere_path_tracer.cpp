@@ -1,12 +1,10 @@
 // The atmosphere's Monte Carlo path tracer (atmosphere_path_tracer.h).
 #include "atmosphere/atmosphere_path_tracer.h"
+#include "common/parallel.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <numbers>
-#include <thread>
 #include <vector>
 
 namespace postfx::atmosphere {
@@ -149,26 +147,6 @@ struct Tracer {
     }
 };
 
-template <class Task>
-void parallelFor(uint64_t count, uint32_t threads, const Task& task) {
-    std::atomic<uint64_t> next{0};
-    auto work = [&] {
-        for (uint64_t i; (i = next.fetch_add(1)) < count;)
-            task(i);
-    };
-    threads = uint32_t(std::min<uint64_t>(
-        threads ? threads : std::max(1u, std::thread::hardware_concurrency()), std::max<uint64_t>(count, 1)));
-    std::vector<std::thread> pool;
-    try {
-        for (uint32_t t = 1; t < threads; ++t)
-            pool.emplace_back(work);
-    } catch (const std::exception&) {
-    }
-    work();
-    for (std::thread& t : pool)
-        t.join();
-}
-
 }  // namespace
 
 PathTracerResult pathTraceViewRay(const Model& m, const TransmittanceTable& transmittance,
@@ -198,7 +176,7 @@ PathTracerResult pathTraceViewRay(const Model& m, const TransmittanceTable& tran
         const double collide = -std::expm1(-tauTotal[c]);  // probability of a collision on the view segment
         const double reachGround = std::exp(-tauTotal[c]);
         std::vector<double> sums(chunks), squares(chunks);
-        parallelFor(chunks, o.threads, [&](uint64_t chunk) {
+        common::parallelFor(chunks, o.threads, [&](uint64_t chunk) {
             uint64_t seed = o.seed * 0x9e3779b97f4a7c15ull + uint64_t(c) * 0x632be59bd9b4e019ull + chunk;
             Rng rng(splitmix(seed));
             const uint64_t begin = chunk * kChunk, end = std::min(paths, begin + kChunk);

@@ -2,7 +2,7 @@
 #include "atmosphere/atmosphere_reference.h"
 
 #include "atmosphere/atmosphere_orders.h"
-#include "atmosphere/atmosphere_parallel.h"
+#include "common/parallel.h"
 
 #include <algorithm>
 #include <atomic>
@@ -157,7 +157,7 @@ TransmittanceTable::TransmittanceTable(const Model& m, const TransmittanceTableO
     : model_(m), size_(glm::max(o.size, glm::uvec2(2))) {
     tau_.resize(size_t(size_.x) * size_.y);
     const uint32_t steps = std::max(1u, o.steps);
-    parallelFor(size_.y, o.threads, [&](uint32_t j) {
+    common::parallelFor(size_.y, o.threads, [&](uint32_t j) {
         for (uint32_t i = 0; i < size_.x; ++i) {
             const RadiusCosine rc =
                 transmittanceParamsFromUnit(m, {double(i) / (size_.x - 1), double(j) / (size_.y - 1)});
@@ -207,7 +207,7 @@ PsiTable::PsiTable(const Model& m, const TransmittanceTable& transmittance, cons
     psi.steps = std::max(1u, psi.steps);
     psi.directions = std::max(1u, psi.directions);
     const auto sunT = [&](const glm::dvec3& p, const glm::dvec3& s) { return transmittance.sun(p, s); };
-    parallelFor(heightSize_, o.threads, [&](uint32_t j) {
+    common::parallelFor(heightSize_, o.threads, [&](uint32_t j) {
         const double y = double(j) / (heightSize_ - 1);
         const double r = m.groundRadius + y * y * (m.topRadius - m.groundRadius);
         psiForSuns(m, r, muS, psi, sunT, std::span<glm::dvec3>(&psi_[size_t(j) * muSSize_], muSSize_));

@@ -5,6 +5,7 @@
 #include "atmosphere/atmosphere_orders.h"
 #include "atmosphere/atmosphere_reference.h"
 #include "atmosphere/atmosphere_settings.h"
+#include "common/parallel.h"
 #include "common/reference_image.h"
 #include "core/checks.h"
 
@@ -29,17 +30,8 @@ using detail::checkCount;
 constexpr uint32_t kMaxStepsPerPixel = 1u << 20;
 
 Status validate(const AtmosphereInputs& in) {
-    if (in.width == 0 || in.height == 0)
-        return invalid("AtmosphereInputs.width/height: " + std::to_string(in.width) + "x" +
-                       std::to_string(in.height) + " image is empty");
-    const uint64_t pixels = uint64_t(in.width) * in.height;
-    if (Status s = checkCount("AtmosphereInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s)
+    if (Status s = detail::checkImage("AtmosphereInputs", in.width, in.height, in.color, in.depth); !s)
         return s;
-    if (Status s = checkCount("AtmosphereInputs.depth", in.depth.size(), pixels, "width·height"); !s)
-        return s;
-    for (size_t i = 0; i < in.depth.size(); ++i)
-        if (!std::isfinite(in.depth[i]))
-            return invalid("AtmosphereInputs.depth: value " + std::to_string(i) + " is not finite");
     if (Status s = validateAtmosphereSettings(in.settings); !s) return s;
     if (Status s = core::checkLighting(in.sun, Vec3(0.0f), ""); !s) return s;
     if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
@@ -136,7 +128,7 @@ Status renderAtmosphere(const AtmosphereInputs& in, std::vector<float>& out) {
     base.psiTable = psi.get();
     base.ordersTable = orders.get();
 
-    detail::forEachRow(in.height, in.threads, [&](uint32_t j) {
+    common::parallelFor(in.height, in.threads, [&](uint32_t j) {
         for (uint32_t i = 0; i < in.width; ++i) {
             const size_t p = size_t(j) * in.width + i;
             const detail::PixelRay ray =

@@ -7,6 +7,7 @@
 #include "clouds/clouds_path_tracer.h"
 #include "common/air.h"
 #include "common/noise_cpu.h"
+#include "common/parallel.h"
 #include "common/reference_image.h"
 #include "core/checks.h"
 
@@ -28,16 +29,7 @@ constexpr uint32_t kMaxPathSamples = 1u << 24;
 constexpr uint32_t kMaxScatteringOrders = 1000000;
 
 Status validate(const CloudInputs& in) {
-    if (in.width == 0 || in.height == 0)
-        return invalid("CloudInputs.width/height: " + std::to_string(in.width) + "x" +
-                       std::to_string(in.height) + " image is empty");
-    const uint64_t pixels = uint64_t(in.width) * in.height;
-    if (Status s = checkCount("CloudInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s)
-        return s;
-    if (Status s = checkCount("CloudInputs.depth", in.depth.size(), pixels, "width·height"); !s) return s;
-    for (size_t i = 0; i < in.depth.size(); ++i)
-        if (!std::isfinite(in.depth[i]))
-            return invalid("CloudInputs.depth: value " + std::to_string(i) + " is not finite");
+    if (Status s = detail::checkImage("CloudInputs", in.width, in.height, in.color, in.depth); !s) return s;
     if (Status s = validateCloudSettings(in.settings); !s) return s;
     if (in.atmosphere.enabled)
         if (Status s = validateAtmosphereSettings(in.atmosphere); !s) return s;
@@ -144,7 +136,7 @@ Status renderClouds(const CloudInputs& in, std::vector<float>& out, std::vector<
     paths.seed = in.pathSeed;
     const glm::dmat4 clipToView = detail::clipToView(in.camera);
     const double farDepth = in.depthConvention.reversedZ ? 0.0 : 1.0;
-    detail::forEachRow(in.height, in.threads, [&](uint32_t j) {
+    common::parallelFor(in.height, in.threads, [&](uint32_t j) {
         for (uint32_t i = 0; i < in.width; ++i) {
             const size_t p = size_t(j) * in.width + i;
             const detail::PixelRay ray =

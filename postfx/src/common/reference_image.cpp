@@ -17,6 +17,22 @@ Status checkCount(const char* field, size_t count, uint64_t expected, const char
                          std::to_string(expected) + " (" + what + ")");
 }
 
+Status checkImage(const std::string& prefix, uint32_t width, uint32_t height, std::span<const float> color,
+                  std::span<const float> depth) {
+    if (width == 0 || height == 0)
+        return core::invalid(prefix + ".width/height: " + std::to_string(width) + "x" +
+                             std::to_string(height) + " image is empty");
+    const uint64_t pixels = uint64_t(width) * height;
+    if (Status s = checkCount((prefix + ".color").c_str(), color.size(), pixels * 4, "width·height·4"); !s)
+        return s;
+    if (Status s = checkCount((prefix + ".depth").c_str(), depth.size(), pixels, "width·height"); !s)
+        return s;
+    for (size_t i = 0; i < depth.size(); ++i)
+        if (!std::isfinite(depth[i]))
+            return core::invalid(prefix + ".depth: value " + std::to_string(i) + " is not finite");
+    return Status::success();
+}
+
 Status checkCloudShadow(const char* prefix, std::span<const float> texels, uint32_t width, uint32_t height,
                         const CloudShadowTransform& rows) {
     if (texels.empty()) return Status::success();

@@ -1,7 +1,8 @@
 // The image side of the CPU references, shared by the ray-marched fog's (fog_reference.cpp) and the
-// froxel fog's (froxel_fog/froxel_reference.cpp): pixel rays, the composite, rows spread over threads.
+// froxel fog's (froxel_fog/froxel_reference.cpp): pixel rays, the composite, the shared medium.
 #pragma once
 
+#include <postfx/atmosphere.h>
 #include <postfx/clouds.h>
 #include <postfx/fog.h>
 #include <postfx/inputs.h>
@@ -9,16 +10,16 @@
 #include <postfx/result.h>
 #include "common/air.h"
 #include "common/reference_model.h"
+#include "core/checks.h"
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
-#include <atomic>
+#include <cmath>
 #include <cstdint>
-#include <exception>
 #include <memory>
 #include <span>
-#include <thread>
+#include <string>
 #include <vector>
 
 namespace postfx::reference::detail {
@@ -26,10 +27,21 @@ namespace postfx::reference::detail {
 // InvalidArgument "<field>: <count> values, expected <expected> (<what>)" unless count == expected.
 Status checkCount(const char* field, size_t count, uint64_t expected, const char* what);
 
+// The image a reference composites onto (`prefix`: "FogInputs", "CloudInputs", ...): a non-empty
+// width×height, color of width·height·4 values, depth of width·height finite values.
+Status checkImage(const std::string& prefix, uint32_t width, uint32_t height, std::span<const float> color,
+                  std::span<const float> depth);
+
 // The clouds' shadow map of a reference's inputs (`prefix`: "FogInputs", "FroxelFogInputs"), when given:
 // width·height texels, each finite, and finite rows.
 Status checkCloudShadow(const char* prefix, std::span<const float> texels, uint32_t width, uint32_t height,
                         const CloudShadowTransform& rows);
+
+// Checks what both fogs' references read besides their settings (FogInputs, FroxelFogInputs: the same
+// field names; `prefix` their type's name, `effect` the settings' scene-file key): light, camera, time,
+// steps, the noise when on, the shadow map when given, the clouds' shadow map.
+template <class Inputs>
+Status checkMediumInputs(const std::string& prefix, const char* effect, const Inputs& in);
 
 // Rotation-only view: the view matrix with its translation column zeroed (the march is camera-relative).
 glm::dmat4 clipToView(const CameraInput& camera);
@@ -114,27 +126,38 @@ void fillMediumModel(MediumModel& m, const Inputs& in, const FogMedium& s, uint3
     if (in.atmosphere.enabled) m.atmosphere = common::makeAir(in.atmosphere);
 }
 
-// Runs `rowTask(j)` for rows 0..rows-1 on `threads` threads (0: all hardware threads). Rows are
-// independent, so the result does not depend on how they are shared out.
-template <class RowTask>
-void forEachRow(uint32_t rows, uint32_t threads, const RowTask& rowTask) {
-    std::atomic<uint32_t> nextRow{0};
-    auto work = [&] {
-        for (uint32_t j; (j = nextRow.fetch_add(1)) < rows;)
-            rowTask(j);
-    };
-    threads = std::min(threads ? threads : std::max(1u, std::thread::hardware_concurrency()), rows);
-    std::vector<std::thread> pool;
-    try {
-        pool.reserve(threads - 1);
-        for (uint32_t t = 1; t < threads; ++t)
-            pool.emplace_back(work);
-    } catch (const std::exception&) {
-        // Fewer threads than asked for: the ones running (and this one) take all rows.
+template <class Inputs>
+Status checkMediumInputs(const std::string& prefix, const char* effect, const Inputs& in) {
+    using core::invalid;
+    if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
+    if (Status s = validateAtmosphereSettings(in.atmosphere); !s) return s;
+    if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
+    if (!core::allFinite(clipToView(in.camera)))
+        return invalid("camera.projection: projection · view rotation is not invertible");
+    if (Status s = core::checkTime(in.timeSeconds, prefix + ".timeSeconds"); !s) return s;
+    if (in.stepsPerPixel == 0) return invalid(prefix + ".stepsPerPixel: 0 must be >= 1");
+    if (in.settings.noise.enabled) {
+        if (in.noiseSize == 0) return invalid(prefix + ".noiseSize: 0 with " + effect + ".noise enabled");
+        const uint64_t n = in.noiseSize;
+        if (Status s = checkCount((prefix + ".noise").c_str(), in.noise.size(), n * n * n, "noiseSize³"); !s)
+            return s;
     }
-    work();
-    for (std::thread& t : pool)
-        t.join();
+    if (!in.shadowDepth.empty()) {
+        const uint64_t texels = uint64_t(in.shadowWidth) * in.shadowHeight;
+        if (Status s = checkCount((prefix + ".shadowDepth").c_str(), in.shadowDepth.size(), texels,
+                                  "shadowWidth·shadowHeight");
+            !s)
+            return s;
+        if (Status s = core::checkShadowTransform(in.shadowWorldToClip, in.camera.position,
+                                                  prefix + ".shadowWorldToClip");
+            !s)
+            return s;
+        if (!(in.shadowDepthBias >= 0.0f) || !std::isfinite(in.shadowDepthBias))
+            return invalid(prefix + ".shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
+                           " must be finite and >= 0");
+    }
+    return checkCloudShadow(prefix.c_str(), in.cloudShadow, in.cloudShadowWidth, in.cloudShadowHeight,
+                            in.cloudShadowRows);
 }
 
 }  // namespace postfx::reference::detail

@@ -1,5 +1,6 @@
 // Double-precision CPU reference of the ray-marched fog: the model of docs/effects/fog.md evaluated
 // with a converged midpoint march (no jitter, no early cutoff), multithreaded over rows.
+#include "common/parallel.h"
 #include "common/reference_image.h"
 #include "common/reference_model.h"
 #include "core/checks.h"
@@ -28,51 +29,12 @@ using core::invalid;
 using detail::checkCount;
 using detail::clipToView;
 using detail::fillMediumModel;
-using detail::forEachRow;
 using detail::MediumModel;
 
 Status validate(const FogInputs& in) {
-    if (in.width == 0 || in.height == 0)
-        return invalid("FogInputs.width/height: " + std::to_string(in.width) + "x" +
-                       std::to_string(in.height) + " image is empty");
-    const uint64_t pixels = uint64_t(in.width) * in.height;
-    if (Status s = checkCount("FogInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s) return s;
-    if (Status s = checkCount("FogInputs.depth", in.depth.size(), pixels, "width·height"); !s) return s;
-    for (size_t i = 0; i < in.depth.size(); ++i)
-        if (!std::isfinite(in.depth[i]))
-            return invalid("FogInputs.depth: value " + std::to_string(i) + " is not finite");
+    if (Status s = detail::checkImage("FogInputs", in.width, in.height, in.color, in.depth); !s) return s;
     if (Status s = fog::validateSettings(in.settings); !s) return s;
-    if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
-    if (Status s = validateAtmosphereSettings(in.atmosphere); !s) return s;
-    if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
-    if (!allFinite(clipToView(in.camera)))
-        return invalid("camera.projection: projection · view rotation is not invertible");
-    if (Status s = core::checkTime(in.timeSeconds, "FogInputs.timeSeconds"); !s) return s;
-    if (in.stepsPerPixel == 0) return invalid("FogInputs.stepsPerPixel: 0 must be >= 1");
-    if (in.settings.noise.enabled) {
-        if (in.noiseSize == 0) return invalid("FogInputs.noiseSize: 0 with fog.noise enabled");
-        const uint64_t n = in.noiseSize;
-        if (Status s = checkCount("FogInputs.noise", in.noise.size(), n * n * n, "noiseSize³"); !s) return s;
-    }
-    if (!in.shadowDepth.empty()) {
-        const uint64_t texels = uint64_t(in.shadowWidth) * in.shadowHeight;
-        if (Status s = checkCount("FogInputs.shadowDepth", in.shadowDepth.size(), texels,
-                                  "shadowWidth·shadowHeight");
-            !s)
-            return s;
-        if (Status s = core::checkShadowTransform(in.shadowWorldToClip, in.camera.position,
-                                                  "FogInputs.shadowWorldToClip");
-            !s)
-            return s;
-        if (!(in.shadowDepthBias >= 0.0f) || !std::isfinite(in.shadowDepthBias))
-            return invalid("FogInputs.shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
-                           " must be finite and >= 0");
-    }
-    if (Status s = detail::checkCloudShadow("FogInputs", in.cloudShadow, in.cloudShadowWidth,
-                                            in.cloudShadowHeight, in.cloudShadowRows);
-        !s)
-        return s;
-    return Status::success();
+    return detail::checkMediumInputs("FogInputs", "fog", in);
 }
 
 // Everything the march reads, converted to double once.
@@ -250,7 +212,7 @@ Status renderFog(const FogInputs& in, std::vector<float>& out) {
         const Model m = makeModel(in);
         const glm::uvec2 size = fogMarchExtent(m.width, m.height, in.settings.resolutionScale);
         if (size.x == m.width && size.y == m.height) {
-            forEachRow(m.height, in.threads, [&](uint32_t j) {
+            common::parallelFor(m.height, in.threads, [&](uint32_t j) {
                 for (uint32_t i = 0; i < m.width; ++i) {
                     const size_t p = size_t(j) * m.width + i;
                     composite(scatterAlong(m, pixelRay(m, i, j, in.depth[p])), &in.color[p * 4],
@@ -265,7 +227,7 @@ Status renderFog(const FogInputs& in, std::vector<float>& out) {
             } catch (const std::bad_alloc&) {
                 return {Result::OutOfMemory, "reference::renderFog: cannot allocate the reduced march"};
             }
-            forEachRow(r.h, in.threads, [&](uint32_t j) {
+            common::parallelFor(r.h, in.threads, [&](uint32_t j) {
                 const uint32_t y = sourcePixel(j, m.height, r.h);
                 for (uint32_t i = 0; i < r.w; ++i) {
                     const uint32_t x = sourcePixel(i, m.width, r.w);
@@ -274,7 +236,7 @@ Status renderFog(const FogInputs& in, std::vector<float>& out) {
                     r.distance[size_t(j) * r.w + i] = ray.distance;
                 }
             });
-            forEachRow(m.height, in.threads, [&](uint32_t j) {
+            common::parallelFor(m.height, in.threads, [&](uint32_t j) {
                 for (uint32_t i = 0; i < m.width; ++i) {
                     const size_t p = size_t(j) * m.width + i;
                     const double distance = pixelRay(m, i, j, in.depth[p]).distance;

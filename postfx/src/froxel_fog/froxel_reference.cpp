@@ -2,6 +2,7 @@
 // local fog volumes, lit by the sun, ambient and local lights, evaluated continuously along each pixel's
 // ray with a converged midpoint march (no grid, no jitter), then the ray-marched fog's analytic tail.
 #include "common/medium.h"
+#include "common/parallel.h"
 #include "common/reference_image.h"
 #include "common/reference_model.h"
 #include "core/checks.h"
@@ -26,16 +27,8 @@ using detail::checkCount;
 constexpr double kPi = 3.14159265358979323846;
 
 Status validate(const FroxelFogInputs& in) {
-    if (in.width == 0 || in.height == 0)
-        return invalid("FroxelFogInputs.width/height: " + std::to_string(in.width) + "x" +
-                       std::to_string(in.height) + " image is empty");
-    const uint64_t pixels = uint64_t(in.width) * in.height;
-    if (Status s = checkCount("FroxelFogInputs.color", in.color.size(), pixels * 4, "width·height·4"); !s)
+    if (Status s = detail::checkImage("FroxelFogInputs", in.width, in.height, in.color, in.depth); !s)
         return s;
-    if (Status s = checkCount("FroxelFogInputs.depth", in.depth.size(), pixels, "width·height"); !s) return s;
-    for (size_t i = 0; i < in.depth.size(); ++i)
-        if (!std::isfinite(in.depth[i]))
-            return invalid("FroxelFogInputs.depth: value " + std::to_string(i) + " is not finite");
     if (Status s = validateFroxelFogSettings(in.settings); !s) return s;
     if (in.lights.size() > kMaxLocalLights)
         return invalid("FroxelFogInputs.lights: " + std::to_string(in.lights.size()) +
@@ -44,38 +37,7 @@ Status validate(const FroxelFogInputs& in) {
         if (Status s = core::checkLight(in.lights[i], "FroxelFogInputs.lights[" + std::to_string(i) + "]");
             !s)
             return s;
-    if (Status s = core::checkLighting(in.sun, in.ambient, ""); !s) return s;
-    if (Status s = validateAtmosphereSettings(in.atmosphere); !s) return s;
-    if (Status s = core::checkCamera(in.camera, "camera"); !s) return s;
-    if (!core::allFinite(detail::clipToView(in.camera)))
-        return invalid("camera.projection: projection · view rotation is not invertible");
-    if (Status s = core::checkTime(in.timeSeconds, "FroxelFogInputs.timeSeconds"); !s) return s;
-    if (in.stepsPerPixel == 0) return invalid("FroxelFogInputs.stepsPerPixel: 0 must be >= 1");
-    if (in.settings.noise.enabled) {
-        if (in.noiseSize == 0) return invalid("FroxelFogInputs.noiseSize: 0 with froxel_fog.noise enabled");
-        const uint64_t n = in.noiseSize;
-        if (Status s = checkCount("FroxelFogInputs.noise", in.noise.size(), n * n * n, "noiseSize³"); !s)
-            return s;
-    }
-    if (!in.shadowDepth.empty()) {
-        const uint64_t texels = uint64_t(in.shadowWidth) * in.shadowHeight;
-        if (Status s = checkCount("FroxelFogInputs.shadowDepth", in.shadowDepth.size(), texels,
-                                  "shadowWidth·shadowHeight");
-            !s)
-            return s;
-        if (Status s = core::checkShadowTransform(in.shadowWorldToClip, in.camera.position,
-                                                  "FroxelFogInputs.shadowWorldToClip");
-            !s)
-            return s;
-        if (!(in.shadowDepthBias >= 0.0f) || !std::isfinite(in.shadowDepthBias))
-            return invalid("FroxelFogInputs.shadowDepthBias: " + std::to_string(in.shadowDepthBias) +
-                           " must be finite and >= 0");
-    }
-    if (Status s = detail::checkCloudShadow("FroxelFogInputs", in.cloudShadow, in.cloudShadowWidth,
-                                            in.cloudShadowHeight, in.cloudShadowRows);
-        !s)
-        return s;
-    return Status::success();
+    return detail::checkMediumInputs("FroxelFogInputs", "froxel_fog", in);
 }
 
 double smoothstep(double e0, double e1, double x) {
@@ -244,7 +206,7 @@ Status renderFroxelFog(const FroxelFogInputs& in, std::vector<float>& out) {
         const bool empty =
             common::fogMediumEmpty(in.settings, in.settings.noise.enabled) && m.volumes.empty();
         if (!empty)
-            detail::forEachRow(m.height, in.threads, [&](uint32_t j) {
+            common::parallelFor(m.height, in.threads, [&](uint32_t j) {
                 for (uint32_t i = 0; i < m.width; ++i) {
                     const size_t p = size_t(j) * m.width + i;
                     const detail::PixelRay ray =
