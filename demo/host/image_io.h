@@ -1,9 +1,8 @@
 // Image files of the demo and the tests: RGBA float images, written and read through OpenImageIO.
 // OpenImageIO brings in about 260 shared libraries whose loading costs about half a second of CPU per
 // process, which every test process paid, most of them for no image file at all. So the functions here
-// load the module that does the work (image_io.cpp, libpostfx-demo-image-io.so, beside the program's
-// other libraries in the build) on first use, and a program that never reads or writes a file never
-// loads it.
+// load the module that does the work (image_io.cpp, libpostfx-demo-image-io.so in the build's
+// demo/host/) on first use, and a program that never reads or writes a file never loads it.
 #pragma once
 
 #include <cstdint>

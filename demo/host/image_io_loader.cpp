@@ -13,15 +13,20 @@ struct LoadedModule {
     std::string error;  // why it could not be loaded
 };
 
-// Found through the program's run path, which names the module's folder (demo/host/CMakeLists.txt).
-// Never unloaded: its libraries stay until the process ends, as a linked library's would.
+// Opened by its path in the build (POSTFX_DEMO_IMAGE_IO_MODULE, demo/host/CMakeLists.txt), else by its
+// name (LD_LIBRARY_PATH, the system's folders). Never unloaded: its libraries stay until the process
+// ends, as a linked library's would.
 const LoadedModule& module() {
     static const LoadedModule loaded = [] {
         LoadedModule m;
-        void* handle = dlopen(kImageIoModule, RTLD_NOW | RTLD_LOCAL);
+        void* handle = dlopen(POSTFX_DEMO_IMAGE_IO_MODULE, RTLD_NOW | RTLD_LOCAL);
         if (!handle) {
-            m.error = std::string("cannot load the image file module: ") + dlerror();
-            return m;
+            const std::string byPath = dlerror();
+            handle = dlopen(kImageIoModule, RTLD_NOW | RTLD_LOCAL);
+            if (!handle) {
+                m.error = "cannot load the image file module: " + byPath + "; " + dlerror();
+                return m;
+            }
         }
         using Entry = const ImageIoFunctions* (*)();
         const auto entry = reinterpret_cast<Entry>(dlsym(handle, kImageIoEntry));
