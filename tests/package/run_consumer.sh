@@ -36,12 +36,11 @@ package)
     ;;
 subdirectory)
     # One build of the library serves two ways of consuming it (CI time): the consumer builds postfx as
-    # its subdirectory, shared (BUILD_SHARED_LIBS) and installable (POSTFX_INSTALL), at -O1 (it tests
-    # the packaging and the exported symbols, not speed, and -O1 compiles faster: CI time), and
-    # runs what it built against it; then the installed shared library must export postfx's API only, and a second consumer
+    # its subdirectory, shared (BUILD_SHARED_LIBS) and installable (POSTFX_INSTALL), and runs what it built
+    # against it; then the installed shared library must export postfx's API only, and a second consumer
     # finds it with find_package and runs.
     configure_consumer -DPOSTFX_CONSUME=subdirectory -DPOSTFX_SOURCE_DIR="$source" -DBUILD_SHARED_LIBS=ON \
-        -DPOSTFX_INSTALL=ON -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG"
+        -DPOSTFX_INSTALL=ON -DCMAKE_BUILD_TYPE=Release
     build_and_run
     cmake --install "$work/consumer" --prefix "$work/prefix" >/dev/null
     so=$(ls "$work"/prefix/lib/libpostfx.so.* | head -n1)
