@@ -113,14 +113,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
             return r.recordFrame(cmd, gpuScene, frameIndex, fogOutput, error) && record();
         }();
         if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
-        vkResetFences(device, 1, &r.fences[slot]);
-        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-        si.commandBufferCount = 1;
-        si.pCommandBuffers = &cmd;
-        if (!vkCheck(vkQueueSubmit(r.host.queue, 1, &si, r.fences[slot]), "vkQueueSubmit", error)) {
-            r.broken = true;
-            return false;
-        }
+        if (!r.submit(cmd, slot, error)) return false;
         return vkCheck(vkWaitForFences(device, 1, &r.fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences",
                        error);
     };

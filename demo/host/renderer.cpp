@@ -266,14 +266,7 @@ bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
         const bool recorded = recordFrame(cmd, state, frameIndex, error);
         if (recorded && f + 1 == r.options.frames) r.recordReadback(cmd);
         if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
-        vkResetFences(device, 1, &r.fences[slot]);
-        VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-        si.commandBufferCount = 1;
-        si.pCommandBuffers = &cmd;
-        if (!vkCheck(vkQueueSubmit(r.host.queue, 1, &si, r.fences[slot]), "vkQueueSubmit", error)) {
-            r.broken = true;
-            return false;
-        }
+        if (!r.submit(cmd, slot, error)) return false;
     }
     if (!vkCheck(vkWaitForFences(device, kFramesInFlight, r.fences.data(), VK_TRUE, UINT64_MAX),
                  "vkWaitForFences", error))

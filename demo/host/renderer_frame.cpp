@@ -222,6 +222,18 @@ postfx::CloudShadowTransform Renderer::Impl::bindCloudShadow(VkCommandBuffer cmd
     return cloudShadow;
 }
 
+bool Renderer::Impl::submit(VkCommandBuffer cmd, size_t slot, std::string& error) {
+    vkResetFences(host.device, 1, &fences[slot]);
+    VkSubmitInfo si{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    if (!vkCheck(vkQueueSubmit(host.queue, 1, &si, fences[slot]), "vkQueueSubmit", error)) {
+        broken = true;
+        return false;
+    }
+    return true;
+}
+
 bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                                  const postfx::ImageInput& fogOutput, std::string& error) {
     if (scene.lights.size() > shared::kMaxDemoLights) {

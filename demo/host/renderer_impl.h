@@ -120,6 +120,9 @@ struct Renderer::Impl {
     // Renderer::recordFrame, with postfx writing to `fogOutput` (FrameInfo::output) when present.
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                      const postfx::ImageInput& fogOutput, std::string& error);
+    // Submits the ended `cmd` on the host's queue, signalling fences[slot] (reset first); a failed
+    // submission marks the renderer broken.
+    bool submit(VkCommandBuffer cmd, size_t slot, std::string& error);
 };
 
 }  // namespace demo
