@@ -97,6 +97,7 @@ struct FrameInfo {
     ShadowMapInput shadowMap;
     const LocalLight* lights = nullptr;  // lightCount local lights (may be null when 0); read during record()
     uint32_t lightCount = 0;             // [0, kMaxLocalLights]
+    LocalShadowAtlasInput localShadows;  // the lights' shadow maps (LocalLight::shadow indexes them)
 
     // One GPU time budget for all of postfx's work in this frame [ms]; in [0, 1000], 0: off (each effect
     // whose quality is Auto keeps its own autoBudgetMs). When > 0, the effects whose quality is Auto share

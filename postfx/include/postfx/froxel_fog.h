@@ -63,6 +63,10 @@ struct FroxelFogSettings : FogMedium {
     // the H100 at 1920×1080 with the default grid (postfx-bench --froxel, docs/effects/froxel-fog.md,
     // "Benchmark"); below, their pass costs more than the loop it shortens.
     uint32_t lightListMinLights = 24;
+    // Local lights' shadows (FrameInfo.localShadows): false, one texel per sample (the sun's one tap);
+    // true, the 2×2 texels around it weighted bilinearly (percentage-closer filtering), so a shadow's edge
+    // ramps over a texel instead of stepping.
+    bool localShadowFilter = false;
     // volumeCount local fog volumes (may be null when 0), read during record(); count in [0, 64].
     const FogVolume* volumes = nullptr;
     uint32_t volumeCount = 0;

@@ -54,6 +54,9 @@ struct ShadowMapInput {
 // next). Effects that do not read lights ignore them; every light given is checked.
 enum class LightType : uint32_t { Point, Spot };  // another value (cast from an int) is rejected
 
+// LocalLight::shadow of a light that casts no shadow.
+inline constexpr uint32_t kNoLocalShadow = 0xffffffffu;
+
 struct LocalLight {
     LightType type = LightType::Point;
     DVec3 position{0.0};                // world position [m]; each component in [-1e9, 1e9]
@@ -63,9 +66,52 @@ struct LocalLight {
     float sourceRadius = 0.05f;         // guards the inverse square near the light [m]; in (0, range]
     float innerConeAngle = 0.0f;        // spot: full intensity inside this half angle [rad]; in [0, outer]
     float outerConeAngle = 0.785398f;   // spot: no light outside this half angle [rad]; in [0, π/2)
+    // Its shadow: an index into FrameInfo.localShadows.shadows (< shadowCount), or kNoLocalShadow: the
+    // light shines through everything. Several lights may share one shadow.
+    uint32_t shadow = kNoLocalShadow;
 };
 
 // At most this many local lights per frame (FrameInfo::lightCount).
 inline constexpr uint32_t kMaxLocalLights = 256;
+
+// One depth map of a local light in the host's shadow atlas (LocalShadowAtlasInput): a spot light's, or
+// one face of a point light's cube.
+struct LocalShadowFace {
+    UVec2 offset{0u};  // the region's first texel (x, y) in the atlas [texels]
+    UVec2 extent{0u};  // the region's size [texels]; each >= 1, and offset + extent inside the atlas
+    // World -> the face's clip space (perspective or orthographic): x, y in [-1, 1] map across the region
+    // (u, v = (x, y)/2 + 1/2 of it), z/w is the depth stored there. Finite, invertible, and
+    // worldToClip · translate(camera.position) finite in float (as the sun's ShadowMapInput::worldToClip).
+    DMat4 worldToClip{1.0};
+};
+
+// Faces of one local light's shadow: 1 (a spot light) to 6 (a point light's cube).
+inline constexpr uint32_t kMaxLocalShadowFaces = 6;
+
+// One light's shadow: its faces in the atlas and how their depths compare. A sample uses the first face
+// whose clip square holds it (w > 0, |x| <= w, |y| <= w), so the six faces of a cube meet with neither gap
+// nor overlap; a sample no face holds is lit. In that face the sun's rules apply (ShadowMapInput): one tap
+// (or the froxel fog's filtered mode) of z = c.z/c.w against the texel; inside [0, 1] lit when
+// z - depthBias <= stored (reversed Z: z + depthBias >= stored); beyond the far plane shadowed where the
+// texel holds a caster, lit where it holds the cleared far value (1; reversed Z: 0); before the near
+// plane lit. Texels of the region where nothing was drawn must hold the cleared far value.
+struct LocalShadow {
+    uint32_t faceCount = 1;  // [1, kMaxLocalShadowFaces]
+    LocalShadowFace faces[kMaxLocalShadowFaces];
+    bool reversedZ = false;  // true: larger stored depth is nearer the light
+    float depthBias = 0.0f;  // added toward "lit" before comparing [shadow depth units]; finite, >= 0
+};
+
+// The host's shadow maps of its local lights, packed in one depth atlas (as engines keep them): regions
+// of any size, one per spot light and six per point light. Optional: with no image, no light may name a
+// shadow and every light is unshadowed.
+struct LocalShadowAtlasInput {
+    // Depth image (D32_SFLOAT, D16_UNORM, X8_D24_UNORM_PACK32, D24_UNORM_S8_UINT or R32_SFLOAT), usage
+    // SAMPLED, any size.
+    ImageInput image;
+    const LocalShadow* shadows = nullptr;  // shadowCount shadows (may be null when 0); read during record()
+    uint32_t shadowCount = 0;              // [0, kMaxLocalLights]
+    // (every field is checked when `image` is present or shadowCount > 0)
+};
 
 }  // namespace postfx
