@@ -79,6 +79,13 @@ struct FroxelFogInputs {
     std::span<const LocalLight> lights;  // at most kMaxLocalLights, each checked as FrameInfo's
     AtmosphereSettings atmosphere;       // as FogInputs::atmosphere: the sun attenuated at each sample
 
+    // The local lights' shadow atlas (LocalShadowAtlasInput's image read back: row-major, top row = v 0,
+    // depth values as the GPU samples them), empty for none; lights[i].shadow indexes localShadows. Read
+    // with the GPU's rules (LocalShadow) and settings.localShadowFilter.
+    std::span<const float> localShadowDepth;
+    uint32_t localShadowWidth = 0, localShadowHeight = 0;
+    std::span<const LocalShadow> localShadows;
+
     // Shadow map texels (row-major, top row = v 0), empty for none; read as the ray-marched fog reads
     // them with a 1×1 kernel.
     std::span<const float> shadowDepth;
