@@ -38,10 +38,24 @@ PFX_CONST(uint, kFroxelBindingTemporal, 11);  // uniform buffer: TemporalUniform
 PFX_CONST(uint, kFroxelBindingAtmosphere, kMediumBindingAtmosphere);
 // sampler2D: the clouds' shadow map (common/medium/atmosphere_light.glsl), with clouds casting shadows
 PFX_CONST(uint, kFroxelBindingCloudShadow, kMediumBindingCloudShadow);
+// Local lights' shadows (froxel-fog.md#local-light-shadows): the host's atlas, its faces, and (temporal)
+// the shadowed lights' light at each froxel's centre in this and the previous frame.
+PFX_CONST(uint, kFroxelBindingShadowAtlas, 14);      // sampler2D: host local shadow atlas (texelFetch)
+PFX_CONST(uint, kFroxelBindingShadowFaces, 15);      // storage buffer: FroxelShadowFace[]
+PFX_CONST(uint, kFroxelBindingShadowedLight, 16);    // storage image r32f: written this frame
+PFX_CONST(uint, kFroxelBindingShadowedHistory, 17);  // sampler3D r32f: the previous frame's
 
 // Flags in FroxelUniforms.counts.y
-PFX_CONST(uint, kFroxelFlagLogSlices, 1u);  // depth distribution Log (else Power)
-PFX_CONST(uint, kFroxelFlagTricubic, 2u);   // apply: tricubic B-spline (else trilinear)
+PFX_CONST(uint, kFroxelFlagLogSlices, 1u);        // depth distribution Log (else Power)
+PFX_CONST(uint, kFroxelFlagTricubic, 2u);         // apply: tricubic B-spline (else trilinear)
+PFX_CONST(uint, kFroxelFlagShadowFilter, 4u);     // local shadows: 2×2 bilinear PCF (else one texel)
+PFX_CONST(uint, kFroxelFlagShadowedHistory, 8u);  // temporal: the previous shadowed light is valid
+
+// FroxelLight.shadow.x of a light without a shadow.
+PFX_CONST(uint, kFroxelNoShadow, 0xffffffffu);
+// Temporal: a froxel's history is dropped where its shadowed lights' light at the centre changed by more
+// than this fraction of the larger of the two (a caster or a shadowed light moved; froxel-fog.md#temporal).
+PFX_CONST(float, kFroxelShadowChangeReject, 0.25f);
 
 // Largest value stored in the rgba16f volumes (the largest finite half): never Inf.
 PFX_CONST(float, kFroxelHalfMax, 65504.0f);
@@ -64,7 +78,17 @@ struct FroxelLight {
     vec4 positionRange;      // xyz: position [m], w: range [m]
     vec4 intensityRadius;    // rgb: intensity [cd], w: source radius [m]
     vec4 directionCosOuter;  // xyz: unit cone axis, w: cos(outer angle); -2 for a point light
-    vec4 cosInner;           // x: cos(inner angle)
+    vec4 cosInnerBias;       // x: cos(inner angle), y: its shadow's depth bias
+    // Its shadow: x first face in the faces buffer (kFroxelNoShadow: none), y face count, z reversed Z
+    uvec4 shadow;
+};
+
+// One face of a local light's shadow (postfx::LocalShadowFace), camera-relative.
+struct FroxelShadowFace {
+    // Camera-relative world -> the face's clip space, by rows (clip.x = dot(rows[0], (x, 1)), ...): the
+    // face test needs x, y and w only.
+    vec4 clipRows[4];
+    vec4 region;  // xy: first texel, zw: size [texels] in the atlas
 };
 
 struct FroxelLights {
@@ -73,8 +97,9 @@ struct FroxelLights {
 
 #ifdef __cplusplus
 static_assert(sizeof(FroxelUniforms) == 4 * 16 + 128 * 16, "FroxelUniforms must match std140");
-static_assert(sizeof(FroxelLight) == 64, "FroxelLight must match std140");
-static_assert(sizeof(FroxelLights) == 256 * 64, "FroxelLights must match std140");
+static_assert(sizeof(FroxelLight) == 80, "FroxelLight must match std140");
+static_assert(sizeof(FroxelLights) == 256 * 80, "FroxelLights must match std140");
+static_assert(sizeof(FroxelShadowFace) == 80, "FroxelShadowFace must match std430");
 }  // namespace postfx::gpu
 #endif
 

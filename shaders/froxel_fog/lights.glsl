@@ -15,27 +15,34 @@ float smoothstepEdge(float e0, float e1, float x) {
     return t * t * (3.0 - 2.0 * t);
 }
 
-// E_i(x)·p(d·ℓ_i): light i's illuminance at camera-relative x times the phase toward the camera along
-// view direction `dir`. E = I·cone·window/(d² + r²), window = (1 - (d/R)⁴)², cone = smoothstep(cos outer,
-// cos inner, cos α); isotropic at the light itself (d = 0).
-vec3 localLightScatter(uint i, vec3 x, vec3 dir) {
-    FroxelLight l = local.lights[i];
+// Light l's cone·window at camera-relative x (0 beyond its range): window = (1 - (d/R)⁴)², cone =
+// smoothstep(cos outer, cos inner, cos α). Also d² and the unit direction toward the light (0 at it).
+float localLightFalloff(FroxelLight l, vec3 x, out float d2, out vec3 toLight) {
     vec3 fromLight = x - l.positionRange.xyz;
-    float d2 = dot(fromLight, fromLight);
+    d2 = dot(fromLight, fromLight);
+    toLight = vec3(0.0);
     float range = l.positionRange.w;
-    if (!(d2 < range * range)) return vec3(0.0);
+    if (!(d2 < range * range)) return 0.0;
     float d = sqrt(d2);
     float q2 = d2 / (range * range);
     float window = (1.0 - q2 * q2) * (1.0 - q2 * q2);
-    vec3 toLight = d > 0.0 ? -fromLight / d : vec3(0.0);
+    toLight = d > 0.0 ? -fromLight / d : vec3(0.0);
     float cone = 1.0;
     if (l.directionCosOuter.w >= -1.0)
-        cone = smoothstepEdge(l.directionCosOuter.w, l.cosInner.x,
+        cone = smoothstepEdge(l.directionCosOuter.w, l.cosInnerBias.x,
                               d > 0.0 ? dot(-toLight, l.directionCosOuter.xyz) : 1.0);
-    float phase = d > 0.0 ? henyeyGreensteinDirections(dir, toLight, fog.medium.z) : kInvFourPi;
+    return cone * window;
+}
+
+// E_i(x)·p(d·ℓ_i)·V_i(x): light i's illuminance at camera-relative x times the phase toward the camera
+// along view direction `dir` and its shadow's visibility `visibility` (1 unshadowed). E = I·cone·window/
+// (d² + r²); isotropic at the light itself (d = 0).
+vec3 localLightScatter(FroxelLight l, vec3 x, vec3 dir, float falloff, float d2, vec3 toLight,
+                       float visibility) {
+    float phase = d2 > 0.0 ? henyeyGreensteinDirections(dir, toLight, fog.medium.z) : kInvFourPi;
     float r = l.intensityRadius.w;
     // d² + r² >= 1e-30 (a radius below 1e-15 m underflows in float); the term is at most 1e30.
-    float factor = cone * window * phase / max(d2 + r * r, 1e-30);
+    float factor = falloff * phase * visibility / max(d2 + r * r, 1e-30);
     return min(l.intensityRadius.rgb * factor, vec3(kMaxLightTerm));
 }
 

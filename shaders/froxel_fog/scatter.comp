@@ -3,8 +3,9 @@
 // the medium and its light at the froxel's sample (jittered per frame) and stores
 // (albedo · light · storage scale, σt), light = sun · phase · visibility + ambient + Σ local lights.
 // Variants: LOCAL_LIGHTS loops over every light; LIGHT_LISTS over those its cluster's list holds
-// (light_lists.comp); without either the frame has no local light. TEMPORAL (with any of them) blends
-// the result with the previous frames' volume reprojected to the sample (froxel-fog.md#temporal).
+// (light_lists.comp); without either the frame has no local light. LOCAL_SHADOWS (with either) multiplies
+// the lights that have a shadow by their visibility from the host's atlas. TEMPORAL (with any of them)
+// blends the result with the previous frames' volume reprojected to the sample (froxel-fog.md#temporal).
 #extension GL_GOOGLE_include_directive : require
 
 #include "froxel_fog/froxel_shared.h"
@@ -31,6 +32,26 @@ layout(binding = kFroxelBindingScatter, rgba16f) uniform writeonly image3D scatt
 #include "common/medium/atmosphere_light.glsl"
 #include "froxel_fog/grid.glsl"
 #include "froxel_fog/lights.glsl"
+
+#ifdef LOCAL_SHADOWS
+layout(binding = kFroxelBindingShadowAtlas) uniform sampler2D shadowAtlas;
+layout(binding = kFroxelBindingShadowFaces, std430) readonly buffer ShadowFaces {
+    FroxelShadowFace faces[];
+}
+shadowFaces;
+#include "froxel_fog/local_shadows.glsl"
+#ifdef TEMPORAL
+// The shadowed lights' light at each froxel's centre: this frame's (written), the previous one's (read).
+layout(binding = kFroxelBindingShadowedLight, r32f) uniform writeonly image3D shadowedLight;
+layout(binding = kFroxelBindingShadowedHistory) uniform sampler3D shadowedHistory;
+#endif
+#endif
+
+// The centre of froxel `id` (camera-relative): where the history is read and the shadow change tested.
+vec3 froxelCentre(uvec3 id) {
+    vec3 centreDir = gridRayDirection((vec2(id.xy) + 0.5) / vec2(froxel.grid.xy));
+    return centreDir * sliceDepth((float(id.z) + 0.5) / float(froxel.grid.z));
+}
 
 #ifdef TEMPORAL
 layout(binding = kFroxelBindingHistory) uniform sampler3D historyVolume;
@@ -91,10 +112,12 @@ vec4 blendSlices(vec4 history, vec4 current, float w, float dt) {
 // This frame's (albedo·light·scale, σt) blended with the history (docs/temporal.md). The history is read
 // where the previous grid held this froxel's centre (not its jittered sample): a still view reads each
 // froxel's own texel, so the accumulation averages the jittered samples without blurring the volume.
-vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 dir, float start, float end) {
+// `shadowed`: the shadowed lights' light at the centre (LOCAL_SHADOWS); where it differs from the
+// previous frame's by more than kFroxelShadowChangeReject of the larger, a caster or a shadowed light
+// moved there and the history is dropped.
+vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 centre, float start, float end, float shadowed) {
     if (temporal.state.x == 0u) return current;
-    vec3 centreDir = gridRayDirection((vec2(id.xy) + 0.5) / vec2(froxel.grid.xy));
-    vec3 centre = centreDir * sliceDepth((float(id.z) + 0.5) / float(froxel.grid.z));
+    vec3 centreDir = normalize(centre);
     if (temporal.state.y > 0u) {
         vec3 side = gridRayDirection((vec2(id.xy) + 1.5) / vec2(froxel.grid.xy));
         float margin = 2.0 * max(end - start, length(side - centreDir) * end);
@@ -116,6 +139,15 @@ vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 dir, float start, float end
     // The previous frame's storage scale and pre-exposure -> this one's.
     history.rgb *= temporal.previous.y;
     if (!finiteVec(history)) return current;  // a host's NaN once in the volume: not kept
+#ifdef LOCAL_SHADOWS
+    if ((froxel.counts.y & kFroxelFlagShadowedHistory) != 0u) {
+        // The nearest previous froxel: a still view reads its own (the test is then exact), a moving one
+        // the nearest centre (its change along a shadow's edge may reject the froxel for a frame).
+        ivec3 nearest = clamp(ivec3(floor(uvw * vec3(froxel.grid.xyz))), ivec3(0), last);
+        float previous = texelFetch(shadowedHistory, nearest, 0).r * temporal.previous.y;
+        if (abs(shadowed - previous) > kFroxelShadowChangeReject * max(shadowed, previous)) return current;
+    }
+#endif
     // Each trilinear resample blurs the history by a variance of b = Σ f(1 - f) froxel² (0 for a still
     // view, which reads each froxel's own texel); an exponential blend of weight w adds these up to
     // (1 - w)/w · b. The weight is raised to w ≥ b/(b + B), so the accumulated blur stays below
@@ -127,8 +159,37 @@ vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 dir, float start, float end
 #endif
 
 #ifdef LOCAL_LIGHTS
+// Light i's E·p·V at the sample x; with temporal shadows, adds its luminance·V at the froxel's centre to
+// `shadowed` when it has a shadow (the scale of the scatter volume: pre-exposed, storage-scaled).
+vec3 localLightTerm(uint i, vec3 x, vec3 dir, vec3 centre, inout float shadowed) {
+    FroxelLight l = local.lights[i];
+    float d2;
+    vec3 toLight;
+    float falloff = localLightFalloff(l, x, d2, toLight);
+    float visibility = 1.0;
+#ifdef LOCAL_SHADOWS
+    if (l.shadow.x != kFroxelNoShadow) {
+        uint face = kFroxelNoShadow;
+        if (falloff > 0.0) visibility = localShadowVisibility(l, x, face);
+#ifdef TEMPORAL
+        float c2;
+        vec3 cToLight;
+        float cFalloff = localLightFalloff(l, centre, c2, cToLight);
+        if (cFalloff > 0.0) {
+            float r = l.intensityRadius.w;
+            float e =
+                dot(l.intensityRadius.rgb, vec3(0.2126, 0.7152, 0.0722)) * cFalloff / max(c2 + r * r, 1e-30);
+            shadowed += min(e * froxel.jitter.w * localShadowVisibilityNear(l, centre, face), kMaxLightTerm);
+        }
+#endif
+    }
+#endif
+    if (!(falloff > 0.0)) return vec3(0.0);
+    return localLightScatter(l, x, dir, falloff, d2, toLight, visibility);
+}
+
 // Σ over the lights the froxel's cluster lists (LIGHT_LISTS), or over all of them.
-vec3 localLightsScatter(uvec3 froxelId, vec3 x, vec3 dir) {
+vec3 localLightsScatter(uvec3 froxelId, vec3 x, vec3 dir, vec3 centre, inout float shadowed) {
     vec3 sum = vec3(0.0);
 #ifdef LIGHT_LISTS
     uint words = froxel.counts.z;
@@ -138,12 +199,12 @@ vec3 localLightsScatter(uvec3 froxelId, vec3 x, vec3 dir) {
         while (bits != 0u) {
             int i = findLSB(bits);
             bits &= bits - 1u;
-            sum += localLightScatter(w * 32u + uint(i), x, dir);
+            sum += localLightTerm(w * 32u + uint(i), x, dir, centre, shadowed);
         }
     }
 #else
     for (uint i = 0u; i < froxel.grid.w; ++i)
-        sum += localLightScatter(i, x, dir);
+        sum += localLightTerm(i, x, dir, centre, shadowed);
 #endif
     return sum;
 }
@@ -160,6 +221,12 @@ void main() {
     // σt: the shared medium plus the volumes (+Inf stays +Inf: an opaque froxel, stored as the half max).
     float sigmaT = extinction(x) + volumesExtinction(x);
     vec3 light = vec3(0.0);
+    float shadowed = 0.0;  // the shadowed lights' light at the centre (temporal shadows)
+#ifdef TEMPORAL
+    vec3 centre = froxelCentre(id);
+#else
+    vec3 centre = x;
+#endif
     if (sigmaT > 0.0) {
         light = fog.ambient.rgb;
         vec3 sun = fog.sunIlluminance.rgb;
@@ -168,12 +235,15 @@ void main() {
                      shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y) *
                      atmosphereSunTransmittance(x) * cloudShadowVisibility(x);
 #ifdef LOCAL_LIGHTS
-        light += localLightsScatter(id, x, dir);
+        light += localLightsScatter(id, x, dir, centre, shadowed);
 #endif
     }
     vec4 stored = min(vec4(fog.albedo.rgb * light * froxel.jitter.w, sigmaT), vec4(kFroxelHalfMax));
 #ifdef TEMPORAL
-    stored = min(accumulate(stored, x, id, dir, start, end), vec4(kFroxelHalfMax));
+    stored = min(accumulate(stored, x, id, centre, start, end, shadowed), vec4(kFroxelHalfMax));
+#ifdef LOCAL_SHADOWS
+    imageStore(shadowedLight, ivec3(id), vec4(shadowed));
+#endif
 #endif
     imageStore(scatterVolume, ivec3(id), stored);
 }

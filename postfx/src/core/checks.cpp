@@ -292,7 +292,28 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
     for (uint32_t i = 0; i < frame.lightCount; ++i)
         if (Status s = checkLight(frame.lights[i], "FrameInfo.lights[" + std::to_string(i) + "]"); !s)
             return s;
+    if (Status s = checkLocalShadows(frame); !s) return s;
     return checkPreExposure(frame);
+}
+
+Status checkLocalShadows(const FrameInfo& frame) {
+    const LocalShadowAtlasInput& atlas = frame.localShadows;
+    for (uint32_t i = 0; i < frame.lightCount; ++i) {
+        const uint32_t shadow = frame.lights[i].shadow;
+        if (shadow != kNoLocalShadow && shadow >= atlas.shadowCount)
+            return invalid("FrameInfo.lights[" + std::to_string(i) + "].shadow: " + std::to_string(shadow) +
+                           " is neither kNoLocalShadow nor below FrameInfo.localShadows.shadowCount (" +
+                           std::to_string(atlas.shadowCount) + ")");
+    }
+    if (!atlas.image.present() && atlas.shadowCount == 0) return Status::success();
+    const ImageRule rule{"FrameInfo.localShadows.image", isShadowFormat,
+                         "VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32, "
+                         "VK_FORMAT_D24_UNORM_S8_UINT or VK_FORMAT_R32_SFLOAT",
+                         VK_IMAGE_USAGE_SAMPLED_BIT, nullptr};
+    if (Status s = checkImage(atlas.image, rule); !s) return s;
+    return checkLocalShadowList(atlas.shadows, atlas.shadowCount, atlas.image.extent.width,
+                                atlas.image.extent.height, frame.camera.position,
+                                "FrameInfo.localShadows.shadows");
 }
 
 Status checkPreExposure(const FrameInfo& frame) {
@@ -316,6 +337,44 @@ Status checkPreExposure(const FrameInfo& frame) {
                               "lights[" + std::to_string(i) + "].intensity");
             !s)
             return s;
+    return Status::success();
+}
+
+Status checkLocalShadowList(const LocalShadow* shadows, uint32_t count, uint32_t width, uint32_t height,
+                            const DVec3& camera, const std::string& name) {
+    if (count > kMaxLocalLights)
+        return invalid(name + ": " + std::to_string(count) + " shadows exceed kMaxLocalLights (" +
+                       std::to_string(kMaxLocalLights) + ")");
+    if (count > 0 && !shadows) return invalid(name + " is null with " + std::to_string(count) + " shadows");
+    for (uint32_t i = 0; i < count; ++i) {
+        const LocalShadow& shadow = shadows[i];
+        const std::string n = name + "[" + std::to_string(i) + "]";
+        if (shadow.faceCount < 1 || shadow.faceCount > kMaxLocalShadowFaces)
+            return invalid(n + ".faceCount: " + std::to_string(shadow.faceCount) + " is outside [1, " +
+                           std::to_string(kMaxLocalShadowFaces) + "]");
+        if (!(shadow.depthBias >= 0.0f) || !std::isfinite(shadow.depthBias))
+            return invalid(n + ".depthBias: " + numberText(shadow.depthBias) + " must be finite and >= 0");
+        for (uint32_t f = 0; f < shadow.faceCount; ++f) {
+            const LocalShadowFace& face = shadow.faces[f];
+            const std::string fn = n + ".faces[" + std::to_string(f) + "]";
+            if (face.extent.x < 1 || face.extent.y < 1)
+                return invalid(fn + ".extent " + std::to_string(face.extent.x) + "x" +
+                               std::to_string(face.extent.y) + " is empty");
+            const uint64_t right = uint64_t(face.offset.x) + face.extent.x,
+                           bottom = uint64_t(face.offset.y) + face.extent.y;
+            if (right > width || bottom > height)
+                return invalid(fn + ": offset (" + std::to_string(face.offset.x) + ", " +
+                               std::to_string(face.offset.y) + ") + extent " + std::to_string(face.extent.x) +
+                               "x" + std::to_string(face.extent.y) + " is outside the atlas " +
+                               (std::to_string(width) + "x" + std::to_string(height)));
+            if (Status s = checkShadowTransform(face.worldToClip, camera, fn + ".worldToClip"); !s) return s;
+            const glm::dmat4 m(face.worldToClip);
+            const double det = glm::determinant(m);
+            if (!(std::abs(det) > 0.0) || !allFinite(glm::inverse(m)))
+                return invalid(fn + ".worldToClip: is not invertible (determinant " + numberText(float(det)) +
+                               ")");
+        }
+    }
     return Status::success();
 }
 

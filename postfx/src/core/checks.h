@@ -68,6 +68,15 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info);
 // FrameInfo::preExposure: in [kMinPreExposure, kMaxPreExposure], the light it pre-exposes within range
 // (the light itself already checked).
 Status checkPreExposure(const FrameInfo& frame);
+// FrameInfo::localShadows and the lights' shadow indices: every light's shadow kNoLocalShadow or below
+// shadowCount; with an atlas or shadows, the atlas image, each shadow's face count and bias, each face's
+// region inside the atlas and its transform finite, finite camera-relative in float, and invertible.
+Status checkLocalShadows(const FrameInfo& frame);
+// The shadows alone (also used by the CPU reference): at most kMaxLocalLights, not null when count > 0, each
+// one's faces and bias, each face inside a width × height atlas, its transform as above. `name` names the
+// array ("FrameInfo.localShadows.shadows").
+Status checkLocalShadowList(const LocalShadow* shadows, uint32_t count, uint32_t width, uint32_t height,
+                            const DVec3& camera, const std::string& name);
 
 // The camera alone (also used by the CPU references): position within ±kMaxWorldCoordinate, view and
 // projection finite, projection times the view's rotation invertible with an inverse finite in float.

@@ -34,7 +34,8 @@ struct ResourceId {
 };
 
 // The host's images of FrameInfo.
-enum class HostImage : uint8_t { Color, Depth, Output, ShadowMap };
+enum class HostImage : uint8_t { Color, Depth, Output, ShadowMap, LocalShadowAtlas };
+inline constexpr size_t kHostImageCount = 5;
 
 enum class SamplerKind : uint8_t { NearestClamp, LinearRepeat, LinearClamp };
 
@@ -48,7 +49,8 @@ enum class Use : uint8_t {
     BoundOnly,         // combined image sampler bound because the pipeline's layout has it, never read
     StorageBoundOnly,  // storage image bound because the pipeline's layout has it, never accessed (the
                        // shader's code for it is off, e.g. by a specialization constant)
-    Uniform,           // uniform buffer: this frame's slot
+    Uniform,           // uniform buffer: this frame's slot (a storage buffer where the pipeline's layout
+                       // declares one: data larger than a uniform buffer may hold)
 };
 
 struct Access {
@@ -95,7 +97,7 @@ struct Frame {
     std::vector<PassDecl> passes;
     std::vector<Access> accesses;
     std::vector<std::byte> uniformData;
-    uint16_t host[4] = {kNoResource, kNoResource, kNoResource, kNoResource};  // by HostImage
+    uint16_t host[kHostImageCount] = {kNoResource, kNoResource, kNoResource, kNoResource, kNoResource};
     // Two or more of the frame's effects read the host's depth: postfx.view_distance unprojects it once
     // for all of them (FrameBuilder::depthInput); set by the context before the effects declare.
     bool shareDepth = false;

@@ -11,7 +11,8 @@
 namespace postfx::core {
 namespace {
 
-const char* const kHostNames[] = {"host.color", "host.depth", "host.output", "host.shadow_map"};
+const char* const kHostNames[] = {"host.color", "host.depth", "host.output", "host.shadow_map",
+                                  "host.local_shadow_atlas"};
 
 }  // namespace
 
@@ -63,6 +64,7 @@ void FrameGraph::begin(Frame& f, const FrameInfo& info) const {
     add(HostImage::Depth, true);
     add(HostImage::Output, info.output.present());
     add(HostImage::ShadowMap, info.shadowMap.image.present());
+    add(HostImage::LocalShadowAtlas, info.localShadows.image.present());
 }
 
 void FrameGraph::compile(Frame& f) const {
@@ -179,8 +181,10 @@ Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement
             }
             if (it == buffers_.end()) {
                 auto buffer = std::make_unique<GpuBuffer>();
-                if (Status s = buffer->create(*gpu_, slot * framesInFlight_,
-                                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true, r.name);
+                if (Status s = buffer->create(
+                        *gpu_, slot * framesInFlight_,
+                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true,
+                        r.name);
                     !s)
                     return s;
                 buffers_.push_back({r.id, std::move(buffer), slot, false});

@@ -11,6 +11,16 @@
 #include <string>
 
 namespace postfx::core {
+namespace {
+
+// Whether the pipeline's layout declares `binding` a storage buffer (else a uniform buffer).
+bool declaresStorageBuffer(const ComputePipelineDesc& pipeline, uint32_t binding) {
+    for (const Binding& b : pipeline.bindings)
+        if (b.binding == binding) return b.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    return false;
+}
+
+}  // namespace
 
 Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, DescriptorArena& arena,
                           PassTimer& timer, Retirement& retirement) {
@@ -23,8 +33,9 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
         VkAccessFlags access = 0, written = 0;
         HostImageUse use{};
     };
-    HostUse hostUses[4];
-    const ImageInput* hostImages[4] = {&info.color, &info.depth, &info.output, &info.shadowMap.image};
+    HostUse hostUses[kHostImageCount];
+    const ImageInput* hostImages[kHostImageCount] = {&info.color, &info.depth, &info.output,
+                                                     &info.shadowMap.image, &info.localShadows.image};
     for (const PassDecl& p : f.passes)
         for (uint32_t a = p.firstAccess; p.live && a < p.firstAccess + p.accessCount; ++a) {
             const Access& x = f.accesses[a];
@@ -36,7 +47,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
             if (reads(x.use)) h.access |= VK_ACCESS_SHADER_READ_BIT;
             if (writes(x.use)) h.access |= VK_ACCESS_SHADER_WRITE_BIT;
         }
-    for (size_t i = 0; i < 4; ++i)
+    for (size_t i = 0; i < kHostImageCount; ++i)
         if (hostUses[i].used) {
             const ImageInput& image = *hostImages[i];
             hostUses[i].use = useHostImage(image.image, image.format, image.layout, hostUses[i].storage,
@@ -58,8 +69,11 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                 const OwnedBuffer* b = nullptr;
                 for (const OwnedBuffer& o : buffers_)
                     if (o.id == r.id) b = &o;
-                writes.uniformBuffer(x.binding, b->buffer->handle(),
-                                     b->slotBytes * (frameIndex % framesInFlight_), r.uniformBytes);
+                const VkDeviceSize offset = b->slotBytes * (frameIndex % framesInFlight_);
+                if (declaresStorageBuffer(*p.pipeline, x.binding))
+                    writes.storageBuffer(x.binding, b->buffer->handle(), offset, r.uniformBytes);
+                else
+                    writes.uniformBuffer(x.binding, b->buffer->handle(), offset, r.uniformBytes);
                 continue;
             }
             VkImageView view = VK_NULL_HANDLE;

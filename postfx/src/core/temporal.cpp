@@ -46,6 +46,7 @@ bool lightChanged(const LocalLight& then, const LocalLight& now) {
     if (lit(then) != lit(now)) return true;
     if (!lit(now)) return false;  // off before and after
     if (then.type != now.type) return true;
+    if ((then.shadow == kNoLocalShadow) != (now.shadow == kNoLocalShadow)) return true;
     const double range = std::max(then.range, now.range);
     if (glm::length(glm::dvec3(now.position) - glm::dvec3(then.position)) >
         kTemporalLightMoveFraction * range)

@@ -20,6 +20,7 @@ using core::Use;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 constexpr VkDescriptorType kUniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+constexpr VkDescriptorType kStorageBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 
 // Each kernel's descriptor layout: exactly the bindings it reads or writes (froxel_shared.h).
 constexpr core::Binding kColorIn{gpu::kFroxelBindingColorIn, kStorage};
@@ -57,6 +58,25 @@ constexpr core::Binding kScatterLightTemporalBindings[] = {kShadowMap,      kNoi
 constexpr core::Binding kScatterListTemporalBindings[] = {
     kShadowMap,    kNoiseTexture,   kUniformBuffer,  kLightBuffer, kLightListImage,
     kScatterImage, kHistorySampled, kTemporalBuffer, kAtmosphere,  kCloudShadow};
+// With local lights' shadows: the atlas and the faces; temporal: the shadowed light's two volumes.
+constexpr core::Binding kShadowAtlas{gpu::kFroxelBindingShadowAtlas, kSampled};
+constexpr core::Binding kShadowFaceBuffer{gpu::kFroxelBindingShadowFaces, kStorageBuffer};
+constexpr core::Binding kShadowedImage{gpu::kFroxelBindingShadowedLight, kStorage};
+constexpr core::Binding kShadowedSampled{gpu::kFroxelBindingShadowedHistory, kSampled};
+constexpr core::Binding kScatterLightShadowBindings[] = {kShadowMap,   kNoiseTexture, kUniformBuffer,
+                                                         kLightBuffer, kScatterImage, kAtmosphere,
+                                                         kCloudShadow, kShadowAtlas,  kShadowFaceBuffer};
+constexpr core::Binding kScatterListShadowBindings[] = {
+    kShadowMap,    kNoiseTexture, kUniformBuffer, kLightBuffer, kLightListImage,
+    kScatterImage, kAtmosphere,   kCloudShadow,   kShadowAtlas, kShadowFaceBuffer};
+constexpr core::Binding kScatterLightShadowTemporalBindings[] = {
+    kShadowMap,        kNoiseTexture,   kUniformBuffer,  kLightBuffer, kScatterImage,
+    kHistorySampled,   kTemporalBuffer, kAtmosphere,     kCloudShadow, kShadowAtlas,
+    kShadowFaceBuffer, kShadowedImage,  kShadowedSampled};
+constexpr core::Binding kScatterListShadowTemporalBindings[] = {
+    kShadowMap,    kNoiseTexture,     kUniformBuffer,  kLightBuffer,    kLightListImage,
+    kScatterImage, kHistorySampled,   kTemporalBuffer, kAtmosphere,     kCloudShadow,
+    kShadowAtlas,  kShadowFaceBuffer, kShadowedImage,  kShadowedSampled};
 constexpr core::Binding kIntegrateBindings[] = {kUniformBuffer, kScatterImage, kIntegratedImage};
 constexpr core::Binding kApplyBindings[] = {kColorIn,       kColorOut,          kDepth,
                                             kUniformBuffer, kIntegratedSampled, kAtmosphere};
@@ -76,6 +96,17 @@ const core::ComputePipelineDesc kScatterTemporalPass[3] = {
      kScatterLightTemporalBindings},
     {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS_TEMPORAL,
      kScatterListTemporalBindings}};
+// With local lights' shadows (looping over every light, with light lists), and accumulating temporally.
+const core::ComputePipelineDesc kScatterShadowPass[2] = {
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LOCAL_LIGHTS_LOCAL_SHADOWS,
+     kScatterLightShadowBindings},
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS_LOCAL_SHADOWS,
+     kScatterListShadowBindings}};
+const core::ComputePipelineDesc kScatterShadowTemporalPass[2] = {
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LOCAL_LIGHTS_LOCAL_SHADOWS_TEMPORAL,
+     kScatterLightShadowTemporalBindings},
+    {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS_LOCAL_SHADOWS_TEMPORAL,
+     kScatterListShadowTemporalBindings}};
 // [1]: integrating the RGBA32F temporal history.
 const core::ComputePipelineDesc kIntegratePass[2] = {
     {"froxel_fog.integrate", spirv::froxel_fog_integrate_comp, kIntegrateBindings},
@@ -89,6 +120,16 @@ const core::ComputePipelineDesc kNoiseGenerate{"froxel_fog.noise", spirv::common
 
 uint32_t groupsFor(uint32_t size, uint32_t groupSize = gpu::kFroxelGroupSize) {
     return (size + groupSize - 1) / groupSize;
+}
+
+// Whether a lit local light has a shadow in a given atlas (the scatter pass then reads it).
+bool readsLocalShadows(const FrameInfo& frame) {
+    if (!frame.localShadows.image.present()) return false;
+    for (uint32_t i = 0; i < frame.lightCount; ++i) {
+        const LocalLight& l = frame.lights[i];
+        if (l.shadow != kNoLocalShadow && l.intensity != Vec3(0.0f)) return true;
+    }
+    return false;
 }
 
 bool volumesHoldDensity(const FroxelFogSettings& s) {
@@ -154,15 +195,13 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
 
     // Local lights: their buffer, and the light lists when there are many.
     gpu::FroxelLights lights;
-    const uint32_t lightCount = packLights(frame, lights);
+    const uint32_t lightCount = packLights(frame, lights, faces_);
+    const bool localShadows = !faces_.empty();
     const bool lists = lightCount > 0 && lightCount >= s.lightListMinLights;
     const uint32_t words = lists ? (lightCount + 31) / 32 : 0;
     PassUniforms u =
         buildPassUniforms(frame, b.depthConvention(), grid, lightCount, words, s.noise.enabled, shadowRead);
     if (depthInput.distance) u.fog.flags.x |= gpu::kFogFlagViewDistance;
-    const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
-    core::BufferRef lightBuffer;
-    if (lightCount > 0) lightBuffer = b.uniforms(kLights, &lights, sizeof lights);
 
     core::ImageDesc volume;
     volume.type = VK_IMAGE_TYPE_3D;
@@ -171,7 +210,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     volume.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     // The scatter volume: this frame's alone, or (temporal) the accumulated one of two histories.
     const bool temporal = s.temporal.enabled;
-    core::ImageRef scatter, history;
+    core::ImageRef scatter, history, shadowedOut, shadowedIn;
     core::BufferRef temporalUniforms;
     if (temporal) {
         const core::TemporalFrame t = history_.decide(frame, s.temporal, temporalKey(frame), true);
@@ -186,12 +225,25 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         historyDesc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
         scatter = b.historyImage(kHistory[t.writeSlot], historyDesc);
         history = b.historyImage(kHistory[t.readSlot], historyDesc);
+        if (localShadows) {
+            core::ImageDesc shadowedDesc = volume;
+            shadowedDesc.format = VK_FORMAT_R32_SFLOAT;
+            shadowedOut = b.historyImage(kShadowedLight[t.writeSlot], shadowedDesc);
+            shadowedIn = b.historyImage(kShadowedLight[t.readSlot], shadowedDesc);
+            if (t.historyValid && previousShadowed_) u.froxel.counts.y |= gpu::kFroxelFlagShadowedHistory;
+        }
     } else {
         core::ImageDesc storageOnly = volume;
         storageOnly.usage = VK_IMAGE_USAGE_STORAGE_BIT;
         scatter = b.transientImage(kScatter, storageOnly);
     }
     const core::ImageRef integrated = b.transientImage(kIntegrated, volume);
+    const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
+    core::BufferRef lightBuffer, faceBuffer;
+    if (lightCount > 0) lightBuffer = b.uniforms(kLights, &lights, sizeof lights);
+    if (localShadows)
+        faceBuffer =
+            b.uniforms(kShadowFaces, faces_.data(), uint32_t(faces_.size() * sizeof(gpu::FroxelShadowFace)));
 
     const core::ImageRef depth = b.host(HostImage::Depth);
     // Without a shadow map read, the depth image stands in at its binding (never sampled: the flag is off).
@@ -220,8 +272,10 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     }
 
     const uint32_t variant = lists ? 2 : lightCount > 0 ? 1 : 0;
-    b.pass(temporal ? kScatterTemporalPass[variant] : kScatterPass[variant], groupsFor(grid.x),
-           groupsFor(grid.y), grid.z)
+    const core::ComputePipelineDesc& scatterPass =
+        localShadows ? (temporal ? kScatterShadowTemporalPass[variant - 1] : kScatterShadowPass[variant - 1])
+                     : (temporal ? kScatterTemporalPass[variant] : kScatterPass[variant]);
+    b.pass(scatterPass, groupsFor(grid.x), groupsFor(grid.y), grid.z)
         .bind(gpu::kFroxelBindingShadowMap, shadow, shadowUse)
         .bind(gpu::kFroxelBindingNoise, noise, noiseUse, SamplerKind::LinearRepeat)
         .bind(gpu::kFroxelBindingUniforms, uniforms);
@@ -230,6 +284,14 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     if (temporal)
         b.bind(gpu::kFroxelBindingHistory, history, Use::Sampled, SamplerKind::NearestClamp)
             .bind(gpu::kFroxelBindingTemporal, temporalUniforms);
+    if (localShadows) {
+        b.bind(gpu::kFroxelBindingShadowAtlas, b.host(HostImage::LocalShadowAtlas), Use::Sampled)
+            .bind(gpu::kFroxelBindingShadowFaces, faceBuffer);
+        if (temporal)
+            b.bind(gpu::kFroxelBindingShadowedLight, shadowedOut, Use::StorageWrite)
+                .bind(gpu::kFroxelBindingShadowedHistory, shadowedIn, Use::Sampled,
+                      SamplerKind::NearestClamp);
+    }
     b.bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
         .bind(gpu::kFroxelBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)
         .bind(gpu::kFroxelBindingScatter, scatter, Use::StorageWrite);
@@ -254,8 +316,10 @@ void FroxelFogEffect::recorded(const FrameInfo& frame, bool active) {
     if (active && frame.froxelFog.temporal.enabled) {
         history_.recorded(frame, frame.froxelFog.temporal, temporalKey(frame), true);
         previousStorageScale_ = storageScale(frame);
+        previousShadowed_ = readsLocalShadows(frame);
     } else {
         history_.dropped();
+        previousShadowed_ = false;
     }
 }
 

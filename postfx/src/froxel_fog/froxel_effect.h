@@ -9,6 +9,9 @@
 #include "core/frame_graph.h"
 #include "core/gpu.h"
 #include "core/temporal.h"
+#include "froxel_fog/froxel_shared.h"
+
+#include <vector>
 
 namespace postfx::froxel_fog {
 
@@ -24,6 +27,11 @@ inline constexpr core::ResourceId kIntegrated{"froxel_fog.integrated"};   // rgb
 // turn (the accumulated one replaces froxel_fog.scatter), and the TemporalUniforms.
 inline constexpr core::ResourceId kHistory[2] = {{"froxel_fog.history_a"}, {"froxel_fog.history_b"}};
 inline constexpr core::ResourceId kTemporalUniforms{"froxel_fog.temporal_uniforms"};
+// Local lights' shadows (froxel-fog.md#local-light-shadows): their faces (a storage buffer), and with
+// temporal accumulation the shadowed lights' light at each froxel's centre, this frame's and the last's.
+inline constexpr core::ResourceId kShadowFaces{"froxel_fog.shadow_faces"};
+inline constexpr core::ResourceId kShadowedLight[2] = {{"froxel_fog.shadowed_light_a"},
+                                                       {"froxel_fog.shadowed_light_b"}};
 
 class FroxelFogEffect final : public core::Effect {
 public:
@@ -40,6 +48,9 @@ private:
     bool noiseFormatSupported_ = false;
     core::TemporalHistory history_;
     float previousStorageScale_ = 1.0f;  // the last recorded frame's storageScale
+    bool previousShadowed_ = false;      // the last recorded frame wrote its shadowed lights' light
+    // declare()'s scratch for the shadow faces (kept: no allocation once warm).
+    mutable std::vector<gpu::FroxelShadowFace> faces_;
 };
 
 }  // namespace postfx::froxel_fog

@@ -9,6 +9,8 @@
 
 #include <postfx/reference.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -33,10 +35,26 @@ Status validate(const FroxelFogInputs& in) {
     if (in.lights.size() > kMaxLocalLights)
         return invalid("FroxelFogInputs.lights: " + std::to_string(in.lights.size()) +
                        " lights exceed kMaxLocalLights (" + std::to_string(kMaxLocalLights) + ")");
-    for (size_t i = 0; i < in.lights.size(); ++i)
-        if (Status s = core::checkLight(in.lights[i], "FroxelFogInputs.lights[" + std::to_string(i) + "]");
+    for (size_t i = 0; i < in.lights.size(); ++i) {
+        const std::string n = "FroxelFogInputs.lights[" + std::to_string(i) + "]";
+        if (Status s = core::checkLight(in.lights[i], n); !s) return s;
+        if (in.lights[i].shadow != kNoLocalShadow && in.lights[i].shadow >= in.localShadows.size())
+            return invalid(n + ".shadow: " + std::to_string(in.lights[i].shadow) +
+                           " is neither kNoLocalShadow nor below localShadows' size (" +
+                           std::to_string(in.localShadows.size()) + ")");
+    }
+    if (!in.localShadows.empty()) {
+        if (in.localShadowDepth.size() != size_t(in.localShadowWidth) * in.localShadowHeight ||
+            in.localShadowDepth.empty())
+            return invalid("FroxelFogInputs.localShadowDepth: " + std::to_string(in.localShadowDepth.size()) +
+                           " texels for a " + std::to_string(in.localShadowWidth) + "x" +
+                           std::to_string(in.localShadowHeight) + " atlas");
+        if (Status s = core::checkLocalShadowList(in.localShadows.data(), uint32_t(in.localShadows.size()),
+                                                  in.localShadowWidth, in.localShadowHeight,
+                                                  in.camera.position, "FroxelFogInputs.localShadows");
             !s)
             return s;
+    }
     return detail::checkMediumInputs("FroxelFogInputs", "froxel_fog", in);
 }
 
@@ -46,10 +64,23 @@ double smoothstep(double e0, double e1, double x) {
     return t * t * (3.0 - 2.0 * t);
 }
 
+// A local light's shadow as the reference reads it (LocalShadow, camera-relative).
+struct ShadowModel {
+    uint32_t faceCount = 0;
+    glm::dmat4 clip[kMaxLocalShadowFaces];  // camera-relative position -> the face's clip space
+    glm::uvec2 offset[kMaxLocalShadowFaces], extent[kMaxLocalShadowFaces];
+    bool reversedZ = false;
+    double bias = 0.0;
+};
+
 // Everything the march reads, converted to double once.
 struct Model : detail::MediumModel {
     std::vector<FogVolume> volumes;  // centres made camera-relative
     std::vector<LocalLight> lights;  // positions made camera-relative
+    std::vector<ShadowModel> shadows;
+    std::span<const float> atlas;  // the local shadow atlas, row-major
+    uint32_t atlasWidth = 0;
+    bool filterShadows = false;
 };
 
 Model makeModel(const FroxelFogInputs& in) {
@@ -70,7 +101,58 @@ Model makeModel(const FroxelFogInputs& in) {
             relative.position = DVec3(dvec3(l.position) - m.camera);
             m.lights.push_back(relative);
         }
+    const glm::dmat4 fromCamera = glm::translate(glm::dmat4(1.0), m.camera);
+    for (const LocalShadow& s : in.localShadows) {
+        ShadowModel& sm = m.shadows.emplace_back();
+        sm.faceCount = s.faceCount;
+        sm.reversedZ = s.reversedZ;
+        sm.bias = s.depthBias;
+        for (uint32_t f = 0; f < s.faceCount; ++f) {
+            sm.clip[f] = glm::dmat4(s.faces[f].worldToClip) * fromCamera;
+            sm.offset[f] = glm::uvec2(s.faces[f].offset);
+            sm.extent[f] = glm::uvec2(s.faces[f].extent);
+        }
+    }
+    m.atlas = in.localShadowDepth;
+    m.atlasWidth = in.localShadowWidth;
+    m.filterShadows = s.localShadowFilter;
     return m;
+}
+
+// One tap (LocalShadow's rule, the sun's): inside [0, 1] the comparison with the bias; beyond the far
+// plane shadowed where the texel holds a caster (not the cleared far value); z before the near plane is
+// the caller's (lit).
+bool localShadowTapLit(const ShadowModel& s, double z, double stored) {
+    if (s.reversedZ) return z < 0.0 ? stored <= 0.0 : z + s.bias >= stored;
+    return z > 1.0 ? stored >= 1.0 : z - s.bias <= stored;
+}
+
+// V(x) of a light's shadow at camera-relative x (the GPU's localShadowVisibility, in double): the first
+// face whose clip square holds x; one texel, or the 2×2 texels around it weighted bilinearly (indices
+// clamped to the region); 1 before the near plane or when no face holds x.
+double localShadowVisibility(const Model& m, const ShadowModel& s, const dvec3& x) {
+    for (uint32_t f = 0; f < s.faceCount; ++f) {
+        const glm::dvec4 c = s.clip[f] * glm::dvec4(x, 1.0);
+        if (!(c.w > 0.0) || std::abs(c.x) > c.w || std::abs(c.y) > c.w) continue;
+        const double z = c.z / c.w;
+        if (s.reversedZ ? !(z <= 1.0) : !(z >= 0.0)) return 1.0;
+        const double u = c.x / c.w * 0.5 + 0.5, v = c.y / c.w * 0.5 + 0.5;
+        const int w = int(s.extent[f].x), h = int(s.extent[f].y);
+        auto tap = [&](int i, int j) {
+            i = std::clamp(i, 0, w - 1);
+            j = std::clamp(j, 0, h - 1);
+            const size_t texel =
+                size_t(s.offset[f].y + uint32_t(j)) * m.atlasWidth + s.offset[f].x + uint32_t(i);
+            return localShadowTapLit(s, z, double(m.atlas[texel])) ? 1.0 : 0.0;
+        };
+        if (!m.filterShadows) return tap(int(u * w), int(v * h));
+        const double pu = u * w - 0.5, pv = v * h - 0.5;
+        const int i0 = int(std::floor(pu)), j0 = int(std::floor(pv));
+        const double fu = pu - i0, fv = pv - j0;
+        return (1.0 - fu) * (1.0 - fv) * tap(i0, j0) + fu * (1.0 - fv) * tap(i0 + 1, j0) +
+               (1.0 - fu) * fv * tap(i0, j0 + 1) + fu * fv * tap(i0 + 1, j0 + 1);
+    }
+    return 1.0;
 }
 
 // Shared medium's extinction at camera-relative x: density·h(y)·noise(x) (the ray-marched fog's σt).
@@ -96,7 +178,12 @@ dvec3 localLights(const Model& m, const dvec3& x, const dvec3& d) {
         // At the light itself the direction is undefined: isotropic there.
         const double phase =
             distance > 0.0 ? henyeyGreenstein(glm::dot(d, toLight / distance), m.g) : 1.0 / (4.0 * kPi);
-        sum += phase * dvec3(localLightIlluminance(l, DVec3(x)));
+        const dvec3 e = dvec3(localLightIlluminance(l, DVec3(x)));
+        if (e == dvec3(0.0)) continue;
+        const double v = l.shadow != kNoLocalShadow && !m.shadows.empty()
+                             ? localShadowVisibility(m, m.shadows[l.shadow], x)
+                             : 1.0;
+        sum += phase * v * e;
     }
     return sum;
 }

@@ -32,7 +32,7 @@ constexpr std::array<SettingField, 1> froxelEnabledField() {
 }
 
 // In the order the scene files' messages list the keys: "enabled", the medium's, the froxel fog's own.
-constexpr std::array<SettingField, 7> froxelOwnFields() {
+constexpr std::array<SettingField, 8> froxelOwnFields() {
     const FroxelFogSettings s{};
     return {{
         {.key = "grid",

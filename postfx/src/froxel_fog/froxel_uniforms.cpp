@@ -3,7 +3,10 @@
 #include "common/medium.h"
 #include "core/exposure.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace postfx::froxel_fog {
@@ -46,8 +49,16 @@ float storageScale(const FrameInfo& frame) {
     return float(std::exp2(std::max(std::floor(std::log2(kStorageTarget / largest)), -120.0)));
 }
 
-uint32_t packLights(const FrameInfo& frame, gpu::FroxelLights& out) {
+uint32_t packLights(const FrameInfo& frame, gpu::FroxelLights& out,
+                    std::vector<gpu::FroxelShadowFace>& faces) {
     const glm::dvec3 camera = frame.camera.position;
+    const glm::dmat4 fromCamera = glm::translate(glm::dmat4(1.0), camera);
+    const LocalShadowAtlasInput& atlas = frame.localShadows;
+    const bool shadows = atlas.image.present();
+    faces.clear();
+    // The first face of each shadow packed so far (shared shadows are packed once).
+    std::array<uint32_t, kMaxLocalLights> firstFace;
+    firstFace.fill(gpu::kFroxelNoShadow);
     uint32_t count = 0;
     for (uint32_t i = 0; i < frame.lightCount; ++i) {
         const LocalLight& l = frame.lights[i];
@@ -58,11 +69,28 @@ uint32_t packLights(const FrameInfo& frame, gpu::FroxelLights& out) {
         if (l.type == LightType::Spot) {
             const glm::dvec3 axis = glm::normalize(glm::dvec3(l.direction));
             g.directionCosOuter = glm::vec4(glm::vec3(axis), float(std::cos(double(l.outerConeAngle))));
-            g.cosInner = glm::vec4(float(std::cos(double(l.innerConeAngle))), 0.0f, 0.0f, 0.0f);
+            g.cosInnerBias = glm::vec4(float(std::cos(double(l.innerConeAngle))), 0.0f, 0.0f, 0.0f);
         } else {
             g.directionCosOuter = glm::vec4(0.0f, 0.0f, 0.0f, -2.0f);  // no cone
-            g.cosInner = glm::vec4(0.0f);
+            g.cosInnerBias = glm::vec4(0.0f);
         }
+        g.shadow = glm::uvec4(gpu::kFroxelNoShadow, 0u, 0u, 0u);
+        if (!shadows || l.shadow == kNoLocalShadow) continue;
+        const LocalShadow& shadow = atlas.shadows[l.shadow];
+        if (firstFace[l.shadow] == gpu::kFroxelNoShadow) {
+            firstFace[l.shadow] = uint32_t(faces.size());
+            for (uint32_t f = 0; f < shadow.faceCount; ++f) {
+                const LocalShadowFace& face = shadow.faces[f];
+                gpu::FroxelShadowFace& gf = faces.emplace_back();
+                const glm::mat4 m(glm::dmat4(face.worldToClip) * fromCamera);
+                for (int r = 0; r < 4; ++r)
+                    gf.clipRows[r] = glm::vec4(m[0][r], m[1][r], m[2][r], m[3][r]);
+                gf.region = glm::vec4(float(face.offset.x), float(face.offset.y), float(face.extent.x),
+                                      float(face.extent.y));
+            }
+        }
+        g.shadow = glm::uvec4(firstFace[l.shadow], shadow.faceCount, shadow.reversedZ ? 1u : 0u, 0u);
+        g.cosInnerBias.y = shadow.depthBias;
     }
     return count;
 }
@@ -86,6 +114,7 @@ PassUniforms buildPassUniforms(const FrameInfo& frame, const DepthConvention& de
     uint32_t flags = 0;
     if (s.depthDistribution == FroxelDepthDistribution::Log) flags |= gpu::kFroxelFlagLogSlices;
     if (s.tricubic) flags |= gpu::kFroxelFlagTricubic;
+    if (s.localShadowFilter) flags |= gpu::kFroxelFlagShadowFilter;
     const glm::dvec3 camera = frame.camera.position;
     uint32_t volumes = 0;
     for (uint32_t i = 0; i < s.volumeCount; ++i) {

@@ -5,6 +5,8 @@
 
 #include "froxel_fog/froxel_shared.h"
 
+#include <vector>
+
 namespace postfx::froxel_fog {
 
 // What the froxel fog's kernels read from binding kFroxelBindingUniforms.
@@ -24,7 +26,10 @@ double gridNear(const FrameInfo& frame, const DepthConvention& depth);
 float storageScale(const FrameInfo& frame);
 
 // `lights` receives the frame's local lights with a non-zero intensity (camera-relative); returns how many.
-uint32_t packLights(const FrameInfo& frame, gpu::FroxelLights& lights);
+// `faces` receives the faces of their shadows (each shadow once, camera-relative), each light's
+// FroxelLight::shadow pointing at its shadow's first face; none without FrameInfo.localShadows' image.
+uint32_t packLights(const FrameInfo& frame, gpu::FroxelLights& lights,
+                    std::vector<gpu::FroxelShadowFace>& faces);
 
 // `grid`: froxelGridSize of the frame; `lightWords`: light-list words per cluster (0 without lists).
 PassUniforms buildPassUniforms(const FrameInfo& frame, const DepthConvention& depth, const UVec3& grid,
