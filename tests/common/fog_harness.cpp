@@ -103,9 +103,10 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
     cd.format = images.colorFormat;
     cd.extent = {w, h, 1};
     cd.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    GpuImage colorImage, outputImage, depthImage, shadowImage;
-    const bool shadow = !images.shadow.empty();
+    GpuImage colorImage, outputImage, depthImage, shadowImage, atlasImage;
+    const bool shadow = !images.shadow.empty(), atlas = !images.localShadow.empty();
     const size_t shadowBytes = size_t(images.shadowWidth) * images.shadowHeight * 4;
+    const size_t atlasBytes = size_t(images.localShadowWidth) * images.localShadowHeight * 4;
     postfx::Status s = colorImage.create(gpu_, cd, "test color");
     if (s && images.separateOutput) s = outputImage.create(gpu_, cd, "test output");
     postfx::core::ImageDesc dd = cd;
@@ -118,10 +119,13 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
     sd.extent = {images.shadowWidth, images.shadowHeight, 1};
     sd.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     if (s && shadow) s = shadowImage.create(gpu_, sd, "test shadow map");
+    postfx::core::ImageDesc ad = sd;
+    ad.extent = {images.localShadowWidth, images.localShadowHeight, 1};
+    if (s && atlas) s = atlasImage.create(gpu_, ad, "test local shadow atlas");
     GpuBuffer upload, readback;
     if (s)
-        s = upload.create(gpu_, colorBytes + pixels * 4 + shadowBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true,
-                          "upload");
+        s = upload.create(gpu_, colorBytes + pixels * 4 + shadowBytes + atlasBytes,
+                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true, "upload");
     if (s) s = readback.create(gpu_, colorBytes * 2, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback");
     if (!s) return s;
     packColor(images.color, images.colorFormat, upload.mapped());
@@ -129,6 +133,9 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
     if (shadow)
         std::memcpy(static_cast<char*>(upload.mapped()) + colorBytes + pixels * 4, images.shadow.data(),
                     shadowBytes);
+    if (atlas)
+        std::memcpy(static_cast<char*>(upload.mapped()) + colorBytes + pixels * 4 + shadowBytes,
+                    images.localShadow.data(), atlasBytes);
 
     constexpr VkImageAspectFlags kColor = VK_IMAGE_ASPECT_COLOR_BIT, kDepth = VK_IMAGE_ASPECT_DEPTH_BIT;
     constexpr VkPipelineStageFlags kAll = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
@@ -142,6 +149,7 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
                                                                          {&depthImage, kDepth}};
             if (images.separateOutput) all.push_back({&outputImage, kColor});
             if (shadow) all.push_back({&shadowImage, kColor});
+            if (atlas) all.push_back({&atlasImage, kColor});
             for (auto& [image, aspect] : all)
                 postfx::core::transition(
                     gpu_, cmd,
@@ -160,19 +168,24 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
             region.imageSubresource.aspectMask = kDepth;
             vkCmdCopyBufferToImage(cmd, upload.handle(), depthImage.handle(),
                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-            if (shadow) {
-                VkBufferImageCopy shadowRegion{};
-                shadowRegion.bufferOffset = colorBytes + pixels * 4;
-                shadowRegion.imageSubresource = {kColor, 0, 0, 1};
-                shadowRegion.imageExtent = {images.shadowWidth, images.shadowHeight, 1};
-                vkCmdCopyBufferToImage(cmd, upload.handle(), shadowImage.handle(),
-                                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &shadowRegion);
-                postfx::core::transition(
-                    gpu_, cmd,
-                    to(shadowImage.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kCopy, VK_ACCESS_TRANSFER_WRITE_BIT, kAll,
-                       kAny));
-            }
+            // The R32F maps: uploaded, then handed over in SHADER_READ_ONLY_OPTIMAL.
+            const auto uploadMap = [&](GpuImage& image, VkDeviceSize offset, uint32_t mapW, uint32_t mapH) {
+                VkBufferImageCopy mapRegion{};
+                mapRegion.bufferOffset = offset;
+                mapRegion.imageSubresource = {kColor, 0, 0, 1};
+                mapRegion.imageExtent = {mapW, mapH, 1};
+                vkCmdCopyBufferToImage(cmd, upload.handle(), image.handle(),
+                                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &mapRegion);
+                postfx::core::transition(gpu_, cmd,
+                                         to(image.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kCopy,
+                                            VK_ACCESS_TRANSFER_WRITE_BIT, kAll, kAny));
+            };
+            if (shadow)
+                uploadMap(shadowImage, colorBytes + pixels * 4, images.shadowWidth, images.shadowHeight);
+            if (atlas)
+                uploadMap(atlasImage, colorBytes + pixels * 4 + shadowBytes, images.localShadowWidth,
+                          images.localShadowHeight);
             // Into the layouts the "host" hands postfx.
             postfx::core::transition(gpu_, cmd,
                                      to(colorImage.handle(), kColor, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -202,6 +215,13 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
                                          {images.shadowWidth, images.shadowHeight},
                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                                          sd.usage};
+            if (atlas)
+                frame.localShadows.image = {atlasImage.handle(),
+                                            atlasImage.view(),
+                                            VK_FORMAT_R32_SFLOAT,
+                                            {images.localShadowWidth, images.localShadowHeight},
+                                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                            ad.usage};
             if (onBeforeRecord) onBeforeRecord(frame);
             recordStatus = context.record(frame);
 

@@ -28,6 +28,10 @@ struct FogHarnessImages {
     // as FrameInfo.shadowMap.image; the caller sets the frame's shadowMap matrix, bias and convention.
     std::vector<float> shadow;
     uint32_t shadowWidth = 0, shadowHeight = 0;
+    // Optional R32_SFLOAT local-light shadow atlas, the same way, as FrameInfo.localShadows.image; the
+    // caller sets the frame's localShadows.shadows and the lights' shadow indices.
+    std::vector<float> localShadow;
+    uint32_t localShadowWidth = 0, localShadowHeight = 0;
 };
 
 class FogHarness {

@@ -57,6 +57,12 @@ FrameInfo validFrame() {
                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                          VK_IMAGE_USAGE_SAMPLED_BIT};
     f.shadowMap.worldToClip = glm::orthoRH_ZO(-50.0, 50.0, -50.0, 50.0, 0.0, 200.0);
+    f.localShadows.image = {fake<VkImage>(10),
+                            fake<VkImageView>(11),
+                            VK_FORMAT_D16_UNORM,
+                            {64, 32},
+                            VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                            VK_IMAGE_USAGE_SAMPLED_BIT};
     f.fog.enabled = true;
     f.fog.noise.enabled = true;
     f.fog.noise.hostTexture = fake<VkImageView>(9);
@@ -66,6 +72,20 @@ FrameInfo validFrame() {
 // The frame's one light (FrameInfo::lights points here while a row runs).
 postfx::LocalLight gLight;
 
+// The frame's one local shadow (FrameInfo::localShadows.shadows points here while a row runs): a spot's
+// face in the right half of the 64×32 atlas.
+postfx::LocalShadow gShadow;
+
+postfx::LocalShadow validShadow() {
+    postfx::LocalShadow s;
+    s.faces[0].offset = {32, 0};
+    s.faces[0].extent = {32, 32};
+    s.faces[0].worldToClip =
+        glm::perspectiveRH_ZO(1.0, 1.0, 0.05, 50.0) *
+        glm::lookAtRH(glm::dvec3(5.0, 1.0, -3.0), glm::dvec3(5.0, 0.0, -3.0), glm::dvec3(1, 0, 0));
+    return s;
+}
+
 postfx::LocalLight validLight() {
     postfx::LocalLight l;
     l.type = postfx::LightType::Spot;
@@ -73,6 +93,7 @@ postfx::LocalLight validLight() {
     l.intensity = {100.0f, 100.0f, 100.0f};
     l.innerConeAngle = 0.0f;
     l.outerConeAngle = 0.5f;
+    l.shadow = 0;
     return l;
 }
 
@@ -133,6 +154,48 @@ void addVec3Range(std::vector<Row>& bad, std::vector<Row>& good, const std::stri
 }
 
 using FogField = std::function<float&(FrameInfo&)>;
+
+// FrameInfo::localShadows and the light's index into it.
+void localShadowRows(std::vector<Row>& bad, std::vector<Row>& good) {
+    addBad(bad, "FrameInfo.lights[0].shadow", "1 (one shadow)", [](FrameInfo&) { gLight.shadow = 1; });
+    good.push_back({"FrameInfo.lights[0].shadow", "kNoLocalShadow",
+                    [](FrameInfo&) { gLight.shadow = postfx::kNoLocalShadow; }});
+    good.push_back({"no local shadows", "", [](FrameInfo& f) {
+                        gLight.shadow = postfx::kNoLocalShadow;
+                        f.localShadows = {};
+                    }});
+    addImageRows(bad, "FrameInfo.localShadows.image",
+                 [](FrameInfo& f) -> postfx::ImageInput& { return f.localShadows.image; });
+    addBad(bad, "FrameInfo.localShadows.shadows", "257 shadows",
+           [](FrameInfo& f) { f.localShadows.shadowCount = postfx::kMaxLocalLights + 1; });
+    addBad(bad, "FrameInfo.localShadows.shadows is null", "null with count 1",
+           [](FrameInfo& f) { f.localShadows.shadows = nullptr; });
+    const std::string shadow = "FrameInfo.localShadows.shadows[0]";
+    addBad(bad, shadow + ".faceCount", "0", [](FrameInfo&) { gShadow.faceCount = 0; });
+    addBad(bad, shadow + ".faceCount", "7", [](FrameInfo&) { gShadow.faceCount = 7; });
+    addRange<float>(
+        bad, good, shadow + ".depthBias", [](FrameInfo&) -> float& { return gShadow.depthBias; }, 0.0f,
+        std::numeric_limits<float>::max());
+    const std::string face = shadow + ".faces[0]";
+    addBad(bad, face + ".extent", "0 wide", [](FrameInfo&) { gShadow.faces[0].extent.x = 0; });
+    addBad(bad, face + ".extent", "0 high", [](FrameInfo&) { gShadow.faces[0].extent.y = 0; });
+    addBad(bad, face + ": offset", "past the right edge", [](FrameInfo&) { gShadow.faces[0].offset.x = 33; });
+    addBad(bad, face + ": offset", "past the bottom edge", [](FrameInfo&) { gShadow.faces[0].offset.y = 1; });
+    addBad(bad, face + ": offset", "wrapping around 2^32",
+           [](FrameInfo&) { gShadow.faces[0].offset.x = 0xffffffffu; });
+    good.push_back({face + ".extent", "the whole atlas", [](FrameInfo&) {
+                        gShadow.faces[0].offset = {0, 0};
+                        gShadow.faces[0].extent = {64, 32};
+                    }});
+    addBad(bad, face + ".worldToClip", "NaN", [](FrameInfo&) { gShadow.faces[0].worldToClip[3][1] = kNan; });
+    addBad(bad, face + ".worldToClip", "1e39 (not finite in float)",
+           [](FrameInfo&) { gShadow.faces[0].worldToClip[0][0] = 1e39; });
+    addBad(bad, face + ".worldToClip", "singular", [](FrameInfo&) { gShadow.faces[0].worldToClip[2] = {}; });
+    addBad(bad, face + ".worldToClip", "zero",
+           [](FrameInfo&) { gShadow.faces[0].worldToClip = glm::dmat4(0.0); });
+    addBad(bad, shadow + ".faces[1].extent", "a cube's unset faces",
+           [](FrameInfo&) { gShadow.faceCount = 6; });
+}
 
 void frameRows(std::vector<Row>& bad, std::vector<Row>& good) {
     addBad(bad, "FrameInfo.structSize", "+4", [](FrameInfo& f) { f.structSize += 4; });
@@ -270,6 +333,7 @@ void frameRows(std::vector<Row>& bad, std::vector<Row>& good) {
     addRange<float>(
         bad, good, light + ".innerConeAngle", [](FrameInfo&) -> float& { return gLight.innerConeAngle; },
         0.0f, 0.5f);
+    localShadowRows(bad, good);
 }
 
 void fogRows(std::vector<Row>& bad, std::vector<Row>& good) {
@@ -435,6 +499,9 @@ protected:
         gLight = validLight();
         f.lights = &gLight;
         f.lightCount = 1;
+        gShadow = validShadow();
+        f.localShadows.shadows = &gShadow;
+        f.localShadows.shadowCount = 1;
         row.set(f);
         postfx::FramePlan plan;
         return context->plan(f, plan);

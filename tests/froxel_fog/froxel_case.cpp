@@ -10,6 +10,8 @@ postfx::FrameInfo FroxelCase::prepared() const {
     f.lightCount = uint32_t(lights.size());
     f.froxelFog.volumes = volumes.data();
     f.froxelFog.volumeCount = uint32_t(volumes.size());
+    f.localShadows.shadows = localShadows.data();
+    f.localShadows.shadowCount = uint32_t(localShadows.size());
     return f;
 }
 
@@ -43,8 +45,33 @@ postfx::Status FroxelCase::reference(std::vector<float>& out, uint32_t steps) co
         in.shadowReversedZ = f.shadowMap.reversedZ;
         in.shadowDepthBias = f.shadowMap.depthBias;
     }
+    if (!images.localShadow.empty()) {
+        in.localShadowDepth = images.localShadow;
+        in.localShadowWidth = images.localShadowWidth;
+        in.localShadowHeight = images.localShadowHeight;
+        in.localShadows = localShadows;
+    }
     in.stepsPerPixel = steps;
     return postfx::reference::renderFroxelFog(in, out);
+}
+
+void FroxelGpuFixture::SetUp() {
+    GpuTest::SetUp();
+    ASSERT_TRUE(host);
+    ASSERT_TRUE(gpu.init(hostHandles()).ok());
+    postfx::ContextCreateInfo info;
+    info.depth.reversedZ = true;
+    ASSERT_TRUE(createContext(context, info).ok());
+}
+
+std::vector<float> FroxelGpuFixture::render(const FroxelCase& c, uint64_t frameIndex) {
+    postfx::FrameInfo frame = c.prepared();
+    frame.frameIndex = frameIndex;
+    std::vector<float> out;
+    FogHarness harness(*host, gpu);
+    const postfx::Status s = harness.run(*context, c.images, frame, out);
+    EXPECT_TRUE(s.ok()) << s.message;
+    return out;
 }
 
 FroxelCase froxelCase(uint32_t w, uint32_t h, double cameraY, uint32_t wallColumns, double wall) {

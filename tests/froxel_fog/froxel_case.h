@@ -17,6 +17,8 @@ struct FroxelCase {
     std::vector<postfx::FogVolume> volumes;
     postfx::DepthConvention depth;  // reversed Z, as the context the tests create
     std::vector<float> shadow;      // optional shadow map (images.shadow is set from it)
+    // Local lights' shadows in images.localShadow's atlas (the lights' `shadow` index them).
+    std::vector<postfx::LocalShadow> localShadows;
 
     // The frame with its light and volume pointers set to this case's arrays.
     postfx::FrameInfo prepared() const;
@@ -28,5 +30,17 @@ struct FroxelCase {
 // 0.1 m), the left `wallColumns` columns see a wall at `wall` metres, the others nothing; color 1 + a
 // gradient; froxel fog on with a homogeneous medium, no sun, no ambient, jitter off, grid = w × h × 64.
 FroxelCase froxelCase(uint32_t w, uint32_t h, double cameraY, uint32_t wallColumns, double wall);
+
+// A GPU test of froxel cases: one context (reversed Z, as froxelCase's camera) kept across renders, so
+// that temporal accumulation carries from one render to the next.
+class FroxelGpuFixture : public GpuTest {
+protected:
+    void SetUp() override;
+    // prepared() at `frameIndex`, through the fog harness; a failed record() fails the test.
+    std::vector<float> render(const FroxelCase& c, uint64_t frameIndex = 0);
+
+    postfx::core::Gpu gpu;
+    std::unique_ptr<postfx::Context> context;
+};
 
 }  // namespace test

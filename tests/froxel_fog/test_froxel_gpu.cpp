@@ -36,27 +36,8 @@ double simpson(const std::function<double(double)>& f, double a, double b, doubl
     return step(a, b, fa, fb, fm, whole, depth);
 }
 
-class FroxelFogGpuTest : public GpuTest {
+class FroxelFogGpuTest : public FroxelGpuFixture {
 protected:
-    void SetUp() override {
-        GpuTest::SetUp();
-        ASSERT_TRUE(host);
-        ASSERT_TRUE(gpu.init(hostHandles()).ok());
-        postfx::ContextCreateInfo info;
-        info.depth.reversedZ = true;
-        ASSERT_TRUE(createContext(context, info).ok());
-    }
-
-    std::vector<float> render(const FroxelCase& c, uint64_t frameIndex = 0) {
-        postfx::FrameInfo frame = c.prepared();
-        frame.frameIndex = frameIndex;
-        std::vector<float> out;
-        FogHarness harness(*host, gpu);
-        const postfx::Status s = harness.run(*context, c.images, frame, out);
-        EXPECT_TRUE(s.ok()) << s.message;
-        return out;
-    }
-
     // GPU against the reference: relative RMSE over the image, printed, below `maxRmse`.
     void expectNearReference(const FroxelCase& c, double maxRmse, const char* what) {
         const std::vector<float> gpuImage = render(c);
@@ -69,9 +50,6 @@ protected:
         EXPECT_EQ(stats.nonFinite, 0u);
         EXPECT_LT(stats.relativeRmse, maxRmse) << what;
     }
-
-    postfx::core::Gpu gpu;
-    std::unique_ptr<postfx::Context> context;
 };
 
 // Homogeneous medium lit by the sun and ambient light, no shadow: out = color·e^{-σD} + albedo·(E·p(θ) +

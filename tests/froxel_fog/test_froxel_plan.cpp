@@ -4,6 +4,7 @@
 // are the plan's.
 #include "froxel_case.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ uint64_t resourceBytes(const postfx::FramePlan& plan, const std::string& name) {
 }
 
 constexpr uint64_t kUniformSlot = 2560;  // sizeof(FogUniforms) + sizeof(FroxelUniforms) = 2448, to 256
-constexpr uint64_t kLightSlot = 16384;   // 256 lights × 64 bytes
+constexpr uint64_t kLightSlot = 20480;   // 256 lights × 80 bytes
 
 class FroxelFogPlanTest : public GpuTest {
 protected:
@@ -164,6 +165,46 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
     many.frame.froxelFog.lightListMinLights = postfx::kMaxLocalLights + 1;  // never
     plan = planAndRun(many, 2);
     EXPECT_FALSE(plan.pass("froxel_fog.light_lists"));
+}
+
+// Local lights' shadows: the scatter pass reads the host's atlas and the shadows' faces (a storage buffer
+// of 80 bytes a face, each shadow once however many lights share it); with temporal accumulation also
+// two R32F volumes of the shadowed lights' light. Without a light that names a shadow, none of it.
+TEST_F(FroxelFogPlanTest, LocalShadowsOnlyWhenALightHasOne) {
+    FroxelCase shadowed = c;
+    shadowed.lights = {light(0.0), light(1.0), light(2.0)};
+    shadowed.images.localShadow.assign(64 * 32, 1.0f);
+    shadowed.images.localShadowWidth = 64;
+    shadowed.images.localShadowHeight = 32;
+    postfx::LocalShadow cube;
+    cube.faceCount = 6;
+    for (uint32_t f = 0; f < 6; ++f) {
+        cube.faces[f].offset = {f % 3 * 16, f / 3 * 16};
+        cube.faces[f].extent = {16, 16};
+    }
+    postfx::LocalShadow spot;
+    spot.faces[0].offset = {48, 0};
+    spot.faces[0].extent = {16, 16};
+    shadowed.localShadows = {cube, spot};
+    postfx::FramePlan plan = planAndRun(shadowed, 0);
+    EXPECT_FALSE(plan.reads("host.local_shadow_atlas"));  // no light names a shadow
+    EXPECT_FALSE(plan.reads("froxel_fog.shadow_faces"));
+
+    shadowed.lights[0].shadow = 0;
+    shadowed.lights[1].shadow = 1;
+    shadowed.lights[2].shadow = 0;  // shares the cube
+    plan = planAndRun(shadowed, 1);
+    const postfx::PlannedPass* scatter = plan.pass("froxel_fog.scatter");
+    ASSERT_TRUE(scatter);
+    EXPECT_TRUE(std::find(scatter->reads.begin(), scatter->reads.end(), "host.local_shadow_atlas") !=
+                scatter->reads.end());
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadow_faces"), 2u * 768);  // 7 faces × 80 = 560, to 256
+    EXPECT_FALSE(plan.reads("froxel_fog.shadowed_light_a"));              // temporal off
+
+    shadowed.frame.froxelFog.temporal.enabled = true;
+    plan = planAndRun(shadowed, 2);
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadowed_light_a"), 20u * 12 * 40 * 4);
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadowed_light_b"), 20u * 12 * 40 * 4);
 }
 
 // Temporal accumulation (on by default): the scatter volume is two RGBA32F histories, the one written last

@@ -4,8 +4,10 @@
 // largest finite value (RGBA16F overflow clamped as the ray-marched fog clamps it), and the reference
 // (clamped) where the grid can follow it.
 #include "froxel_case.h"
+#include "local_shadow_maps.h"
 #include "stability_frame.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -165,6 +167,58 @@ TEST_F(FroxelFogStability, NearPlane1em4AndMaxDistance1e7) {
         // linear ramp within that slice is what it can do (docs/effects/froxel-fog.md, "Artefacts").
         expectStable(c, log ? "near 1e-4, far 1e7, log" : "near 1e-4, far 1e7, power", log ? 0.01 : 0.0);
     }
+}
+
+// Local lights' shadows (docs/stability.md, "Froxel fog"): a light inside its caster and exactly on its
+// surface, a 1×1-texel map, ranges of 1e-3 m and 1e6 m, depth biases of 0 and 1e3, 256 lights each with a
+// cube shadow; compared with the reference where the grid can follow it.
+TEST_F(FroxelFogStability, LocalLightShadowsAtTheirExtremes) {
+    FroxelCase base = axisCase();
+    base.frame.ambient = glm::vec3(0.0f);
+    const glm::dvec3 caster(0.0, 0.0, -8.0);
+    const auto shadowedPoint = [&](FroxelCase& c, const glm::dvec3& position, float range, float bias,
+                                   uint32_t size, const std::vector<ShadowSphere>& spheres) {
+        postfx::LocalLight l = pointLight(postfx::DVec3(position), 500.0f, std::min(0.05f, range));
+        l.range = range;
+        l.shadow = 0;
+        c.lights = {l};
+        ShadowAtlas atlas(3 * size, 2 * size);
+        c.localShadows = {atlas.point(position, {0, 0}, size, std::min(0.01, 0.5 * range), range, spheres)};
+        c.localShadows[0].depthBias = bias;
+        c.images.localShadow = atlas.texels;
+        c.images.localShadowWidth = atlas.width;
+        c.images.localShadowHeight = atlas.height;
+    };
+    FroxelCase c = base;
+    shadowedPoint(c, caster, 30.0f, 1e-4f, 32, {{caster, 1.0}});
+    expectStable(c, "a light inside its caster");
+    shadowedPoint(c, caster + glm::dvec3(1.0, 0.0, 0.0), 30.0f, 1e-4f, 32, {{caster, 1.0}});
+    expectStable(c, "a light on its caster's surface");
+    shadowedPoint(c, caster + glm::dvec3(1.5, 0.0, 0.0), 30.0f, 1e-4f, 1, {{caster, 1.0}});
+    expectStable(c, "a cube of 1x1-texel faces");
+    for (float range : {1e-3f, 1e6f}) {
+        shadowedPoint(c, caster + glm::dvec3(1.5, 0.0, 0.0), range, 1e-4f, 16, {{caster, 1.0}});
+        expectStable(c, range < 1.0f ? "range 1e-3 m" : "range 1e6 m");
+    }
+    for (float bias : {0.0f, 1e3f}) {
+        shadowedPoint(c, caster + glm::dvec3(1.5, 0.0, 0.0), 30.0f, bias, 16, {{caster, 1.0}});
+        expectStable(c, bias == 0.0f ? "depth bias 0" : "depth bias 1e3");
+    }
+    // 256 point lights along the view, each with its own cube of 4×4-texel faces.
+    c = base;
+    ShadowAtlas atlas(256 * 12, 8);
+    for (uint32_t i = 0; i < postfx::kMaxLocalLights; ++i) {
+        const glm::dvec3 p(0.3 * std::sin(double(i)), 0.3 * std::cos(double(i)), -0.07 * i);
+        postfx::LocalLight l = pointLight(postfx::DVec3(p), 5.0f, 0.05f);
+        l.range = 5.0f;
+        l.shadow = i;
+        c.lights.push_back(l);
+        c.localShadows.push_back(atlas.point(p, {i * 12, 0}, 4, 0.01, 5.0, {{caster, 1.0}}));
+    }
+    c.images.localShadow = atlas.texels;
+    c.images.localShadowWidth = atlas.width;
+    c.images.localShadowHeight = atlas.height;
+    expectStable(c, "256 lights, each shadowed");
 }
 
 }  // namespace
