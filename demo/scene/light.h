@@ -31,6 +31,10 @@ struct Light {
     float innerAngleDeg = 0.0f;              // spot: full intensity inside this half angle [deg], [0, outer]
     float outerAngleDeg = 45.0f;             // spot: dark outside this half angle [deg], [0, 89.9]
     glm::vec3 velocity{0.0f};                // [m/s] world, each in [-1e4, 1e4] (scene/motion.h)
+    // Whether the light casts shadows: the renderer draws its shadow map (one face for a spot, six for a
+    // point light) into the local shadow atlas, reads it on the surfaces and gives it to postfx.
+    bool shadows = false;
+    uint32_t shadowResolution = 512;  // texels per face edge, [16, 4096] (the renderer may halve it to fit)
     std::optional<IntensityChange> intensityChange;  // none: the intensity never changes
 };
 

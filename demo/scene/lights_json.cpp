@@ -14,11 +14,13 @@ namespace {
 using json = nlohmann::json;
 using namespace json_read;
 
-constexpr const char* kPointKeys[] = {"type",  "position", "intensity",       "radius",
-                                      "range", "velocity", "intensity_change"};
-constexpr const char* kSpotKeys[] = {"type",     "position",        "direction",       "intensity",
-                                     "radius",   "range",           "inner_angle_deg", "outer_angle_deg",
-                                     "velocity", "intensity_change"};
+constexpr const char* kPointKeys[] = {
+    "type",     "position",         "intensity", "radius",           "range",
+    "velocity", "intensity_change", "shadows",   "shadow_resolution"};
+constexpr const char* kSpotKeys[] = {
+    "type",    "position",         "direction",       "intensity", "radius",
+    "range",   "inner_angle_deg",  "outer_angle_deg", "velocity",  "intensity_change",
+    "shadows", "shadow_resolution"};
 constexpr const char* kIntensityChangeKeys[] = {"frame", "intensity"};
 
 constexpr Interval kCoordinate{-limits::kMaxCoordinate, limits::kMaxCoordinate, "[-1e7, 1e7]"};
@@ -27,6 +29,10 @@ constexpr Interval kRange{0.0, 1e9, "(0, 1e9]", true};
 // postfx accepts outer cone angles up to π/2 (exclusive in practice): 89.9° keeps the cone usable.
 constexpr Interval kOuterAngle{0.0, 89.9, "[0, 89.9]"};
 constexpr Interval kVelocity{-limits::kMaxSpeed, limits::kMaxSpeed, "[-1e4, 1e4]"};
+// Texels per shadow face edge: 16 is the smallest map that still shows a shadow's shape; 4096 is a
+// 64 MiB D32 face (six for a point light), as large as engines make local lights' maps.
+constexpr uint32_t kMinShadowResolution = 16;
+constexpr uint32_t kMaxShadowResolution = 4096;
 
 // `intensity_change`: both keys required.
 IntensityChange readIntensityChange(const json& j, const std::string& path) {
@@ -77,6 +83,14 @@ Light readLight(const json& j, const std::string& path) {
     if (const json* v = find(j, "velocity")) l.velocity = readVec3(*v, child(path, "velocity"), kVelocity);
     if (const json* c = find(j, "intensity_change"))
         l.intensityChange = readIntensityChange(*c, child(path, "intensity_change"));
+    if (const json* s = find(j, "shadows")) l.shadows = readBool(*s, child(path, "shadows"));
+    if (const json* r = find(j, "shadow_resolution")) {
+        const std::string resolutionPath = child(path, "shadow_resolution");
+        const uint32_t resolution = readUint32(*r, resolutionPath);
+        if (resolution < kMinShadowResolution || resolution > kMaxShadowResolution)
+            fail(resolutionPath, "expected an integer in [16, 4096]" + got(*r));
+        l.shadowResolution = resolution;
+    }
     return l;
 }
 
@@ -117,7 +131,9 @@ json lightsToJson(const std::vector<Light>& lights) {
                   {"intensity", vec3(l.intensity)},
                   {"radius", number(l.radius)},
                   {"range", number(l.range)},
-                  {"velocity", vec3(l.velocity)}};
+                  {"velocity", vec3(l.velocity)},
+                  {"shadows", l.shadows},
+                  {"shadow_resolution", l.shadowResolution}};
         if (l.intensityChange) {
             j["intensity_change"] = {{"frame", l.intensityChange->frame},
                                      {"intensity", vec3(l.intensityChange->intensity)}};

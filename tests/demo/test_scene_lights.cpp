@@ -93,6 +93,38 @@ TEST(DemoSceneLights, RoundTrip) {
     EXPECT_EQ(again.scene.lights[1].innerAngleDeg, p.scene.lights[1].innerAngleDeg);
 }
 
+// `shadows` and `shadow_resolution`: off and 512 by default, read on both types, written back exactly.
+TEST(DemoSceneLights, ShadowKeysRoundTrip) {
+    json shadowedSpot = spot();
+    shadowedSpot["shadows"] = true;
+    shadowedSpot["shadow_resolution"] = 16;
+    json shadowedPoint = point();
+    shadowedPoint["shadows"] = true;
+    shadowedPoint["shadow_resolution"] = 4096.0;  // a whole number written as a decimal
+    const Parsed p = parse(sceneWith({point(), shadowedSpot, shadowedPoint}));
+    ASSERT_TRUE(p.ok) << p.error;
+    ASSERT_EQ(p.scene.lights.size(), 3u);
+    EXPECT_FALSE(p.scene.lights[0].shadows);
+    EXPECT_EQ(p.scene.lights[0].shadowResolution, 512u);
+    EXPECT_TRUE(p.scene.lights[1].shadows);
+    EXPECT_EQ(p.scene.lights[1].shadowResolution, 16u);
+    EXPECT_TRUE(p.scene.lights[2].shadows);
+    EXPECT_EQ(p.scene.lights[2].shadowResolution, 4096u);
+
+    const json written = demo::sceneToJson(p.scene);
+    EXPECT_EQ(written["lights"][0]["shadows"], false);
+    EXPECT_EQ(written["lights"][0]["shadow_resolution"], 512);
+    EXPECT_EQ(written["lights"][1]["shadows"], true);
+    EXPECT_EQ(written["lights"][1]["shadow_resolution"], 16);
+    const Parsed again = parse(written);
+    ASSERT_TRUE(again.ok) << again.error;
+    EXPECT_EQ(demo::sceneToJson(again.scene), written);
+    for (size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(again.scene.lights[i].shadows, p.scene.lights[i].shadows) << i;
+        EXPECT_EQ(again.scene.lights[i].shadowResolution, p.scene.lights[i].shadowResolution) << i;
+    }
+}
+
 TEST(DemoSceneLights, LimitIsKMaxLocalLights) {
     EXPECT_TRUE(parse(sceneWith(json::array())).ok);
     json many = json::array();
@@ -186,6 +218,13 @@ std::vector<Rejection> rejections() {
         {"InnerNegative", edit(spot(), "inner_angle_deg", -0.5),
          "lights[1].inner_angle_deg: expected a number in [0, outer_angle_deg]"},
         {"SpotUnknownKey", edit(spot(), "angle", 3), "lights[1].angle: unknown key for a spot light"},
+        {"ShadowsNotBool", edit(point(), "shadows", 1), "lights[1].shadows: expected true or false"},
+        {"ShadowResolutionSmall", edit(spot(), "shadow_resolution", 8),
+         "lights[1].shadow_resolution: expected an integer in [16, 4096], got 8"},
+        {"ShadowResolutionLarge", edit(point(), "shadow_resolution", 4097),
+         "lights[1].shadow_resolution: expected an integer in [16, 4096], got 4097"},
+        {"ShadowResolutionFraction", edit(point(), "shadow_resolution", 512.5),
+         "lights[1].shadow_resolution: expected an integer"},
     };
 }
 
