@@ -36,7 +36,7 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
 
     using namespace shared;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
-    const std::array<VkDescriptorSetLayoutBinding, 8> bindings{{
+    const std::array<VkDescriptorSetLayoutBinding, 10> bindings{{
         {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
         {kBindingAlbedo, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
         {kBindingNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
@@ -45,6 +45,8 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
         {kBindingHdr, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, cs, nullptr},
         {kBindingLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
         {kBindingCloudShadow, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
+        {kBindingLocalShadowAtlas, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
+        {kBindingLocalShadowFaces, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, cs, nullptr},
     }};
     if (!createDescriptorSet(device, bindings, setLayout_, pool_, set_, error)) return false;
 
@@ -75,6 +77,15 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
     }
     vkUpdateDescriptorSets(device, uint32_t(writes.size()), writes.data(), 0, nullptr);
     setCloudShadow(device, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED);
+    setLocalShadowAtlas(device, in.localShadowAtlas->view);
+    const VkDescriptorBufferInfo faces{in.shadowFaces->buffer, 0, sizeof(LocalShadowFaces)};
+    VkWriteDescriptorSet facesWrite{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    facesWrite.dstSet = set_;
+    facesWrite.dstBinding = kBindingLocalShadowFaces;
+    facesWrite.descriptorCount = 1;
+    facesWrite.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    facesWrite.pBufferInfo = &faces;
+    vkUpdateDescriptorSets(device, 1, &facesWrite, 0, nullptr);
 
     VkPipelineLayoutCreateInfo plci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     plci.setLayoutCount = 1;
@@ -96,6 +107,18 @@ void LightingPass::setCloudShadow(VkDevice device, VkImageView view, VkImageLayo
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = set_;
     write.dstBinding = shared::kBindingCloudShadow;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &image;
+    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+void LightingPass::setLocalShadowAtlas(VkDevice device, VkImageView view) {
+    // Nearest and no comparison: local_shadow.glsl fetches texels and compares them itself (postfx's rule).
+    const VkDescriptorImageInfo image{pointSampler_, view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    write.dstSet = set_;
+    write.dstBinding = shared::kBindingLocalShadowAtlas;
     write.descriptorCount = 1;
     write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     write.pImageInfo = &image;

@@ -8,13 +8,15 @@
 namespace demo {
 
 struct LightingInputs {
-    const GpuBuffer* frameUniforms = nullptr;  // shared::FrameUniforms
-    const GpuBuffer* lights = nullptr;         // shared::LightsUniforms
-    const GpuImage* albedo = nullptr;          // SHADER_READ_ONLY_OPTIMAL when dispatched
-    const GpuImage* normal = nullptr;          // SHADER_READ_ONLY_OPTIMAL
-    const GpuImage* depth = nullptr;           // DEPTH_STENCIL_READ_ONLY_OPTIMAL
-    const GpuImage* shadowMap = nullptr;       // DEPTH_STENCIL_READ_ONLY_OPTIMAL
-    const GpuImage* hdr = nullptr;             // GENERAL, written
+    const GpuBuffer* frameUniforms = nullptr;    // shared::FrameUniforms
+    const GpuBuffer* lights = nullptr;           // shared::LightsUniforms
+    const GpuImage* albedo = nullptr;            // SHADER_READ_ONLY_OPTIMAL when dispatched
+    const GpuImage* normal = nullptr;            // SHADER_READ_ONLY_OPTIMAL
+    const GpuImage* depth = nullptr;             // DEPTH_STENCIL_READ_ONLY_OPTIMAL
+    const GpuImage* shadowMap = nullptr;         // DEPTH_STENCIL_READ_ONLY_OPTIMAL
+    const GpuImage* hdr = nullptr;               // GENERAL, written
+    const GpuImage* localShadowAtlas = nullptr;  // DEPTH_STENCIL_READ_ONLY_OPTIMAL (setLocalShadowAtlas)
+    const GpuBuffer* shadowFaces = nullptr;      // shared::LocalShadowFaces, storage buffer
 };
 
 class LightingPass {
@@ -26,6 +28,9 @@ public:
     // Points the cloud shadow binding at `view` in `layout` (VK_NULL_HANDLE: the albedo stand-in); when
     // that changes the binding, first waits until the device is idle (no pending frame uses the set).
     void setCloudShadow(VkDevice device, VkImageView view, VkImageLayout layout);
+    // Points the local shadow atlas binding at `view` (DEPTH_STENCIL_READ_ONLY_OPTIMAL), after the atlas was
+    // replaced (LocalShadowPass::reserve, which waited for the device: no pending frame uses the set).
+    void setLocalShadowAtlas(VkDevice device, VkImageView view);
 
     VkSampler shadowSampler = VK_NULL_HANDLE;  // nearest, compare LESS_OR_EQUAL, border = depth 1 (lit)
 

@@ -41,13 +41,14 @@ Renderer::Impl::~Impl() {
     for (VkCommandBuffer c : commandBuffers)
         if (c) vkFreeCommandBuffers(device, host.commandPool, 1, &c);
     lighting.destroy(device);
+    localShadows.destroy(device);
     gbuffer.destroy(device);
     shadow.destroy(device);
     destroyImage(device, hdr);
     destroyImage(device, fogScratch);
     if (framePool) vkDestroyDescriptorPool(device, framePool, nullptr);
     if (frameSetLayout) vkDestroyDescriptorSetLayout(device, frameSetLayout, nullptr);
-    for (GpuBuffer* b : {&frameUniforms, &lightsUniforms, &vertices, &indices, &readback})
+    for (GpuBuffer* b : {&frameUniforms, &lightsUniforms, &shadowFaces, &vertices, &indices, &readback})
         destroyBuffer(device, *b);
 }
 
@@ -110,6 +111,9 @@ bool Renderer::Impl::createResources(std::string& error) {
         !createBuffer(host, sizeof(shared::LightsUniforms),
                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
                       lightsUniforms, error) ||
+        !createBuffer(host, sizeof(shared::LocalShadowFaces),
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
+                      shadowFaces, error) ||
         !createFrameSet(error))
         return false;
 
@@ -128,7 +132,8 @@ bool Renderer::Impl::createResources(std::string& error) {
     s.depthCompare = VK_COMPARE_OP_LESS;
     s.depthClear = 1.0f;
     s.depthBias = true;
-    if (!gbuffer.create(host, g, frameSetLayout, error) || !shadow.create(host, s, frameSetLayout, error))
+    if (!gbuffer.create(host, g, frameSetLayout, error) || !shadow.create(host, s, frameSetLayout, error) ||
+        !localShadows.create(host, error))
         return false;
 
     if (!createImage(
@@ -142,7 +147,9 @@ bool Renderer::Impl::createResources(std::string& error) {
                       &gbuffer.color[1],
                       &gbuffer.depth,
                       &shadow.depth,
-                      &hdr};
+                      &hdr,
+                      &localShadows.atlas(),
+                      &shadowFaces};
     if (!lighting.create(host, in, error)) return false;
     if (!createBuffer(host, VkDeviceSize(extent.width) * extent.height * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       true, readback, error))
@@ -160,10 +167,14 @@ bool Renderer::Impl::createResources(std::string& error) {
     for (VkFence& f : fences)
         if (!vkCheck(vkCreateFence(device, &fci, nullptr, &f), "vkCreateFence", error)) return false;
 
-    // The shadow map is sampled every frame but drawn only with sun.shadows: start it cleared (lit).
+    // The shadow maps are sampled every frame but drawn only with shadows on: start them cleared (lit).
     const std::vector<MeshDraw> none;
     if (!host.submitAndWait(
-            [&](VkCommandBuffer cmd) { shadow.record(cmd, frameSet, vertices, indices, none); }, error))
+            [&](VkCommandBuffer cmd) {
+                shadow.record(cmd, frameSet, vertices, indices, none);
+                localShadows.record(cmd, vertices, indices, none, {});
+            },
+            error))
         return false;
 
     hdrInfo = {hdr.image, hdr.view, hdr.format, extent, VK_IMAGE_LAYOUT_GENERAL, hdr.usage};

@@ -3,6 +3,8 @@
 #include "host/camera_math.h"
 #include "host/renderer_impl.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -47,10 +49,14 @@ shared::FrameUniforms makeFrameUniforms(const Scene& scene, const RenderOptions&
     return u;
 }
 
-// The scene's lights for lighting.comp: positions camera-relative (computed in double), angles as cosines.
-// The first scene.lights.size() entries of shared::LightsUniforms (at most kMaxDemoLights: recordFrame
-// checks).
-std::vector<shared::GpuLight> makeGpuLights(const Scene& scene, float preExposure) {
+// The scene's lights for lighting.comp: positions camera-relative (computed in double), angles as cosines,
+// their shadows' faces in `shadows` (makeGpuShadowFaces' order). The first scene.lights.size() entries of
+// shared::LightsUniforms (at most kMaxDemoLights: recordFrame checks).
+std::vector<shared::GpuLight> makeGpuLights(const Scene& scene, float preExposure,
+                                            const LocalShadowLayout& shadows) {
+    std::vector<uint32_t> firstFace(shadows.shadows.size(), 0);
+    for (size_t s = 1; s < firstFace.size(); ++s)
+        firstFace[s] = firstFace[s - 1] + shadows.shadows[s - 1].faceCount;
     std::vector<shared::GpuLight> out(scene.lights.size());
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const postfx::LocalLight l = toLocalLight(scene.lights[i]);
@@ -61,6 +67,46 @@ std::vector<shared::GpuLight> makeGpuLights(const Scene& scene, float preExposur
         g.intensityRange = glm::vec4(glm::vec3(l.intensity) * preExposure, l.range);
         g.directionCosOuter = glm::vec4(glm::vec3(l.direction), spot ? std::cos(l.outerConeAngle) : -2.0f);
         g.cosInner = glm::vec4(spot ? std::cos(l.innerConeAngle) : -1.0f, 0.0f, 0.0f, 0.0f);
+        if (const uint32_t s = shadows.lightShadow[i]; s != postfx::kNoLocalShadow) {
+            // Face indices and counts stay exact in float (at most 6 · kMaxDemoLights).
+            g.cosInner.y = float(firstFace[s]);
+            g.cosInner.z = float(shadows.shadows[s].faceCount);
+            g.cosInner.w = shadows.shadows[s].depthBias;
+        }
+    }
+    return out;
+}
+
+// Every face of `shadows` for lighting.comp, in order, with matrices from camera-relative positions (the
+// product with the camera's translation taken in double).
+std::vector<shared::GpuShadowFace> makeGpuShadowFaces(const LocalShadowLayout& shadows,
+                                                      const glm::vec3& cameraPosition) {
+    const glm::dmat4 fromRelative = glm::translate(glm::dmat4(1.0), glm::dvec3(cameraPosition));
+    std::vector<shared::GpuShadowFace> out;
+    for (const postfx::LocalShadow& s : shadows.shadows) {
+        for (uint32_t f = 0; f < s.faceCount; ++f) {
+            const postfx::LocalShadowFace& face = s.faces[f];
+            shared::GpuShadowFace g{};
+            g.worldToClip = glm::mat4(glm::dmat4(face.worldToClip) * fromRelative);
+            g.region = glm::vec4(face.offset.x, face.offset.y, face.extent.x, face.extent.y);
+            g.params = glm::vec4(float(shadowTexelAngle(face)), 0.0f, 0.0f, 0.0f);
+            out.push_back(g);
+        }
+    }
+    return out;
+}
+
+// Every face of `shadows` for the shadow pass: its region and world -> clip matrix.
+std::vector<ShadowFaceDraw> makeShadowFaceDraws(const LocalShadowLayout& shadows) {
+    std::vector<ShadowFaceDraw> out;
+    for (const postfx::LocalShadow& s : shadows.shadows) {
+        for (uint32_t f = 0; f < s.faceCount; ++f) {
+            const postfx::LocalShadowFace& face = s.faces[f];
+            ShadowFaceDraw d;
+            d.region = {{int32_t(face.offset.x), int32_t(face.offset.y)}, {face.extent.x, face.extent.y}};
+            d.worldToClip = glm::mat4(glm::dmat4(face.worldToClip));
+            out.push_back(d);
+        }
     }
     return out;
 }
@@ -124,11 +170,22 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     in.sun.illuminance = scene.sun.illuminance;
     // The surfaces' ambient: scene.ambient, or the sky's with the atmosphere's ambient_from_sky.
     in.ambient = light.surfaces.ambient;
+    localShadowLayout = localShadowsOf(scene);
     localLights.clear();
-    for (const Light& l : scene.lights)
-        localLights.push_back(toLocalLight(l));
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        localLights.push_back(toLocalLight(scene.lights[i]));
+        localLights.back().shadow = localShadowLayout.lightShadow[i];
+    }
     in.lights = localLights.data();
     in.lightCount = uint32_t(localLights.size());
+    if (!localShadowLayout.shadows.empty()) {
+        // The atlas as the shadow pass leaves it (reserveLocalShadows made it large enough).
+        const GpuImage& a = localShadows.atlas();
+        in.localShadows.image = {
+            a.image, a.view, a.format, a.extent, VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, a.usage};
+        in.localShadows.shadows = localShadowLayout.shadows.data();
+        in.localShadows.shadowCount = uint32_t(localShadowLayout.shadows.size());
+    }
     if (shadows) {
         const ImageInfo& s = shadowInfo.image;
         in.shadowMap.image = {s.image, s.view, s.format, s.extent, s.layout, s.usage};
@@ -172,6 +229,20 @@ bool Renderer::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t fra
     return impl_->recordFrame(cmd, scene, frameIndex, fogOutput, error);
 }
 
+LocalShadowLayout Renderer::Impl::localShadowsOf(const Scene& scene) const {
+    return layoutLocalShadows(scene.lights,
+                              std::min(kMaxShadowAtlasEdge, host.properties.limits.maxImageDimension2D));
+}
+
+bool Renderer::Impl::reserveLocalShadows(const Scene& scene, std::string& error) {
+    const LocalShadowLayout layout = localShadowsOf(scene);
+    if (layout.shadows.empty()) return true;
+    bool replaced = false;
+    if (!localShadows.reserve(host, {layout.extent.x, layout.extent.y}, replaced, error)) return false;
+    if (replaced) lighting.setLocalShadowAtlas(host.device, localShadows.atlas().view);
+    return true;
+}
+
 bool Renderer::Impl::drawsShadows(const Scene& scene, const ShadowFit& fit, uint64_t frameIndex) const {
     return drawsShadows(scene, fit, frameIndex, frameLight(scene));
 }
@@ -189,6 +260,7 @@ bool Renderer::Impl::drawsShadows(const Scene& scene, const ShadowFit& fit, uint
 
 bool Renderer::plan(const Scene& scene, uint64_t frameIndex, postfx::FramePlan& out,
                     std::string& error) const {
+    if (!impl_->reserveLocalShadows(scene, error)) return false;
     const ShadowFit fit = impl_->shadowFit(scene);
     const FrameLight light = impl_->frameLight(scene);
     const bool shadows = impl_->drawsShadows(scene, fit, frameIndex, light);
@@ -202,6 +274,8 @@ bool Renderer::plan(const Scene& scene, uint64_t frameIndex, postfx::FramePlan& 
 }
 
 postfx::FrameInfo Renderer::frameInputs(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex) const {
+    std::string error;  // a failure leaves the atlas as it was: postfx's checks of the frame then say why
+    impl_->reserveLocalShadows(scene, error);
     const ShadowFit fit = impl_->shadowFit(scene);
     const FrameLight light = impl_->frameLight(scene);
     const bool shadows = impl_->drawsShadows(scene, fit, frameIndex, light);
@@ -241,6 +315,9 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
                 std::to_string(shared::kMaxDemoLights);
         return false;
     }
+    // The atlas first: postfx's plan (drawsShadows) and record read it.
+    if (!reserveLocalShadows(scene, error)) return false;
+    const LocalShadowLayout localShadowFrame = localShadowsOf(scene);
     const ShadowFit fit = shadowFit(scene);
     // The frame's light, once: the surfaces' uniforms and lights, the shadow decision and postfx read it.
     const FrameLight light = frameLight(scene);
@@ -262,7 +339,7 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
                   kUniformStages, VK_ACCESS_UNIFORM_READ_BIT);
     // Local lights (lighting pass only): the same, for the entries in use (none: nothing written).
     if (!scene.lights.empty()) {
-        const std::vector<shared::GpuLight> lights = makeGpuLights(scene, preExposure);
+        const std::vector<shared::GpuLight> lights = makeGpuLights(scene, preExposure, localShadowFrame);
         bufferBarrier(cmd, lightsUniforms, kCompute, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                       VK_ACCESS_TRANSFER_WRITE_BIT);
         vkCmdUpdateBuffer(cmd, lightsUniforms.buffer, 0, lights.size() * sizeof(shared::GpuLight),
@@ -271,10 +348,29 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
                       kCompute, VK_ACCESS_UNIFORM_READ_BIT);
     }
 
+    // The shadowed lights' faces: the same, for the faces in use, in chunks of vkCmdUpdateBuffer's 64 KiB.
+    const std::vector<shared::GpuShadowFace> faces =
+        makeGpuShadowFaces(localShadowFrame, scene.camera.position);
+    if (!faces.empty()) {
+        bufferBarrier(cmd, shadowFaces, kCompute, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT);
+        const VkDeviceSize bytes = faces.size() * sizeof(shared::GpuShadowFace);
+        constexpr VkDeviceSize kChunk = 65536 / sizeof(shared::GpuShadowFace) * sizeof(shared::GpuShadowFace);
+        for (VkDeviceSize at = 0; at < bytes; at += kChunk) {
+            vkCmdUpdateBuffer(cmd, shadowFaces.buffer, at, std::min(kChunk, bytes - at),
+                              reinterpret_cast<const char*>(faces.data()) + at);
+        }
+        bufferBarrier(cmd, shadowFaces, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      kCompute, VK_ACCESS_SHADER_READ_BIT);
+    }
+
     // Raster passes leave their attachments readable by compute shaders. They start by discarding
     // their attachments after the previous frame's COMPUTE_SHADER reads: the lighting pass and
-    // postfx (whose release barriers end in COMPUTE_SHADER -> ALL_COMMANDS) read depth and shadow map.
+    // postfx (whose release barriers end in COMPUTE_SHADER -> ALL_COMMANDS) read depth and shadow maps.
+    // The local shadow atlas is drawn with shadowed lights, and cleared once after it was replaced.
     if (shadows) shadow.record(cmd, frameSet, vertices, indices, draws);
+    if (!faces.empty() || !localShadows.cleared())
+        localShadows.record(cmd, vertices, indices, draws, makeShadowFaceDraws(localShadowFrame));
     gbuffer.record(cmd, frameSet, vertices, indices, draws);
 
     // Lighting overwrites every HDR pixel: discard the old content once its readers are done.

@@ -6,6 +6,8 @@
 #include "host/camera_math.h"
 #include "host/gpu_resources.h"
 #include "host/lighting_pass.h"
+#include "host/local_shadow_pass.h"
+#include "host/local_shadows.h"
 #include "host/raster_pass.h"
 #include "host/renderer.h"
 
@@ -58,6 +60,13 @@ struct Renderer::Impl {
     RasterPass shadow;   // depth only, shadowMapSize²
     GpuImage hdr;        // RGBA16F radiance
     LightingPass lighting;
+    // The local lights' shadow atlas and its pass (scene lights[i].shadows), and the faces the lighting
+    // reads (shared::LocalShadowFaces, written with vkCmdUpdateBuffer each frame with shadowed lights).
+    LocalShadowPass localShadows;
+    GpuBuffer shadowFaces;
+    // The layout postfx was last told (FrameInfo::localShadows.shadows points here; rebuilt by
+    // postfxInputs).
+    mutable LocalShadowLayout localShadowLayout;
 
     GpuBuffer vertices, indices;  // host-visible scene mesh
     std::vector<MeshDraw> draws;
@@ -89,6 +98,12 @@ struct Renderer::Impl {
     // Points the lighting at postfx's cloud shadow map held from the previous frame (or at none) and
     // returns the rows its uniforms carry; orders the map's writes before the lighting's reads.
     postfx::CloudShadowTransform bindCloudShadow(VkCommandBuffer cmd);
+
+    // The local shadow layout of `scene` (its lights with shadows) within the atlas's limit.
+    LocalShadowLayout localShadowsOf(const Scene& scene) const;
+    // Grows the atlas to hold the layout of `scene` (waiting for the device when it must be replaced, and
+    // pointing the lighting at the new one): before anything gives postfx the frame (plan or record).
+    bool reserveLocalShadows(const Scene& scene, std::string& error);
 
     bool createResources(std::string& error);
     bool createFrameSet(std::string& error);

@@ -35,6 +35,9 @@ DEMO_CONST(uint, kBindingLights, 6u);     // uniform LightsUniforms, the scene's
 // sampler2D r32f, postfx's cloud shadow map of the previous frame (postfx::kCloudsShadowMap); the albedo
 // stands in while postfx holds none (then the rows below put every point outside it: never sampled)
 DEMO_CONST(uint, kBindingCloudShadow, 7u);
+// sampler2D (nearest, no compare), the local lights' shadow atlas (D32, standard Z; host/local_shadows.h)
+DEMO_CONST(uint, kBindingLocalShadowAtlas, 8u);
+DEMO_CONST(uint, kBindingLocalShadowFaces, 9u);  // readonly buffer LocalShadowFaces, the atlas's faces
 
 DEMO_CONST(uint, kLightingGroupSize, 8u);  // lighting workgroup is kLightingGroupSize² threads
 
@@ -77,7 +80,9 @@ struct GpuLight {
     vec4 positionRadius;     // xyz: camera-relative position [m]; w: source radius [m]
     vec4 intensityRange;     // rgb: luminous intensity [cd]; w: range [m]
     vec4 directionCosOuter;  // xyz: unit cone axis; w: cos(outer half angle) (point light: -2)
-    vec4 cosInner;           // x: cos(inner half angle) (point light: -1); yzw: unused
+    // x: cos(inner half angle) (point light: -1); y: its first face in LocalShadowFaces; z: its number of
+    // faces (0: no shadow); w: the depth bias of its faces (postfx::LocalShadow::depthBias)
+    vec4 cosInner;
 };
 struct LightsUniforms {
     GpuLight lights[kMaxDemoLights];  // the first FrameUniforms::depthParams.w are used
@@ -101,6 +106,24 @@ DEMO_INLINE float spotFactor(float cosAngle, float cosOuter, float cosInner) {
     if (cosInner <= cosOuter) return cosAngle >= cosOuter ? 1.0f : 0.0f;
     return smoothstep(cosOuter, cosInner, cosAngle);
 }
+
+// One face of a local light's shadow in the atlas (postfx::LocalShadowFace), for the surfaces' lighting.
+// The faces of every shadowed light, in the lights' order: at most six per light.
+DEMO_CONST(uint, kMaxDemoShadowFaces, 6u * kMaxDemoLights);
+struct GpuShadowFace {
+    mat4 worldToClip;  // camera-relative world -> the face's clip space (worldToClip · translate(camera))
+    vec4 region;       // xy: the region's first texel; zw: its size [texels]
+    vec4 params;       // x: world size of one texel per metre from the light (2·tan(half fov) / size)
+};
+// Read as a storage buffer (std430, which lays out mat4 and vec4 members as std140 does).
+struct LocalShadowFaces {
+    GpuShadowFace faces[kMaxDemoShadowFaces];
+};
+
+// Push constants of the local shadow pass (local_shadow.vert), per face.
+struct ShadowFacePush {
+    mat4 worldToClip;  // world -> the face's clip space
+};
 
 // Push constants of the G-buffer fragment shader, per draw.
 struct DrawPush {
@@ -132,6 +155,8 @@ struct TonemapPush {
 static_assert(sizeof(FrameUniforms) == 3 * 64 + 11 * 16, "FrameUniforms must match std140");
 static_assert(sizeof(LightsUniforms) == 16384, "LightsUniforms must match std140 and fit 16 KiB");
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match std430 push constants");
+static_assert(sizeof(GpuShadowFace) == 96, "GpuShadowFace must match std430");
+static_assert(sizeof(ShadowFacePush) == 64, "ShadowFacePush must match std430 push constants");
 static_assert(sizeof(TonemapPush) == 32, "TonemapPush must match std430 push constants");
 }  // namespace demo::shared
 #endif

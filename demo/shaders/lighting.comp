@@ -6,7 +6,8 @@
 // approximation, docs/effects/atmosphere.md "The demo"); 1 without the atmosphere (τ = 0).
 // visibility: the shadow map's times the clouds' transmittance toward the sun from postfx's cloud shadow
 // map of the previous frame (postfx::cloudShadowTransform; docs/effects/clouds.md, "Shadows").
-// Local lights cast no shadows; falloff and spot factor are demo_shared.h's (localLightFalloff, spotFactor).
+// Local lights: falloff and spot factor are demo_shared.h's (localLightFalloff, spotFactor); a light with
+// shadows is multiplied by its visibility from the local shadow atlas (local_shadow.glsl).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "demo_shared.h"
@@ -25,7 +26,12 @@ layout(set = 0, binding = kBindingCloudShadow) uniform sampler2D cloudShadowMap;
 layout(set = 0, binding = kBindingLights, std140) uniform LightsBlock {
     LightsUniforms lightList;
 };
+layout(set = 0, binding = kBindingLocalShadowAtlas) uniform sampler2D localShadowAtlas;
+layout(set = 0, binding = kBindingLocalShadowFaces, std430) readonly buffer LocalShadowFacesBlock {
+    LocalShadowFaces shadowFaces;
+};
 
+#include "local_shadow.glsl"
 #include "shadow.glsl"
 
 const float kPi = 3.14159265358979;
@@ -72,7 +78,10 @@ void main() {
             float spot =
                 spotFactor(dot(light.directionCosOuter.xyz, -l), light.directionCosOuter.w, light.cosInner.x);
             float falloff = localLightFalloff(d, light.positionRadius.w, light.intensityRange.w);
-            irradiance += light.intensityRange.rgb * (falloff * spot * nDotLi);
+            float contribution = falloff * spot * nDotLi;
+            if (light.cosInner.z > 0.5 && contribution > 0.0)
+                contribution *= localShadowVisibility(light, relative, n, nDotLi, d);
+            irradiance += light.intensityRange.rgb * contribution;
         }
         irradiance = min(irradiance, vec3(1e30));  // finite (I · falloff may overflow): albedo 0 gives 0
         radiance = albedo / kPi * irradiance + albedo * frame.ambient.rgb;

@@ -2,6 +2,7 @@
 
 #include "core/checks.h"
 #include "host/camera_math.h"
+#include "host/local_shadows.h"
 #include "host/scene_mesh.h"
 #include "scene/motion.h"
 
@@ -79,11 +80,25 @@ std::string frameProblem(const Scene& scene, double timeSeconds, VkExtent2D exte
     frame.fog = scene.fog;
     frame.froxelFog = froxelFogSettings(scene);  // as renderer_frame.cpp passes it
     frame.atmosphere = scene.atmosphere;
-    std::vector<postfx::LocalLight> lights;  // as renderer_frame.cpp passes them
-    for (const Light& l : scene.lights)
-        lights.push_back(toLocalLight(l));
+    // The lights and their shadows as renderer_frame.cpp passes them (postfxInputs), in an atlas within
+    // the renderer's limit.
+    const LocalShadowLayout shadows = layoutLocalShadows(scene.lights, kMaxShadowAtlasEdge);
+    if (shadows.extent.x > kMaxShadowAtlasEdge || shadows.extent.y > kMaxShadowAtlasEdge)
+        return "local shadows: the atlas exceeds its limit";
+    std::vector<postfx::LocalLight> lights;
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        lights.push_back(toLocalLight(scene.lights[i]));
+        lights.back().shadow = shadows.lightShadow[i];
+    }
     frame.lights = lights.data();
     frame.lightCount = uint32_t(lights.size());
+    if (!shadows.shadows.empty()) {
+        frame.localShadows.image =
+            image(0x40, VK_FORMAT_D32_SFLOAT, {shadows.extent.x, shadows.extent.y},
+                  VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, VK_IMAGE_USAGE_SAMPLED_BIT);
+        frame.localShadows.shadows = shadows.shadows.data();
+        frame.localShadows.shadowCount = uint32_t(shadows.shadows.size());
+    }
     postfx::ContextCreateInfo info;
     info.maxExtent = {16384, 16384};
     if (postfx::Status s = postfx::core::checkSharedInputs(frame, info); !s)
