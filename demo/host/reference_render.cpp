@@ -67,12 +67,18 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const uint64_t frameIndex = r.options.frames - 1;  // the frame render() returns
     // Its state: the camera and lights moved to that frame (as render() draws it).
     const Scene gpuScene = sceneAtFrame(scene, frameIndex);
-    if (!setScene(gpuScene, error)) return false;  // also waits for the device to be idle
+    if (!setScene(gpuScene, error)) return false;               // also waits for the device to be idle
+    if (!r.reserveLocalShadows(gpuScene, error)) return false;  // before postfx is asked about the frame
 
     const bool froxel = gpuScene.froxelFog.enabled;
     const ShadowFit fit = r.shadowFit(gpuScene);
     const bool shadows = r.drawsShadows(gpuScene, fit, frameIndex);
     const PostfxInputs in = r.postfxInputs(gpuScene, frameIndex, fit, shadows);
+    // The lights and their shadows as the GPU frame gives them (`in` points into the renderer, which the
+    // frame recorded below rebuilds).
+    const std::vector<postfx::LocalLight> lights(in.lights, in.lights + in.lightCount);
+    const std::vector<postfx::LocalShadow> localShadows(
+        in.localShadows.shadows, in.localShadows.shadows + in.localShadows.shadowCount);
     const bool fog = in.fog.enabled || froxel;  // a fog reference to evaluate
     const postfx::FogNoiseSettings& noiseSettings = froxel ? in.froxelFog.noise : in.fog.noise;
     const bool noise = fog && noiseSettings.enabled && !noiseSettings.hostTexture;
@@ -121,20 +127,25 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const bool cloudShadow = fog && r.postfx->imageView(postfx::kCloudsShadowMap) != VK_NULL_HANDLE;
     const uint32_t cloudShadowEdge = gpuScene.clouds.shadowMap.size;
 
-    // One host-visible buffer: depth, shadow map, noise, the clouds' shadow map (each as the GPU stores it).
+    // One host-visible buffer: depth, shadow map, noise, the clouds' shadow map, the local shadow atlas (each
+    // as the GPU stores it; the atlas whole, as postfx reads it).
     const size_t pixels = size_t(r.extent.width) * r.extent.height;
     const VkExtent2D shadowExtent = r.shadow.depth.extent;
     const size_t shadowTexels = shadows ? size_t(shadowExtent.width) * shadowExtent.height : 0;
     const size_t noiseTexels = noise ? size_t(noiseEdge) * noiseEdge * noiseEdge : 0;
     const size_t cloudShadowTexels = cloudShadow ? size_t(cloudShadowEdge) * cloudShadowEdge : 0;
+    const bool localShadowAtlas = froxel && !localShadows.empty();
+    const VkExtent2D atlasExtent = r.localShadows.atlas().extent;
+    const size_t atlasTexels = localShadowAtlas ? size_t(atlasExtent.width) * atlasExtent.height : 0;
     const VkDeviceSize depthOffset = 0;
     const VkDeviceSize shadowOffset = depthOffset + pixels * sizeof(float);
     const VkDeviceSize noiseOffset = shadowOffset + shadowTexels * sizeof(float);
     // Floats after bytes: aligned to 4.
     const VkDeviceSize cloudShadowOffset = (noiseOffset + noiseTexels + 3) / 4 * 4;
+    const VkDeviceSize atlasOffset = cloudShadowOffset + cloudShadowTexels * sizeof(float);
     GpuBuffer buffer;
-    if (!createBuffer(r.host, cloudShadowOffset + cloudShadowTexels * sizeof(float),
-                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, buffer, error))
+    if (!createBuffer(r.host, atlasOffset + atlasTexels * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      true, buffer, error))
         return false;
     struct BufferGuard {
         VkDevice device;
@@ -147,6 +158,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         r.recordReadback(cmd);  // the HDR image: postfx only read it
         recordDepthCopy(cmd, r.gbuffer.depth, buffer, depthOffset);
         if (shadows) recordDepthCopy(cmd, r.shadow.depth, buffer, shadowOffset);
+        if (localShadowAtlas) recordDepthCopy(cmd, r.localShadows.atlas(), buffer, atlasOffset);
         if (noise) {
             // The texture of whichever fog runs (kFogNoiseTexture or kFroxelFogNoiseTexture).
             VkExtent3D extent{};
@@ -294,6 +306,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
 
     const std::vector<float> shadowDepth = floatsAt(buffer, shadowOffset, shadowTexels);
     const std::vector<float> cloudShadowTexels01 = floatsAt(buffer, cloudShadowOffset, cloudShadowTexels);
+    const std::vector<float> atlasDepth = floatsAt(buffer, atlasOffset, atlasTexels);
     std::vector<float> noiseTexels01(noiseTexels);
     const auto* bytes = static_cast<const uint8_t*>(buffer.mapped) + noiseOffset;
     for (size_t i = 0; i < noiseTexels; ++i)
@@ -328,11 +341,14 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     if (froxel) {
         postfx::reference::FroxelFogInputs fi;
         fill(fi);
-        fi.settings = in.froxelFog;              // its volumes point into gpuScene.froxelVolumes
-        std::vector<postfx::LocalLight> lights;  // as the GPU frame gives them (Impl::frameInfo)
-        for (const Light& l : gpuScene.lights)
-            lights.push_back(toLocalLight(l));
+        fi.settings = in.froxelFog;  // its volumes point into gpuScene.froxelVolumes
         fi.lights = lights;
+        if (localShadowAtlas) {  // the atlas the frame drew, read by the GPU's rules (postfx::LocalShadow)
+            fi.localShadowDepth = atlasDepth;
+            fi.localShadowWidth = atlasExtent.width;
+            fi.localShadowHeight = atlasExtent.height;
+            fi.localShadows = localShadows;
+        }
         if (const postfx::Status s = postfx::reference::renderFroxelFog(fi, out.rgba); !s.ok()) {
             error = "froxel fog reference: " + s.message;
             return false;
