@@ -16,6 +16,8 @@ constexpr float kMaxCoordinate = 1e7f;  // limits::kMaxCoordinate
 constexpr float kMaxIntensity = 1e9f;   // [cd], postfx's bound
 constexpr float kMaxRange = 1e9f;       // [m]
 constexpr float kMaxOuterDeg = 89.9f;
+constexpr uint32_t kMinShadowResolution = 16;  // texels per face edge, as the scene file's range
+constexpr uint32_t kMaxShadowResolution = 4096;
 
 float clampOrLow(float v, float lo, float hi) {
     return v >= lo ? (v <= hi ? v : hi) : lo;
@@ -81,6 +83,16 @@ bool buildLight(Light& l, const Camera& camera) {
         changed |=
             ImGui::SliderFloat("inner angle [deg]", &l.innerAngleDeg, 0.0f, l.outerAngleDeg, "%.1f", kClamp);
     }
+    changed |= ImGui::Checkbox("shadows", &l.shadows);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("shadow maps in the local shadow atlas: surfaces and fog");
+    if (l.shadows) {
+        int resolution = int(l.shadowResolution);
+        if (ImGui::SliderInt("shadow resolution [texels]", &resolution, int(kMinShadowResolution),
+                             int(kMaxShadowResolution), "%d", kLog)) {
+            l.shadowResolution = uint32_t(resolution);
+            changed = true;
+        }
+    }
     return changed;
 }
 
@@ -96,6 +108,7 @@ void LightControls::sanitize(Light& l) {
     l.radius = clampOrLow(l.radius, 1e-6f, l.range);
     l.outerAngleDeg = clampOrLow(l.outerAngleDeg, 0.0f, kMaxOuterDeg);
     l.innerAngleDeg = clampOrLow(l.innerAngleDeg, 0.0f, l.outerAngleDeg);
+    l.shadowResolution = std::clamp(l.shadowResolution, kMinShadowResolution, kMaxShadowResolution);
     const float length = std::sqrt(glm::dot(l.direction, l.direction));
     l.direction =
         std::isfinite(length) && length > 1e-6f ? l.direction / length : glm::vec3(0.0f, -1.0f, 0.0f);
