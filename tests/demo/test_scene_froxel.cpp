@@ -625,11 +625,40 @@ TEST(DemoSceneFroxelFiles, FroxelLights) {
         sphereVolume = sphereVolume || v.shape == postfx::FogVolumeShape::Sphere;
     }
     EXPECT_TRUE(boxVolume && sphereVolume);
-    // lights.json with the froxel fog added: the same camera, sun, objects and lights.
+    // Shadows: the spot over the sphere and the blue point light among the pillars.
+    ASSERT_EQ(s.lights.size(), 4u);
+    EXPECT_TRUE(s.lights[1].shadows);
+    EXPECT_TRUE(s.lights[3].shadows);
+    // lights.json with the froxel fog and the shadows added: the same camera, sun, objects and lights.
     Scene withoutFog = s;
     withoutFog.froxelFog = postfx::FroxelFogSettings{};
     withoutFog.froxelVolumes.clear();
+    for (demo::Light& l : withoutFog.lights) {
+        l.shadows = false;
+        l.shadowResolution = demo::Light{}.shadowResolution;
+    }
     EXPECT_EQ(demo::sceneToJson(withoutFog), demo::sceneToJson(load("lights")));
+}
+
+// A lamp with shadows behind a row of columns in froxel fog: between the columns its light reaches the
+// camera, the columns' shadows fan out toward it.
+TEST(DemoSceneFroxelFiles, FroxelColonnade) {
+    const Scene s = load("froxel_colonnade");
+    EXPECT_TRUE(s.froxelFog.enabled);
+    EXPECT_FALSE(s.fog.enabled);
+    EXPECT_TRUE(postfx::validateFroxelFogSettings(demo::froxelFogSettings(s)).ok());
+    ASSERT_EQ(s.lights.size(), 1u);
+    const demo::Light& lamp = s.lights[0];
+    EXPECT_EQ(lamp.kind, demo::LightKind::Point);
+    EXPECT_TRUE(lamp.shadows);
+    int columns = 0;
+    for (const demo::Object& o : s.objects) {
+        // A column: a tall box between the camera and the lamp.
+        if (o.type == demo::ObjectType::Box && o.halfSize.y > 2.0f * o.halfSize.x &&
+            o.position.z > lamp.position.z && o.position.z < s.camera.position.z)
+            ++columns;
+    }
+    EXPECT_GE(columns, 5);
 }
 
 // fog_default.json's fog as a froxel fog: the same scene and medium (sun, shadows, noise), no local lights.
