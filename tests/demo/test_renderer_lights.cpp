@@ -135,6 +135,81 @@ TEST_F(DemoRendererLights, SpotLightLitInsideTheConeDarkOutside) {
     EXPECT_GT(edge, 1);
 }
 
+// A spot light with shadows (scene lights[i].shadows) over a sphere: the floor in the sphere's shadow gets
+// none of its light on the surfaces, the floor beside it all of it, through the GPU lighting pass and the
+// reference path; without shadows both are lit.
+TEST_F(DemoRendererLights, ShadowedSpotDarkensTheFloorBehindASphere) {
+    demo::Light spot;
+    spot.kind = demo::LightKind::Spot;
+    spot.position = {-2.0f, 3.0f, 0.0f};
+    spot.direction = glm::normalize(glm::vec3(0.8f, -0.6f, 0.0f));  // at the sphere, then the floor at x 2
+    spot.intensity = glm::vec3(1000.0f);
+    spot.innerAngleDeg = 20.0f;
+    spot.outerAngleDeg = 30.0f;
+    spot.range = 20.0f;
+    spot.shadowResolution = 256;
+    demo::Scene scene = floorScene(spot);
+    demo::Object sphere;
+    sphere.type = demo::ObjectType::Sphere;
+    sphere.position = {0.0f, 1.5f, 0.0f};
+    sphere.radius = 0.4f;
+    sphere.albedo = glm::vec3(kAlbedo);
+    scene.objects.push_back(sphere);
+
+    // Floor pixels: (x 2, z 0) in the middle of the shadow (the ray from the light through the sphere's
+    // centre), (x 2, z 1.2) beside it in the cone's core (13.6° off its axis). Image x is world x, rows
+    // grow with z (the camera's up is -z).
+    const auto pixel = [](double world) {
+        return uint32_t((world / (kCameraHeight * std::tan(glm::radians(30.0))) + 1.0) / 2.0 * kSize);
+    };
+    const uint32_t x = pixel(2.0), shadowRow = pixel(0.0), litRow = pixel(1.2);
+    const std::array<demo::ImageF, 2> unshadowed = renderBoth(scene);
+    scene.lights[0].shadows = true;
+    const std::array<demo::ImageF, 2> shadowed = renderBoth(scene);
+    for (size_t i = 0; i < 2; ++i) {
+        SCOPED_TRACE(i == 0 ? "render" : "renderReference");
+        ASSERT_EQ(shadowed[i].rgba.size(), size_t(kSize) * kSize * 4);
+        ASSERT_EQ(unshadowed[i].rgba.size(), size_t(kSize) * kSize * 4);
+        const float open = unshadowed[i].at(x, shadowRow)[1];
+        EXPECT_GT(open, 0.0f);  // lit without shadows
+        EXPECT_EQ(shadowed[i].at(x, shadowRow)[1], 0.0f) << "unshadowed " << open;
+        const float beside = unshadowed[i].at(x, litRow)[1];
+        EXPECT_GT(beside, 0.0f);
+        EXPECT_NEAR(shadowed[i].at(x, litRow)[1], beside, 1e-6f * beside);
+    }
+}
+
+// The froxel fog's reference path reads the atlas back (postfx-render --reference on a scene with shadowed
+// lights): it renders, its surfaces shadowed as the GPU frame's.
+TEST_F(DemoRendererLights, ReferenceReadsTheLocalShadowAtlasBack) {
+    demo::Light point;
+    point.position = {-2.0f, 3.0f, 0.0f};
+    point.intensity = glm::vec3(1000.0f);
+    point.range = 20.0f;
+    point.shadows = true;
+    point.shadowResolution = 64;
+    demo::Scene scene = floorScene(point);
+    demo::Object sphere;
+    sphere.type = demo::ObjectType::Sphere;
+    sphere.position = {0.0f, 1.5f, 0.0f};
+    sphere.radius = 0.4f;
+    scene.objects.push_back(sphere);
+    scene.froxelFog.enabled = true;
+    scene.froxelFog.density = 0.01f;
+    scene.froxelFog.grid = {8, 8, 16};
+    scene.froxelFog.maxDistance = 10.0f;
+    demo::RenderOptions o;
+    o.width = o.height = 16;
+    o.shadowMapSize = 64;
+    std::string error;
+    auto renderer = demo::Renderer::create(*host, o, error);
+    ASSERT_TRUE(renderer) << error;
+    demo::ImageF image;
+    ASSERT_TRUE(renderer->render(scene, image, error)) << error;
+    ASSERT_TRUE(renderer->renderReference(scene, image, error, 64)) << error;
+    EXPECT_EQ(image.rgba.size(), size_t(16) * 16 * 4);
+}
+
 // Lights beyond the limit are a clear error, not a silently shortened list.
 TEST_F(DemoRendererLights, MoreLightsThanTheLimitIsAnError) {
     demo::Light light;
