@@ -214,7 +214,7 @@ std::vector<Rejection> rejections() {
          "lights[0].intensity_change.color: unknown key (expected frame or intensity)"},
         {"LightUnknownKey", "/lights/0/speed", 1,
          "lights[0].speed: unknown key for a point light (expected type, position, intensity, radius, range, "
-         "velocity or intensity_change)"},
+         "velocity, intensity_change, shadows or shadow_resolution)"},
     };
 }
 
