@@ -88,6 +88,7 @@ json everyKey() {
     j["depth_exponent"] = 3.5;
     j["tricubic"] = true;
     j["jitter"] = false;
+    j["local_shadow_filter"] = true;
     j["light_list_min_lights"] = 257;
     j["temporal"] = {{"enabled", false}, {"blend_weight", 0.5}};
     json b = box();
@@ -139,6 +140,7 @@ void expectSameFroxel(const Scene& a, const Scene& b) {
     EXPECT_EQ(x.depthExponent, y.depthExponent);
     EXPECT_EQ(x.tricubic, y.tricubic);
     EXPECT_EQ(x.jitter, y.jitter);
+    EXPECT_EQ(x.localShadowFilter, y.localShadowFilter);
     EXPECT_EQ(x.lightListMinLights, y.lightListMinLights);
     EXPECT_EQ(x.temporal.enabled, y.temporal.enabled);
     EXPECT_EQ(x.temporal.blendWeight, y.temporal.blendWeight);
@@ -220,6 +222,7 @@ TEST(DemoSceneFroxel, EveryKeyIsRead) {
     EXPECT_EQ(f.depthExponent, 3.5f);
     EXPECT_TRUE(f.tricubic);
     EXPECT_FALSE(f.jitter);
+    EXPECT_TRUE(f.localShadowFilter);
     EXPECT_EQ(f.lightListMinLights, 257u);
     // The settings never point anywhere: the volumes are the scene's.
     EXPECT_EQ(f.volumes, nullptr);
@@ -360,6 +363,7 @@ TEST(DemoSceneFroxel, EachKeyRoundTripsAtItsBounds) {
         {"/depth_exponent", 8},
         {"/tricubic", true},
         {"/jitter", false},
+        {"/local_shadow_filter", true},
         {"/volumes/0", {{"shape", "box"}, {"center", {-1e9, 0, 1e9}}, {"half_size", {0, 1e7, 0.1}}}},
         {"/volumes/0", {{"shape", "sphere"}, {"center", {0.1, 0.2, 0.3}}, {"radius", 0}}},
         {"/volumes/0", {{"shape", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1e7}, {"density", 1e6}}},
@@ -481,7 +485,8 @@ std::vector<FroxelRejection> froxelRejections() {
          "height_falloff, "
          "base_height, max_distance, self_shadow, analytic_tail, noise, grid, tile_size_px, "
          "depth_distribution, "
-         "depth_exponent, tricubic, jitter, light_list_min_lights, temporal or volumes)"},
+         "depth_exponent, tricubic, jitter, local_shadow_filter, light_list_min_lights, temporal or "
+         "volumes)"},
         {"UnknownNoiseKey", froxel("/noise/octaves", 4),
          "effects.froxel_fog.noise.octaves: unknown key (expected enabled, texture_size, seed, tiling, "
          "threshold, multiplier or wind)"},
