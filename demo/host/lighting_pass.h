@@ -1,5 +1,5 @@
-// The deferred lighting compute pass: G-buffer + depth + sun shadow map + local lights -> HDR radiance
-// (RGBA16F).
+// The deferred lighting compute pass: G-buffer + depth + sun shadow map + local lights and their shadow
+// atlas -> HDR radiance (RGBA16F).
 // See demo/shaders/lighting.comp for the shading formula.
 #pragma once
 

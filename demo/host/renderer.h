@@ -1,6 +1,7 @@
 // The demo's deferred host renderer: G-buffer (albedo, normal, D32 depth), a directional sun with a
-// shadow map, Lambert lighting into an RGBA16F HDR target, then postfx records its passes into the
-// same command buffer through its public API, then (for display/PNG only) tonemapping.
+// shadow map, local lights with shadow maps in one atlas (host/local_shadows.h), Lambert lighting into an
+// RGBA16F HDR target, then postfx records its passes into the same command buffer through its public API,
+// then (for display/PNG only) tonemapping.
 //
 // Shading convention (tests rely on it), per RGB channel:
 //   L = albedo/π · E · max(0, n·l) · visibility + albedo · ambient
@@ -125,15 +126,17 @@ public:
     // Records one frame into `cmd` (recording, outside a render pass): frame uniforms, shadow map
     // (when scene.sun.shadows), G-buffer, lighting, then postfx (scene.fog, scene.froxelFog; time
     // frameTimeSeconds(scene, frameIndex); FrameInfo::cameraCut on frame 0, when scene.cameraCutFrame is
-    // frameIndex, and when requestCameraCut() was called since the last recorded frame).
+    // frameIndex, and when requestCameraCut() was called since the last recorded frame). The local shadow
+    // atlas is drawn for the lights with `shadows` (grown first, waiting for the device, when they need
+    // more room) and given to postfx in FrameInfo::localShadows.
     // Geometry comes from the last setScene(); camera, sun, ambient, sky, lights and fog from `scene` as
     // given: `scene` is the frame's state, its motion is not applied here (sceneAtFrame does that).
     // Frames execute in recording order on host.queue; before recording frame k the caller waits
     // for frame k - kFramesInFlight. After it, hdrImage() is in GENERAL with COMPUTE_SHADER writes
     // to make visible to its reader. A caller may read it (blit, tonemap, sample) in TRANSFER,
     // COMPUTE_SHADER or FRAGMENT_SHADER stages and leave it in any layout: the next frame waits for
-    // those stages and discards it. postfx reads depthImage() and shadowMap() in COMPUTE_SHADER; the
-    // next frame's raster passes wait for COMPUTE_SHADER before overwriting them.
+    // those stages and discards it. postfx reads depthImage(), shadowMap() and the local shadow atlas in
+    // COMPUTE_SHADER; the next frame's raster passes wait for COMPUTE_SHADER before overwriting them.
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex, std::string& error);
     // The same with postfx writing to `fogOutput` (postfx::FrameInfo::output: same extent, RGBA16F or
     // RGBA32F, usage STORAGE, in its `layout`) instead of compositing into hdrImage(), which then keeps
