@@ -40,6 +40,10 @@ struct Setting {
     uint32_t lights = 0;
     bool lightLists = false;  // the light-list pass ran (lights > 0 and lights >= lightListMinLights)
     bool lightSweep = false;  // a row of the light-count sweep (generated point lights; timed, no error)
+    // A row of the shadow sweep (kFroxelTargetLights generated point lights, the first shadowedLights of
+    // them casting shadows into the demo's atlas; timed, no error).
+    bool shadowSweep = false;
+    uint32_t shadowedLights = 0;  // lights with a shadow map (LocalLight::shadow)
 
     // "steps=64 jitter=on scale=0.5 kernel=3 noise=128" (kernel: with a shadow map), "preset=medium
     // (steps=16 ...)", "step=0.5m jitter=on noise=128", "grid=160x90x128 dist=power tricubic=off noise=128

@@ -229,7 +229,7 @@ const Result* froxelTargetRow(const RunInfo& info, const std::vector<Result>& re
 }
 
 std::vector<FroxelTarget> froxelTargets(const RunInfo& info, const std::vector<Result>& results) {
-    std::vector<FroxelTarget> targets(3);
+    std::vector<FroxelTarget> targets(4);
     const Result* row = froxelTargetRow(info, results);
     targets[0].name = "all passes ≤ " + formatNumber(kFroxelTargetMs, 3) + " ms";
     targets[0].row = row;
@@ -256,53 +256,33 @@ std::vector<FroxelTarget> froxelTargets(const RunInfo& info, const std::vector<R
         row ? passMs(*row, "froxel_fog.apply") / applyFloorMs(info.width, info.height, info.bandwidth) : NAN;
     targets[2].limit = kApplyFloorTarget;
     targets[2].unit = "× floor";
+
+    targets[3].name = "with " + std::to_string(kFroxelTargetLights) + " point lights of which " +
+                      std::to_string(kFroxelTargetShadowed) + " shadowed, all passes ≤ " +
+                      formatNumber(kFroxelLightsTargetMs, 3) + " ms";
+    for (const Result& r : results)
+        if (r.setting.shadowSweep && r.setting.scene == info.froxelTargetScene &&
+            r.setting.lights == kFroxelTargetLights && r.setting.shadowedLights == kFroxelTargetShadowed)
+            targets[3].row = &r;
+    targets[3].measured = targets[3].row ? targets[3].row->timing.median : NAN;
+    targets[3].limit = kFroxelLightsTargetMs;
+    targets[3].unit = "ms";
     return targets;
 }
 
 const std::vector<std::string>& froxelCsvColumns() {
     static const std::vector<std::string> columns = {
-        "scene",
-        "method",
-        "grid_x",
-        "grid_y",
-        "grid_z",
-        "distribution",
-        "tricubic",
-        "jitter",
-        "lights",
-        "light_lists",
-        "light_sweep",
-        "steps",
-        "resolution_scale",
-        "shadow_kernel",
-        "noise_size",
-        "width",
-        "height",
-        "warmup",
-        "frames",
-        "gpu_ms_median",
-        "gpu_ms_p10",
-        "gpu_ms_p90",
-        "gpu_ms_min",
-        "gpu_ms_max",
-        "light_lists_ms",
-        "scatter_ms",
-        "integrate_ms",
-        "apply_ms",
-        "pass_ms",
-        "rel_rmse_1",
-        "max_abs_1",
-        "frac_off_1",
-        "rel_rmse_8",
-        "max_abs_8",
-        "frac_off_8",
-        "rel_rmse_16",
-        "max_abs_16",
-        "frac_off_16",
-        "non_finite",
-        "apply_floor_ms",
-        "apply_over_floor",
-        "pareto_1",
+        "scene",           "method",         "grid_x",           "grid_y",
+        "grid_z",          "distribution",   "tricubic",         "jitter",
+        "lights",          "light_lists",    "light_sweep",      "shadow_sweep",
+        "shadowed_lights", "steps",          "resolution_scale", "shadow_kernel",
+        "noise_size",      "width",          "height",           "warmup",
+        "frames",          "gpu_ms_median",  "gpu_ms_p10",       "gpu_ms_p90",
+        "gpu_ms_min",      "gpu_ms_max",     "light_lists_ms",   "scatter_ms",
+        "integrate_ms",    "apply_ms",       "pass_ms",          "rel_rmse_1",
+        "max_abs_1",       "frac_off_1",     "rel_rmse_8",       "max_abs_8",
+        "frac_off_8",      "rel_rmse_16",    "max_abs_16",       "frac_off_16",
+        "non_finite",      "apply_floor_ms", "apply_over_floor", "pareto_1",
         "pareto_16",
     };
     return columns;
@@ -332,6 +312,8 @@ bool writeFroxelCsv(const std::string& path, const RunInfo& info, const std::vec
             std::to_string(s.lights),
             froxel && s.lights ? (s.lightLists ? "1" : "0") : "",
             s.lightSweep ? "1" : "0",
+            s.shadowSweep ? "1" : "0",
+            std::to_string(s.shadowedLights),
             froxel ? "" : std::to_string(s.steps),
             froxel ? "" : formatNumber(s.resolutionScale, 4),
             std::to_string(s.shadowKernel),
@@ -419,6 +401,41 @@ std::string froxelConclusionsMarkdown(const RunInfo& info, const std::vector<Res
                "than the loop over every light. This run: **"
             << (answer ? lightsText(answer) : std::string("no light counts with both rows"))
             << "**; this build's default: " << info.lightListDefault << ".\n\n";
+    }
+
+    // --- Local light shadows: the shadow sweep
+    std::vector<const Result*> shadowRows;
+    for (const Result& r : results)
+        if (r.setting.shadowSweep) shadowRows.push_back(&r);
+    if (!shadowRows.empty()) {
+        const Result *none = nullptr, *one = nullptr;
+        for (const Result* r : shadowRows) {
+            if (r->setting.shadowedLights == 0) none = r;
+            if (r->setting.shadowedLights == 1) one = r;
+        }
+        out << "## Local light shadows\n\n"
+            << "The light-count sweep's " << shadowRows.front()->setting.lights << " point lights on "
+            << info.froxelTargetScene << " (grid "
+            << gridText(postfx::UVec3(shadowRows.front()->setting.gridX, shadowRows.front()->setting.gridY,
+                                      shadowRows.front()->setting.gridZ))
+            << ", light lists as the default decides), the first n of them casting shadows (the demo "
+               "renderer's cube maps in one atlas; each shadowed light's faces read in the scatter pass), "
+               "timed only. Over none: all passes less the unshadowed row's (the first shadowed light also "
+               "switches the scatter pass to its variant with shadows and, with temporal accumulation, the "
+               "test at each froxel's centre); each further light: (all passes − the 1-shadowed row's) / "
+               "(n − 1).\n\n"
+            << "| shadowed | scatter | all passes | over none | each further light "
+               "|\n|---|---|---|---|---|\n";
+        for (const Result* r : shadowRows) {
+            const uint32_t n = r->setting.shadowedLights;
+            out << "| " << n << " | " << ms(passMs(*r, "froxel_fog.scatter")) << " | " << ms(r->timing.median)
+                << " | " << (n && none ? ms(r->timing.median - none->timing.median) : std::string("–"))
+                << " | "
+                << (n > 1 && one ? ms((r->timing.median - one->timing.median) / double(n - 1))
+                                 : std::string("–"))
+                << " |\n";
+        }
+        out << "\n";
     }
 
     // --- Froxel against ray-marched at equal error

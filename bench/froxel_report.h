@@ -17,6 +17,7 @@ namespace bench {
 constexpr double kFroxelTargetMs = 0.10;        // all froxel passes [ms]
 constexpr uint32_t kFroxelTargetLights = 64;    // ... with this many point lights
 constexpr double kFroxelLightsTargetMs = 0.20;  // ... all froxel passes [ms]
+constexpr uint32_t kFroxelTargetShadowed = 16;  // ... of them this many shadowed: the same limit
 constexpr double kApplyFloorTarget = 2.0;       // the apply pass within this multiple of its floor
 
 // The froxel fog's pass names (Context::readPassTimings), in recording order.
@@ -76,8 +77,9 @@ struct FroxelTarget {
 // The target row: info.froxelTargetScene's postfx-froxel sweep row at postfx's default grid, power
 // slices, trilinear, with the scene's own lights (nullptr when the run has none).
 const Result* froxelTargetRow(const RunInfo& info, const std::vector<Result>& results);
-// The three targets: the target row's time; the light-count row with kFroxelTargetLights lights and
-// the light lists as info.lightListDefault decides; the target row's apply pass over its floor.
+// The four targets: the target row's time; the light-count row with kFroxelTargetLights lights and
+// the light lists as info.lightListDefault decides; the target row's apply pass over its floor; the
+// shadow sweep's row with kFroxelTargetShadowed of those lights shadowed.
 std::vector<FroxelTarget> froxelTargets(const RunInfo& info, const std::vector<Result>& results);
 
 // The froxel report's CSV columns, in order (tests/bench parses them by name).

@@ -386,6 +386,21 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
                     if (!measure(withFroxelKnobs(lit, setting), setting, noReference)) return fail(error);
                 }
             }
+            for (uint32_t shadowed : args.shadowedCounts) {
+                demo::Scene lit = p.froxel;
+                lit.lights = sweepLights(p.froxel.camera, kFroxelTargetLights);
+                for (uint32_t i = 0; i < shadowed && i < lit.lights.size(); ++i) {
+                    lit.lights[i].shadows = true;
+                    lit.lights[i].shadowResolution = args.shadowResolution;
+                }
+                Setting setting = lightBase;
+                setting.lightSweep = false;
+                setting.shadowSweep = true;
+                setting.lights = froxelLightCount(lit);
+                setting.lightLists = setting.lights > 0 && setting.lights >= defaults.lightListMinLights;
+                setting.shadowedLights = std::min(shadowed, setting.lights);
+                if (!measure(withFroxelKnobs(lit, setting), setting, noReference)) return fail(error);
+            }
         }
         progress.show("writing the report");
     }

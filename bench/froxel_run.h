@@ -31,6 +31,11 @@ struct FroxelRunArgs {
     // The light-count sweep (on targetScene, postfx's default grid): 0 once, every other count with
     // and without light lists. Empty: none.
     std::vector<uint32_t> lightCounts;
+    // The shadow sweep (on targetScene at lightGrid): kFroxelTargetLights of the light-count sweep's
+    // lights, the first n of them shadowed for each n here, each face shadowResolution² texels. Empty:
+    // none.
+    std::vector<uint32_t> shadowedCounts;
+    uint32_t shadowResolution = 512;
     // The light-count sweep's grid (power slices, trilinear) [froxels]: postfx's default, the targets'.
     uint32_t lightGrid[3] = {postfx::FroxelFogSettings{}.grid.x, postfx::FroxelFogSettings{}.grid.y,
                              postfx::FroxelFogSettings{}.grid.z};

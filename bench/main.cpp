@@ -18,6 +18,7 @@
 #include "clouds_slabs.h"
 #include "conclusions.h"
 #include "frame_run.h"
+#include "froxel_report.h"
 #include "froxel_run.h"
 #include "motion.h"
 #include "motion_report.h"
@@ -129,6 +130,10 @@ const char* kUsage =
     "  --froxel-tricubic LIST off and/or on [off,on]\n"
     "  --froxel-lights LIST   light counts of the light-count sweep, each 0..256; 0: none [0,1,2,4,8,16,\n"
     "                         32,64,128,256; quick: 0,4,16]\n"
+    "  --froxel-shadowed LIST of the sweep's 64 lights, how many cast shadows (the shadow sweep), each\n"
+    "                         0..64 [0,1,4,16,64; quick: 0,4]\n"
+    "  --froxel-shadow-resolution N  texels per shadow face edge in the shadow sweep, 16..4096 [512;\n"
+    "                         quick: 32]\n"
     "  --froxel-target-scene S  the targets' scene, which the light-count sweep runs on [fog_default if in\n"
     "                         --scenes, else the first]; quick: the light-count sweep on the first grid\n"
     "                         and slice count, not postfx's default grid\n"
@@ -232,6 +237,9 @@ struct Args {
     bool froxel = false;
     bench::FroxelSweepOptions froxelSweep;
     std::vector<uint32_t> froxelLights = {0, 1, 2, 4, 8, 16, 32, 64, 128, 256};
+    // The shadow sweep: of kFroxelTargetLights lights, this many shadowed, each face this size.
+    std::vector<uint32_t> froxelShadowed = {0, 1, 4, 16, 64};
+    uint32_t froxelShadowResolution = 512;
     std::string froxelTargetScene;
     double bandwidth = NAN;
     bool froxelQuick = false;  // --froxel --quick
@@ -289,7 +297,7 @@ Args parseArgs(int argc, char** argv) {
          framesGiven = false, refGiven = false, stepsGiven = false, noiseGiven = false, lengthsGiven = false,
          scalesGiven = false, scenesGiven = false, outGiven = false, gridsGiven = false, slicesGiven = false,
          lightsGiven = false, motionWarmupGiven = false, motionFramesGiven = false, motionStepGiven = false,
-         switchOffGiven = false;
+         switchOffGiven = false, shadowedGiven = false, shadowResolutionGiven = false;
     const auto toFloats = [](const std::vector<double>& values) {
         return std::vector<float>(values.begin(), values.end());
     };
@@ -500,6 +508,12 @@ Args parseArgs(int argc, char** argv) {
         } else if (a == "--froxel-lights") {
             args.froxelLights = cli::uintListOption(a, value(), 0, postfx::kMaxLocalLights);
             lightsGiven = true;
+        } else if (a == "--froxel-shadowed") {
+            args.froxelShadowed = cli::uintListOption(a, value(), 0, bench::kFroxelTargetLights);
+            shadowedGiven = true;
+        } else if (a == "--froxel-shadow-resolution") {
+            cli::uintOption(a, value(), 16, 4096, args.froxelShadowResolution);
+            shadowResolutionGiven = true;
         } else if (a == "--froxel-target-scene") {
             args.froxelTargetScene = value();
         } else if (a == "--bandwidth") {
@@ -552,6 +566,8 @@ Args parseArgs(int argc, char** argv) {
         if (quick && !gridsGiven) args.froxelSweep.grids = {{16, 9}};
         if (quick && !slicesGiven) args.froxelSweep.slices = {16, 32};
         if (quick && !lightsGiven) args.froxelLights = {0, 4, 16};
+        if (quick && !shadowedGiven) args.froxelShadowed = {0, 4};
+        if (quick && !shadowResolutionGiven) args.froxelShadowResolution = 32;
         stepsGiven = scalesGiven = true;  // not --quick's fog sweep below
         args.froxelQuick = quick;
         if (args.froxelTargetScene.empty())
@@ -704,6 +720,8 @@ int runFroxel(const Args& args, const std::string& command) {
     f.fogSteps = args.steps;
     f.fogScales = args.scales;
     f.lightCounts = args.froxelLights;
+    f.shadowedCounts = args.froxelShadowed;
+    f.shadowResolution = args.froxelShadowResolution;
     f.targetScene = args.froxelTargetScene;
     f.bandwidth = args.bandwidth;
     f.motion = args.motion;

@@ -26,9 +26,10 @@ std::string Setting::label() const {
     char text[160];
     std::string noise = noiseSize ? " noise=" + std::to_string(noiseSize) : std::string();
     if (method == Method::Froxel) {
-        const std::string lightText =
+        std::string lightText =
             lights ? " lights=" + std::to_string(lights) + " lists=" + (lightLists ? "on" : "off")
                    : std::string();
+        if (shadowedLights) lightText += " shadowed=" + std::to_string(shadowedLights);
         std::snprintf(text, sizeof text, "grid=%ux%ux%u dist=%s tricubic=%s%s%s", gridX, gridY, gridZ,
                       logSlices ? "log" : "power", tricubic ? "on" : "off", noise.c_str(), lightText.c_str());
     } else if (method == Method::Ours) {

@@ -388,54 +388,24 @@ TEST_F(BenchSmoke, MotionCsvHasEveryPresetInMotion) {
 // tricubic; the ray-marched fog at 4 and 16 steps beside it on fog_default; the light-count sweep at 0, 4
 // and 16 lights) under the validation layer, into OUT_DIR/froxel.
 const std::vector<std::string> kFroxelColumns = {
-    "scene",
-    "method",
-    "grid_x",
-    "grid_y",
-    "grid_z",
-    "distribution",
-    "tricubic",
-    "jitter",
-    "lights",
-    "light_lists",
-    "light_sweep",
-    "steps",
-    "resolution_scale",
-    "shadow_kernel",
-    "noise_size",
-    "width",
-    "height",
-    "warmup",
-    "frames",
-    "gpu_ms_median",
-    "gpu_ms_p10",
-    "gpu_ms_p90",
-    "gpu_ms_min",
-    "gpu_ms_max",
-    "light_lists_ms",
-    "scatter_ms",
-    "integrate_ms",
-    "apply_ms",
-    "pass_ms",
-    "rel_rmse_1",
-    "max_abs_1",
-    "frac_off_1",
-    "rel_rmse_8",
-    "max_abs_8",
-    "frac_off_8",
-    "rel_rmse_16",
-    "max_abs_16",
-    "frac_off_16",
-    "non_finite",
-    "apply_floor_ms",
-    "apply_over_floor",
-    "pareto_1",
+    "scene",           "method",         "grid_x",           "grid_y",
+    "grid_z",          "distribution",   "tricubic",         "jitter",
+    "lights",          "light_lists",    "light_sweep",      "shadow_sweep",
+    "shadowed_lights", "steps",          "resolution_scale", "shadow_kernel",
+    "noise_size",      "width",          "height",           "warmup",
+    "frames",          "gpu_ms_median",  "gpu_ms_p10",       "gpu_ms_p90",
+    "gpu_ms_min",      "gpu_ms_max",     "light_lists_ms",   "scatter_ms",
+    "integrate_ms",    "apply_ms",       "pass_ms",          "rel_rmse_1",
+    "max_abs_1",       "frac_off_1",     "rel_rmse_8",       "max_abs_8",
+    "frac_off_8",      "rel_rmse_16",    "max_abs_16",       "frac_off_16",
+    "non_finite",      "apply_floor_ms", "apply_over_floor", "pareto_1",
     "pareto_16",
 };
 const std::vector<std::string> kFroxelScenes = {"fog_default", "froxel_lights"};
 const size_t kFroxelSweepRows = 1 * 2 * 2 * 2;  // grids × slices × distributions × tricubic
 const size_t kFroxelFogRows = 2;                // fog_default: steps 4, 16 at scale 1
 const size_t kFroxelLightRows = 1 + 2 + 2;      // 0 lights; 4 and 16 with and without lists
+const size_t kFroxelShadowRows = 2;             // 64 lights, 0 and 4 of them shadowed
 
 class BenchFroxelSmoke : public ::testing::Test {
 protected:
@@ -463,10 +433,11 @@ TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
     ASSERT_TRUE(readCsv(out_ + "/results.csv", header, rows, sawDevice)) << out_ << "/results.csv";
     EXPECT_TRUE(sawDevice);
     ASSERT_EQ(header, kFroxelColumns);
-    ASSERT_EQ(rows.size(), kFroxelScenes.size() * kFroxelSweepRows + kFroxelFogRows + kFroxelLightRows);
+    ASSERT_EQ(rows.size(), kFroxelScenes.size() * kFroxelSweepRows + kFroxelFogRows + kFroxelLightRows +
+                               kFroxelShadowRows);
     // (scene, distribution, tricubic) -> one-frame error by slices.
     std::map<std::string, std::map<int, double>> bySlices;
-    size_t froxel = 0, fog = 0, light = 0;
+    size_t froxel = 0, fog = 0, light = 0, shadowed = 0;
     for (const Row& row : rows) {
         const std::string what = row.at("scene") + " " + row.at("method") + " grid_z=" + row.at("grid_z") +
                                  " " + row.at("distribution") + " tricubic=" + row.at("tricubic") +
@@ -480,6 +451,15 @@ TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
                 EXPECT_GT(number(row.at(pass)), 0.0) << what << ": " << pass;
             EXPECT_EQ(row.at("light_lists_ms").empty(), row.at("light_lists") != "1") << what;
             EXPECT_TRUE(std::isfinite(number(row.at("apply_over_floor")))) << what;
+        }
+        if (row.at("shadow_sweep") == "1") {
+            ++shadowed;
+            EXPECT_TRUE(isFroxel) << what;
+            EXPECT_EQ(row.at("scene"), "fog_default") << what;
+            EXPECT_EQ(row.at("lights"), "64") << what;
+            EXPECT_TRUE(row.at("shadowed_lights") == "0" || row.at("shadowed_lights") == "4") << what;
+            EXPECT_TRUE(row.at("rel_rmse_1").empty()) << what << ": timed only";
+            continue;
         }
         if (row.at("light_sweep") == "1") {
             ++light;
@@ -517,6 +497,7 @@ TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
     EXPECT_EQ(froxel, kFroxelScenes.size() * kFroxelSweepRows);
     EXPECT_EQ(fog, kFroxelFogRows);
     EXPECT_EQ(light, kFroxelLightRows);
+    EXPECT_EQ(shadowed, kFroxelShadowRows);
     // fog_default: twice the slices, a lower one-frame error, for each distribution and filter.
     ASSERT_EQ(bySlices.size(), 4u);
     for (const auto& [knobs, errors] : bySlices) {
@@ -587,10 +568,11 @@ TEST_F(BenchFroxelSmoke, MotionCsvHasTheSequencesAndTheSwitchedOffLightIsGone) {
 TEST_F(BenchFroxelSmoke, MarkdownHasTheTargetsLightListsAndComparison) {
     ASSERT_EQ(status_, 0);
     const std::string md = readFile(out_ + "/results.md");
-    for (const char* section : {"## Targets", "Not 1920×1080", "## Light lists", "This run: **",
-                                "## Froxel fog against the ray-marched fog at equal error",
-                                "### fog_default, one frame", "### fog_default, mean of 16 frames",
-                                "## froxel_lights", "## fog_default: light-count sweep", "| device | "})
+    for (const char* section :
+         {"## Targets", "Not 1920×1080", "## Light lists", "This run: **",
+          "## Froxel fog against the ray-marched fog at equal error", "### fog_default, one frame",
+          "### fog_default, mean of 16 frames", "## froxel_lights", "## fog_default: light-count sweep",
+          "## Local light shadows", "| device | "})
         EXPECT_NE(md.find(section), std::string::npos) << section;
 }
 

@@ -347,7 +347,7 @@ TEST(BenchFroxelReport, TargetsFromTheRows) {
     const Result* target = bench::froxelTargetRow(run.info, run.rows);
     ASSERT_EQ(target, &run.rows[3]);
     std::vector<bench::FroxelTarget> t = bench::froxelTargets(run.info, run.rows);
-    ASSERT_EQ(t.size(), 3u);
+    ASSERT_EQ(t.size(), 4u);
     EXPECT_EQ(t[0].row, target);
     EXPECT_NEAR(t[0].measured, 0.08, 1e-12);
     EXPECT_TRUE(t[0].met());
