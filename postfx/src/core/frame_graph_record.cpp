@@ -120,7 +120,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
     batch.record(*gpu_, cmd);
 
     // Pending accesses of the host images within this frame (postfx's own images keep theirs in images_).
-    bool hostPendingWrite[4] = {}, hostReadSinceWrite[4] = {};
+    bool hostPendingWrite[kHostImageCount] = {}, hostReadSinceWrite[kHostImageCount] = {};
     for (size_t i = 0; i < f.passes.size(); ++i) {
         const PassDecl& p = f.passes[i];
         if (!p.live) continue;
