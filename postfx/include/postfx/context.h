@@ -15,6 +15,7 @@
 #include <postfx/inputs.h>
 #include <postfx/result.h>
 #include <postfx/types.h>
+#include <postfx/volumetrics_lookup.h>
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -116,6 +117,10 @@ struct FrameInfo {
     CloudSettings clouds;
     FogSettings fog;              // ray-marched fog (docs/effects/fog.md)
     FroxelFogSettings froxelFog;  // froxel fog (docs/effects/froxel-fog.md); not together with `fog`
+
+    // The volumetrics lookup for the host's transparent surfaces (postfx/volumetrics_lookup.h): off, nothing
+    // is built; on, record() builds it and Context::volumetricsLookup / writeVolumetricsLookup hand it over.
+    VolumetricsLookupSettings volumetricsLookup;
 };
 
 // GPU time of one postfx pass in one frame.
@@ -220,6 +225,13 @@ public:
     // `bytes` the bytes copied. InvalidArgument when it is not held or not built yet.
     Status recordImageReadback(ResourceName name, VkCommandBuffer commandBuffer, VkBuffer buffer,
                                VkDeviceSize offset, VkExtent3D& extent, VkDeviceSize& bytes) const;
+
+    // The volumetrics lookup the last record() built (FrameInfo::volumetricsLookup; docs/integration.md,
+    // "Transparent surfaces"). InvalidArgument when that record() did not ask for it, or none was recorded.
+    Status volumetricsLookup(VolumetricsLookup& out) const;
+    // Writes it into the host's `set` (allocated from a layout with volumetricsLookupLayout's bindings) at
+    // `bindings`. Call after each record() that asked for it, before the host's commands that read it.
+    Status writeVolumetricsLookup(VkDescriptorSet set, const VolumetricsLookupBindings& bindings) const;
 
     const ContextCreateInfo& createInfo() const;
 

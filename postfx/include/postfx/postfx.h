@@ -12,3 +12,4 @@
 #include <postfx/settings_table.h>
 #include <postfx/types.h>
 #include <postfx/version.h>
+#include <postfx/volumetrics_lookup.h>
