@@ -14,6 +14,8 @@ PFX_CONST(uint, kFogGroupSize, 8);  // temporal and upsample workgroups: kFogGro
 // The march's workgroup: kFogMarchGroupX × kFogMarchGroupY pixels
 PFX_CONST(uint, kFogMarchGroupX, 32);
 PFX_CONST(uint, kFogMarchGroupY, 8);
+// fog.lookup: the march's steps per slice of the volumetrics lookup (fog/lookup.comp).
+PFX_CONST(uint, kFogLookupStepsPerSlice, 2);
 
 PFX_CONST(uint, kFogBindingColorIn, 0);    // storage image: host color (read)
 PFX_CONST(uint, kFogBindingColorOut, 1);   // storage image: output (host color itself when in place)

@@ -224,6 +224,7 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
                                             ad.usage};
             if (onBeforeRecord) onBeforeRecord(frame);
             recordStatus = context.record(frame);
+            if (recordStatus && onAfterRecord) onAfterRecord(cmd);
 
             // Read back, trusting postfx to have returned the images in the layouts they came in.
             region = {};

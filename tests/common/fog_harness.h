@@ -45,6 +45,9 @@ public:
 
     // Called with the frame as record() gets it (images filled in), just before record().
     std::function<void(const postfx::FrameInfo&)> onBeforeRecord;
+    // Called with the command buffer right after a successful record(), before the read back: the host's
+    // commands that follow postfx's (a forward pass reading the volumetrics lookup).
+    std::function<void(VkCommandBuffer)> onAfterRecord;
 
 private:
     demo::VulkanHost& host_;

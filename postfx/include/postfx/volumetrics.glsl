@@ -5,12 +5,13 @@
 //   #define POSTFX_LOOKUP_BINDING_UNIFORMS 0
 //   #define POSTFX_LOOKUP_BINDING_SCATTERING 1
 //   #define POSTFX_LOOKUP_BINDING_TRANSMITTANCE 2
-//   #include <postfx/volumetrics.glsl>
+//   #include "postfx/volumetrics.glsl"
 //   ...
 //   PostfxVolumetrics v = postfxVolumetrics(worldPosition);
 //   color.rgb = color.rgb * v.transmittance + v.radiance;  // before blending over the frame
 //
-// Requires GL_GOOGLE_include_directive (glslang's -I or shaderc's include callback).
+// Requires GL_GOOGLE_include_directive, with the installed include directory on the include path
+// (glslangValidator -I<prefix>/include; glslang 12 resolves only quoted includes there).
 #ifndef POSTFX_VOLUMETRICS_GLSL
 #define POSTFX_VOLUMETRICS_GLSL
 

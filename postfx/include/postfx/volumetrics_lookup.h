@@ -6,7 +6,7 @@
 // composited in that frame (the aerial perspective, the clouds in front of that distance, the ray-marched or
 // the froxel fog), composed in postfx's composite order. The host's forward pass binds it (a descriptor set
 // it allocates from the layout below, with binding numbers it chooses) and includes
-// <postfx/volumetrics.glsl>: postfxVolumetrics(worldPos) returns (L, T), and the surface is composited as
+// "postfx/volumetrics.glsl": postfxVolumetrics(worldPos) returns (L, T), and the surface is composited as
 // surface·T + L, pre-exposed like everything postfx writes.
 #pragma once
 
@@ -18,10 +18,18 @@
 
 namespace postfx {
 
+// The ranges of VolumetricsLookupSettings.
+inline constexpr uint32_t kMaxLookupExtentXY = 1024;      // froxels across and down
+inline constexpr uint32_t kMaxLookupExtentZ = 512;        // slices
+inline constexpr uint64_t kMaxLookupFroxels = 1u << 24;   // x·y·z: 256 MiB of images at most
+inline constexpr float kMinLookupNear = 0.01f;            // [m]
+inline constexpr float kMaxLookupNear = 1e5f;             // [m]
+inline constexpr float kMaxLookupDistance = 1e7f;         // [m]
+
 // FrameInfo::volumetricsLookup. Off (the default): no pass, no image, no memory.
 struct VolumetricsLookupSettings {
     bool enabled = false;
-    // Froxels across, down and along the view [1]: x, y in [1, 1024], z in [2, 512]. The ray-marched
+    // Froxels across, down and along the view [1]: x, y in [1, 1024], z in [2, 512], x·y·z ≤ 2^24. The ray-marched
     // fog's medium is integrated at this resolution; the other effects are sampled at it (matching the
     // froxel fog's grid in x and y samples it exactly there).
     UVec3 extent{160, 90, 64};

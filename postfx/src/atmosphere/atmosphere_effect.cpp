@@ -6,6 +6,7 @@
 #include "common/shared_resources.h"
 #include "core/camera_math.h"
 #include "core/exposure.h"
+#include "core/lookup_volume.h"
 #include "core/temporal.h"
 #include "postfx_objects_spirv.h"
 
@@ -52,6 +53,14 @@ constexpr core::Binding kApBindings[] = {kUniformBuffer, kTransmittanceIn, kMult
 constexpr core::Binding kApplyBindings[] = {kUniformBuffer, kTransmittanceIn, kMultiScatteringIn,
                                             kSkyViewIn,     kApScatteringIn,  kApTransmittanceIn,
                                             kColorIn,       kColorOut,        kDepth};
+constexpr core::Binding kLookupBindings[] = {kUniformBuffer,
+                                             kTransmittanceIn,
+                                             kMultiScatteringIn,
+                                             kApScatteringIn,
+                                             kApTransmittanceIn,
+                                             core::kLookupUniformsBinding,
+                                             core::kLookupScatteringBinding,
+                                             core::kLookupTransmittanceBinding};
 
 const core::ComputePipelineDesc kTransmittancePass{
     "atmosphere.transmittance", spirv::atmosphere_transmittance_comp, kTransmittanceBindings};
@@ -65,6 +74,9 @@ const core::ComputePipelineDesc kSkyViewPass{"atmosphere.sky_view", spirv::atmos
 const core::ComputePipelineDesc kApPass{"atmosphere.aerial_perspective",
                                         spirv::atmosphere_aerial_perspective_comp, kApBindings};
 // [rgba32]: the color format.
+// The volumetrics lookup's part (core/lookup_volume.h).
+const core::ComputePipelineDesc kLookupPass{"atmosphere.lookup", spirv::atmosphere_lookup_comp, kLookupBindings,
+                                            core::kLookupPushBytes};
 const core::ComputePipelineDesc kApplyPass[2] = {
     {"atmosphere.apply", spirv::atmosphere_apply_comp, kApplyBindings},
     {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F, kApplyBindings}};
@@ -416,6 +428,16 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kAtmosphereBindingColorIn, source, Use::StorageRead)
         .bind(gpu::kAtmosphereBindingDepth, depth.image, Use::Sampled)
         .bind(gpu::kAtmosphereBindingColorOut, target, Use::StorageWrite);
+
+    if (const core::LookupTarget lookup = b.lookupTarget(); lookup.valid()) {
+        uint32_t g[3];
+        core::lookupGroups(lookup, false, g);
+        b.pass(kLookupPass, g[0], g[1], g[2]);
+        bindLuts();
+        b.bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
+            .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::Sampled, SamplerKind::LinearClamp);
+        core::bindLookup(b, lookup);
+    }
     return Status::success();
 }
 

@@ -10,6 +10,7 @@
 #include "common/shared_resources.h"
 #include "core/camera_math.h"
 #include "core/exposure.h"
+#include "core/lookup_volume.h"
 #include "core/settings_check.h"
 #include "postfx_objects_spirv.h"
 
@@ -67,6 +68,16 @@ const core::ComputePipelineDesc kUpsample[3] = {
     {"clouds.upsample", spirv::clouds_upsample_comp, kUpsampleBindings},
     {"clouds.upsample", spirv::clouds_upsample_comp_COLOR_RGBA32F, kUpsampleBindings},
     {"clouds.upsample", spirv::clouds_upsample_comp_SCATTER_RGBA32F, kUpsampleBindings}};
+// The volumetrics lookup's part (core/lookup_volume.h), reading an RGBA16F or RGBA32F march image.
+constexpr core::Binding kLookupBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
+                                             {gpu::kCloudBindingScatter, kStorage},
+                                             {gpu::kCloudBindingDistance, kStorage},
+                                             core::kLookupUniformsBinding,
+                                             core::kLookupScatteringBinding,
+                                             core::kLookupTransmittanceBinding};
+const core::ComputePipelineDesc kLookupPass[2] = {
+    {"clouds.lookup", spirv::clouds_lookup_comp, kLookupBindings, core::kLookupPushBytes},
+    {"clouds.lookup", spirv::clouds_lookup_comp_SCATTER_RGBA32F, kLookupBindings, core::kLookupPushBytes}};
 const core::ComputePipelineDesc kBaseNoisePass{"clouds.base_noise", spirv::common_noise_generate_comp,
                                                kNoiseBindings, sizeof(gpu::NoisePush)};
 const core::ComputePipelineDesc kDetailNoisePass{"clouds.detail_noise", spirv::common_noise_generate_comp,
@@ -297,7 +308,9 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     const uint32_t width = frame.color.extent.width, height = frame.color.extent.height;
     const glm::uvec2 march = marchExtent(width, height, s.resolutionScale);
     const bool temporal = s.temporal.enabled;
-    const bool scatter = temporal || march != glm::uvec2(width, height);
+    // The volumetrics lookup reads the march's image and distances: it marches into its image.
+    const bool lookup = frame.volumetricsLookup.enabled;
+    const bool scatter = temporal || lookup || march != glm::uvec2(width, height);
     core::TemporalFrame t;
     glm::vec3 windDelta(0.0f);
     if (temporal) {
@@ -336,7 +349,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     // Stand-ins at the march's bindings this frame does not use (never accessed): a 2D array for the
     // aerial perspective's transmittance without the atmosphere, an r32ui image for the distances
     // without temporal.
-    core::ImageRef noAtmosphere, noDistance;
+    core::ImageRef noAtmosphere, noDistance, lookupDistance;
     if (!withAtmosphere) {
         core::ImageDesc array = one;
         array.type = VK_IMAGE_TYPE_2D;
@@ -347,11 +360,16 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         core::ImageDesc distance;
         distance.format = VK_FORMAT_R32_UINT;
         distance.usage = VK_IMAGE_USAGE_STORAGE_BIT;
-        noDistance = b.transientImage(kNoDistance, distance);
+        if (lookup) {
+            distance.extent = {march.x, march.y, 1};
+            lookupDistance = b.transientImage(kLookupDistance, distance);
+        } else {
+            noDistance = b.transientImage(kNoDistance, distance);
+        }
     }
 
     b.pass(kMarch[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
-        .constants(marchConstants(withAtmosphere, scatter, temporal))
+        .constants(marchConstants(withAtmosphere, scatter, temporal || lookup))
         .bind(gpu::kCloudBindingUniforms, uniforms)
         .bind(gpu::kCloudBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kCloudBindingBaseNoise, base, noiseUse, SamplerKind::LinearRepeat)
@@ -379,7 +397,9 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
             .bind(gpu::kCloudBindingApTransmittance, noAtmosphere, Use::BoundOnly)
             .bind(gpu::kCloudBindingMultiScattering, base, Use::BoundOnly);
     }
-    if (!temporal) b.bind(gpu::kCloudBindingDistance, noDistance, Use::StorageBoundOnly);
+    if (!temporal)
+        b.bind(gpu::kCloudBindingDistance, lookup ? lookupDistance : noDistance,
+               lookup ? Use::StorageWrite : Use::StorageBoundOnly);
     if (!scatter) {  // full size without temporal: the march composites (the target stands in for its image)
         const core::ImageRef target = b.compositeTarget();
         b.bind(gpu::kCloudBindingColorIn, b.compositeSource(), Use::StorageRead)
@@ -397,12 +417,13 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kCloudBindingColorIn, scatterImage, Use::StorageBoundOnly)
         .bind(gpu::kCloudBindingColorOut, scatterImage, Use::StorageBoundOnly);
     core::ImageRef result = scatterImage;
+    core::ImageRef distance[2];  // with temporal: the distances, last frame's and this one's
     if (temporal) {
         core::ImageDesc historyDesc = marchDesc;  // RGBA32F: in half, small updates would be lost
         historyDesc.format = VK_FORMAT_R32G32B32A32_SFLOAT;
         core::ImageDesc distanceDesc = marchDesc;
         distanceDesc.format = VK_FORMAT_R32_UINT;  // two halfs (shaders/clouds/distances.glsl)
-        core::ImageRef history[2], distance[2];
+        core::ImageRef history[2];
         for (int i = 0; i < 2; ++i) {
             history[i] = b.historyImage(kHistory[i], historyDesc);
             distance[i] = b.historyImage(kHistoryDistance[i], distanceDesc);
@@ -427,6 +448,17 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kCloudBindingDepth, depthInput.image, Use::Sampled)
         .bind(gpu::kCloudBindingScatter, result, Use::StorageRead)
         .bind(gpu::kCloudBindingColorOut, b.compositeTarget(), Use::StorageWrite);
+
+    if (const core::LookupTarget target = b.lookupTarget(); target.valid()) {
+        uint32_t g[3];
+        core::lookupGroups(target, false, g);
+        b.pass(kLookupPass[temporal || rgba32], g[0], g[1], g[2])
+            .bind(gpu::kCloudBindingUniforms, uniforms)
+            .bind(gpu::kCloudBindingScatter, result, Use::StorageRead)
+            .bind(gpu::kCloudBindingDistance, temporal ? distance[t.writeSlot] : lookupDistance,
+                  Use::StorageRead);
+        core::bindLookup(b, target);
+    }
     return Status::success();
 }
 

@@ -21,6 +21,8 @@ inline constexpr core::ResourceId kNoCoverageMap{"clouds.no_coverage_map"};  // 
 // transmittance (a 2D array of two 1-texel layers), without temporal the distance image (1 r32ui texel).
 inline constexpr core::ResourceId kNoAtmosphere{"clouds.no_atmosphere"};
 inline constexpr core::ResourceId kNoDistance{"clouds.no_distance"};
+// Without temporal, with the volumetrics lookup: the march's distances for clouds.lookup.
+inline constexpr core::ResourceId kLookupDistance{"clouds.lookup_distance"};
 inline constexpr core::ResourceId kUniforms{"clouds.uniforms"};  // CloudUniforms
 // Reduced resolution or temporal (docs/effects/clouds.md, "Resolution and temporal"): the march's (L, T)
 // and reprojection distance at its extent, two accumulated (L, T) and two distance images read and

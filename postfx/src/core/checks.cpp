@@ -230,6 +230,29 @@ bool knownImageLayout(VkImageLayout layout) {
     }
 }
 
+// FrameInfo::volumetricsLookup (postfx/volumetrics_lookup.h), checked when enabled.
+Status checkVolumetricsLookup(const VolumetricsLookupSettings& s) {
+    if (!s.enabled) return Status::success();
+    const std::string name = "FrameInfo.volumetricsLookup.";
+    const uint32_t largest[3] = {kMaxLookupExtentXY, kMaxLookupExtentXY, kMaxLookupExtentZ};
+    const uint32_t smallest[3] = {1, 1, 2};
+    for (int i = 0; i < 3; ++i)
+        if (s.extent[i] < smallest[i] || s.extent[i] > largest[i])
+            return invalid(name + "extent." + "xyz"[i] + ": " + std::to_string(s.extent[i]) + " is outside [" +
+                           std::to_string(smallest[i]) + ", " + std::to_string(largest[i]) + "]");
+    if (uint64_t(s.extent.x) * s.extent.y * s.extent.z > kMaxLookupFroxels)
+        return invalid(name + "extent: " + std::to_string(s.extent.x) + "x" + std::to_string(s.extent.y) + "x" +
+                       std::to_string(s.extent.z) + " froxels exceed " + std::to_string(kMaxLookupFroxels) +
+                       " (2 × 8 bytes each)");
+    if (!(s.nearDistance >= kMinLookupNear && s.nearDistance <= kMaxLookupNear))
+        return invalid(name + "nearDistance: " + numberText(s.nearDistance) + " is outside [" +
+                       numberText(kMinLookupNear) + ", " + numberText(kMaxLookupNear) + "]");
+    if (!(s.maxDistance > s.nearDistance && s.maxDistance <= kMaxLookupDistance))
+        return invalid(name + "maxDistance: " + numberText(s.maxDistance) + " must be above nearDistance (" +
+                       numberText(s.nearDistance) + ") and at most " + numberText(kMaxLookupDistance));
+    return Status::success();
+}
+
 Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) {
     if (frame.structSize != sizeof(FrameInfo))
         return invalid("FrameInfo.structSize " + std::to_string(frame.structSize) +
@@ -264,6 +287,7 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
                            " differs from FrameInfo.color.extent " + extentText(frame.color.extent));
     }
     if (Status s = checkTime(frame.timeSeconds, "FrameInfo.timeSeconds"); !s) return s;
+    if (Status s = checkVolumetricsLookup(frame.volumetricsLookup); !s) return s;
     if (!(frame.budgetMs >= 0.0f && frame.budgetMs <= kMaxBudgetMs))
         return invalid("FrameInfo.budgetMs: " + numberText(frame.budgetMs) + " is outside [0, " +
                        numberText(kMaxBudgetMs) + "]");

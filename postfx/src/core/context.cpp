@@ -1,6 +1,7 @@
 #include <postfx/context.h>
 
 #include "core/checks.h"
+#include "core/lookup_volume.h"
 #include "core/context_impl.h"
 #include "effects.h"
 
@@ -221,6 +222,7 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         core::FrameBuilder builder(graph, out, int(e));
         if (Status s = effects[e]->declare(builder); !s) return s;
     }
+    core::declareLookupClear(graph, out);
     graph.compile(out);
     return Status::success();
 }
@@ -263,6 +265,8 @@ Status Context::record(const FrameInfo& frame) {
     for (const Impl::AutoUse& m : measuring)
         if (m.preset != ~0u) impl.autoQuality.recorded(frame.frameIndex, m.key, m.preset);
     impl.autoQuality.frameRecorded(frame.frameIndex);
+    impl.lookupRecorded = impl.resolved.volumetricsLookup.enabled;
+    impl.lookupFrame = frame.frameIndex;
     for (const auto& effect : impl.effects)
         effect->recorded(impl.resolved, effect->active(impl.resolved));
     return Status::success();

@@ -29,6 +29,9 @@ struct POSTFX_INTERNAL Context::Impl {
     core::Frame frame;   // record()'s declarations, reused from frame to frame
     FrameInfo resolved;  // record()'s frame with presets applied
     bool warnedAutoWithoutTimings = false;
+    // The last recorded frame's volumetrics lookup (Context::volumetricsLookup).
+    bool lookupRecorded = false;
+    uint64_t lookupFrame = 0;
     core::Retirement retirement;  // objects frames in flight may still use; declared last, freed first
 
     // Adds an effect after the registered ones (tests add test-only effects; call before recording).

@@ -102,6 +102,10 @@ struct Frame {
     // for all of them (FrameBuilder::depthInput); set by the context before the effects declare.
     bool shareDepth = false;
     bool composited = false;  // a pass has written the composite target
+    // The volumetrics lookup (FrameInfo::volumetricsLookup), declared by the first lookupTarget() call:
+    // its two images and uniforms, and whether a pass has written them yet.
+    uint16_t lookupScattering = kNoResource, lookupTransmittance = kNoResource, lookupUniforms = kNoResource;
+    bool lookupWritten = false;
     // Other names of shared persistent images (findPersistent): the later declarer's id and the image.
     std::vector<std::pair<const ResourceId*, uint16_t>> aliases;
     std::vector<uint8_t> scratch;  // compile()'s
@@ -126,6 +130,18 @@ struct OptionalSampled {
                                                       // filter linearly)
 };
 
+// The volumetrics lookup's volume an effect composites its (L, T) over (FrameBuilder::lookupTarget):
+// bind `scattering` and `transmittance` with `use` at gpu::kLookupBinding*, `uniforms` at
+// gpu::kLookupBindingUniforms, and push `push` (shaders/common/lookup.glsl).
+struct LookupTarget {
+    ImageRef scattering, transmittance;
+    BufferRef uniforms;
+    Use use = Use::StorageWrite;  // the first writer's; StorageReadWrite for the later ones
+    uint32_t push[4] = {0, 0, 0, 0};
+    uint32_t extent[3] = {0, 0, 0};
+    bool valid() const { return scattering.valid(); }
+};
+
 class FrameBuilder {
 public:
     FrameBuilder(const FrameGraph& graph, Frame& frame, int effect)
@@ -143,6 +159,10 @@ public:
     // centre's ray, +∞ without geometry, NaN for a NaN depth); otherwise the host's depth, which the effect
     // unprojects itself. Call it before declaring a pass, not between a pass and its bindings.
     DepthInput depthInput();
+    // The volumetrics lookup this effect composites into, in composite order, after its own composite
+    // (invalid when the host did not ask for it). Each call is one writer: call it once per lookup pass,
+    // before declaring the pass.
+    LookupTarget lookupTarget();
     // Compositing into color: the image the next composite reads (host color, or the separate output
     // once an earlier pass has written it) and the one it writes (the output when given, else color).
     ImageRef compositeSource() const;

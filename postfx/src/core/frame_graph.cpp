@@ -42,6 +42,17 @@ const FrameGraph::OwnedImage* FrameGraph::findImage(const ResourceId* id) const 
     return nullptr;
 }
 
+bool FrameGraph::uniformSlot(const ResourceId& id, uint64_t frameIndex, VkBuffer& buffer,
+                             VkDeviceSize& offset) const {
+    for (const OwnedBuffer& b : buffers_)
+        if (b.id == &id) {
+            buffer = b.buffer->handle();
+            offset = b.slotBytes * (frameIndex % framesInFlight_);
+            return true;
+        }
+    return false;
+}
+
 void FrameGraph::begin(Frame& f, const FrameInfo& info) const {
     f.info = &info;
     f.resources.clear();
@@ -50,6 +61,8 @@ void FrameGraph::begin(Frame& f, const FrameInfo& info) const {
     f.uniformData.clear();
     f.aliases.clear();
     f.composited = false;
+    f.lookupScattering = f.lookupTransmittance = f.lookupUniforms = kNoResource;
+    f.lookupWritten = false;
     auto add = [&](HostImage which, bool present) {
         f.host[size_t(which)] = kNoResource;
         if (!present) return;

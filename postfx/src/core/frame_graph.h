@@ -69,6 +69,11 @@ public:
     Status recordReadback(const char* name, VkCommandBuffer cmd, VkBuffer buffer, VkDeviceSize offset,
                           VkExtent3D& extent, VkDeviceSize& bytes) const;
 
+    // A held uniform ring's slot of `frameIndex` (the volumetrics lookup's, for the host): false if none.
+    bool uniformSlot(const ResourceId& id, uint64_t frameIndex, VkBuffer& buffer, VkDeviceSize& offset) const;
+    // The sampler of `kind`, created on first use.
+    Status sampler(SamplerKind kind, VkSampler& out);
+
     // Objects held now (for tests): owned images, uniform rings and pipelines.
     size_t heldObjects() const { return images_.size() + buffers_.size() + pipelines_.size(); }
     // Pipelines held now whose description is named `name` (for tests): its specializations, for every
@@ -86,6 +91,10 @@ private:
         bool built = false;           // persistent: contents built from builtKey
         uint64_t builtKey = 0;
         bool used = false;  // declared and held this frame
+        // Exported: written this frame (made visible to the host's commands at the end of record), and
+        // possibly read by the host since (the next write waits for every earlier command).
+        bool writtenForHost = false;
+        bool hostMayRead = false;
     };
     struct OwnedBuffer {
         const ResourceId* id = nullptr;
@@ -109,7 +118,6 @@ private:
     // Before a new specialization of `desc` is cached: releases its least recently used one when
     // kMaxVariantsPerPipeline are held (never one this frame uses).
     void retireOldestVariant(const ComputePipelineDesc* desc, uint64_t frameIndex, Retirement& retirement);
-    Status sampler(SamplerKind kind, VkSampler& out);
 
     const Gpu* gpu_ = nullptr;
     uint32_t framesInFlight_ = 1;

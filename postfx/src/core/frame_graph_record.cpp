@@ -147,7 +147,9 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     t.layers = o.image->desc().layers;
                     t.oldLayout = m.discard ? VK_IMAGE_LAYOUT_UNDEFINED : o.layout;
                     t.newLayout = layout;
-                    t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+                    // An image the host may have read since (exported): after every earlier command.
+                    t.srcStage = o.hostMayRead ? VK_PIPELINE_STAGE_ALL_COMMANDS_BIT
+                                               : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
                     t.srcAccess = o.pendingWrite ? VK_ACCESS_SHADER_WRITE_BIT : 0;
                     t.dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
                     t.dstAccess = (m.synchronizedRead() ? VK_ACCESS_SHADER_READ_BIT : 0) |
@@ -156,6 +158,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     o.layout = layout;
                     o.pendingWrite = false;
                     o.readSinceWrite = false;
+                    o.hostMayRead = false;
                 }
             }
         }
@@ -185,11 +188,12 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                 readSince = &o.readSinceWrite;
                 // Written once: readable by the host (imageView, recordImageReadback); a history image
                 // holds the frame's result (the clouds' shadow map, the fogs' accumulations).
-                if (m.write &&
-                    (r.kind == ResourceDecl::Kind::Persistent || r.kind == ResourceDecl::Kind::History)) {
+                if (m.write && (r.kind == ResourceDecl::Kind::Persistent ||
+                                r.kind == ResourceDecl::Kind::History || r.exported)) {
                     o.built = true;
                     o.builtKey = r.buildKey;
                 }
+                if (m.write && r.exported) o.writtenForHost = true;
             }
             if (!pending) continue;
             if (m.synchronizedWrite()) {
@@ -201,9 +205,27 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
         }
     }
 
-    // Host images out, once, in the layouts they came in, postfx's writes visible to what follows.
+    // Host images out, once, in the layouts they came in, postfx's writes visible to what follows; so are
+    // the writes of the images the host reads after the frame (exported), in the layouts they are in.
     for (const HostUse& h : hostUses)
         if (h.used) batch.add(h.use.release);
+    for (size_t i = 0; i < f.resources.size(); ++i) {
+        OwnedImage* o = resourceImages_[i];
+        if (!o || !f.resources[i].exported || !o->writtenForHost) continue;
+        ImageTransition t;
+        t.image = o->image->handle();
+        t.layers = o->image->desc().layers;
+        t.oldLayout = t.newLayout = o->layout;
+        t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+        t.srcAccess = VK_ACCESS_SHADER_WRITE_BIT;
+        t.dstStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+        t.dstAccess = VK_ACCESS_SHADER_READ_BIT;
+        batch.add(t);
+        o->writtenForHost = false;
+        o->pendingWrite = false;
+        o->readSinceWrite = true;
+        o->hostMayRead = true;
+    }
     batch.record(*gpu_, cmd);
     endLabel(gpu_->fn, cmd);
     return Status::success();

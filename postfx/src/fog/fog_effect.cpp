@@ -4,6 +4,7 @@
 #include "common/medium_noise.h"
 #include "common/shared_resources.h"
 #include "core/checks.h"
+#include "core/lookup_volume.h"
 #include "core/settings_check.h"
 #include "fog/fog_settings.h"
 #include "fog/fog_uniforms.h"
@@ -45,9 +46,20 @@ constexpr core::Binding kTemporalBindings[] = {kUniformBuffer, kScatterImage, kH
 constexpr core::Binding kTemporalCompositeBindings[] = {kColorIn,      kColorOut,  kUniformBuffer,
                                                         kScatterImage, kHistoryIn, kHistoryOut,
                                                         kDistanceIn,   kDistance,  kTemporalBuffer};
+constexpr core::Binding kLookupBindings[] = {kShadowMap,
+                                             kNoiseTexture,
+                                             kUniformBuffer,
+                                             kAtmosphere,
+                                             kCloudShadow,
+                                             core::kLookupUniformsBinding,
+                                             core::kLookupScatteringBinding,
+                                             core::kLookupTransmittanceBinding};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
 
 // Each color-writing kernel has an RGBA16F and an RGBA32F variant (the color format).
+// The volumetrics lookup's part (core/lookup_volume.h).
+const core::ComputePipelineDesc kLookupPass{"fog.lookup", spirv::fog_lookup_comp, kLookupBindings,
+                                            core::kLookupPushBytes};
 const core::ComputePipelineDesc kRaymarch[2] = {
     {"fog.raymarch", spirv::fog_raymarch_comp, kRaymarchBindings},
     {"fog.raymarch", spirv::fog_raymarch_comp_COLOR_RGBA32F, kRaymarchBindings}};
@@ -174,9 +186,21 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const core::ImageRef shadow = shadowRead ? b.host(HostImage::ShadowMap) : depth;
     const Use shadowUse = shadowRead ? Use::Sampled : Use::BoundOnly;
     const Use noiseUse = noise.enabled ? Use::Sampled : Use::BoundOnly;
-    // Full size without temporal: one pass marches and composites.
     const core::OptionalSampled sunLut = common::sampledOrStandIn(b, common::kSunTransmittanceLut, depth);
     const core::OptionalSampled cloudShadow = common::sampledOrStandIn(b, common::kCloudShadowMap, depth);
+    if (const core::LookupTarget lookup = b.lookupTarget(); lookup.valid()) {
+        uint32_t g[3];
+        core::lookupGroups(lookup, true, g);
+        b.pass(kLookupPass, g[0], g[1], 1)
+            .constants(marchConstants(u))
+            .bind(gpu::kFogBindingShadowMap, shadow, shadowUse)
+            .bind(gpu::kFogBindingNoise, noiseImage, noiseUse, SamplerKind::LinearRepeat)
+            .bind(gpu::kFogBindingUniforms, uniforms)
+            .bind(gpu::kMediumBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
+            .bind(gpu::kMediumBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler);
+        core::bindLookup(b, lookup);
+    }
+    // Full size without temporal: one pass marches and composites.
     if (!reduced && !temporal) {
         const core::ImageRef source = b.compositeSource(), target = b.compositeTarget();
         b.pass(kRaymarch[rgba32], groupsFor(full.x, gpu::kFogMarchGroupX),

@@ -4,6 +4,7 @@
 #include "common/medium.h"
 #include "common/medium_noise.h"
 #include "common/shared_resources.h"
+#include "core/lookup_volume.h"
 #include "core/settings_check.h"
 #include "froxel_fog/froxel_uniforms.h"
 #include "postfx_objects_spirv.h"
@@ -80,6 +81,12 @@ constexpr core::Binding kScatterListShadowTemporalBindings[] = {
 constexpr core::Binding kIntegrateBindings[] = {kUniformBuffer, kScatterImage, kIntegratedImage};
 constexpr core::Binding kApplyBindings[] = {kColorIn,       kColorOut,          kDepth,
                                             kUniformBuffer, kIntegratedSampled, kAtmosphere};
+constexpr core::Binding kLookupBindings[] = {kUniformBuffer,
+                                             kIntegratedSampled,
+                                             kAtmosphere,
+                                             core::kLookupUniformsBinding,
+                                             core::kLookupScatteringBinding,
+                                             core::kLookupTransmittanceBinding};
 constexpr core::Binding kNoiseBindings[] = {{gpu::kNoiseBindingTexture, kStorage}};
 
 const core::ComputePipelineDesc kLightListPass{"froxel_fog.light_lists", spirv::froxel_fog_light_lists_comp,
@@ -115,6 +122,9 @@ const core::ComputePipelineDesc kIntegratePass[2] = {
 const core::ComputePipelineDesc kApplyPass[2] = {
     {"froxel_fog.apply", spirv::froxel_fog_apply_comp, kApplyBindings},
     {"froxel_fog.apply", spirv::froxel_fog_apply_comp_COLOR_RGBA32F, kApplyBindings}};
+// The volumetrics lookup's part (core/lookup_volume.h).
+const core::ComputePipelineDesc kLookupPass{"froxel_fog.lookup", spirv::froxel_fog_lookup_comp, kLookupBindings,
+                                            core::kLookupPushBytes};
 const core::ComputePipelineDesc kNoiseGenerate{"froxel_fog.noise", spirv::common_noise_generate_comp,
                                                kNoiseBindings, sizeof(gpu::NoisePush)};
 
@@ -309,6 +319,16 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         .bind(gpu::kFroxelBindingIntegrated, integrated, Use::Sampled, SamplerKind::LinearClamp)
         .bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
         .bind(gpu::kFroxelBindingColorOut, target, Use::StorageWrite);
+
+    if (const core::LookupTarget lookup = b.lookupTarget(); lookup.valid()) {
+        uint32_t g[3];
+        core::lookupGroups(lookup, false, g);
+        b.pass(kLookupPass, g[0], g[1], g[2])
+            .bind(gpu::kFroxelBindingUniforms, uniforms)
+            .bind(gpu::kFroxelBindingIntegrated, integrated, Use::Sampled, SamplerKind::LinearClamp)
+            .bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler);
+        core::bindLookup(b, lookup);
+    }
     return Status::success();
 }
 
