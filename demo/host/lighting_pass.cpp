@@ -36,17 +36,20 @@ bool LightingPass::create(const VulkanHost& host, const LightingInputs& in, std:
 
     using namespace shared;
     const VkShaderStageFlags cs = VK_SHADER_STAGE_COMPUTE_BIT;
+    // The forward pass binds this set too (forward.vert, forward.frag).
+    const VkShaderStageFlags fs = cs | VK_SHADER_STAGE_FRAGMENT_BIT;
+    const VkShaderStageFlags vfs = fs | VK_SHADER_STAGE_VERTEX_BIT;
     const std::array<VkDescriptorSetLayoutBinding, 10> bindings{{
-        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
-        {kBindingAlbedo, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
-        {kBindingNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
-        {kBindingDepth, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
-        {kBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
+        {kBindingFrame, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, vfs, nullptr},
+        {kBindingAlbedo, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fs, nullptr},
+        {kBindingNormal, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fs, nullptr},
+        {kBindingDepth, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fs, nullptr},
+        {kBindingShadowMap, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fs, nullptr},
         {kBindingHdr, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, cs, nullptr},
-        {kBindingLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, cs, nullptr},
-        {kBindingCloudShadow, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
-        {kBindingLocalShadowAtlas, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, cs, nullptr},
-        {kBindingLocalShadowFaces, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, cs, nullptr},
+        {kBindingLights, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, fs, nullptr},
+        {kBindingCloudShadow, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fs, nullptr},
+        {kBindingLocalShadowAtlas, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, fs, nullptr},
+        {kBindingLocalShadowFaces, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, fs, nullptr},
     }};
     if (!createDescriptorSet(device, bindings, setLayout_, pool_, set_, error)) return false;
 

@@ -32,6 +32,14 @@ public:
     // replaced (LocalShadowPass::reserve, which waited for the device: no pending frame uses the set).
     void setLocalShadowAtlas(VkDevice device, VkImageView view);
 
+    // The descriptor set and its layout, for the forward pass's set 0: every binding but the HDR image is
+    // visible to fragment shaders too, the frame uniforms to vertex shaders.
+    VkDescriptorSetLayout setLayout() const { return setLayout_; }
+    VkDescriptorSet set() const { return set_; }
+    // What the cloud shadow binding holds (setCloudShadow; VK_NULL_HANDLE: the stand-in).
+    VkImageView cloudShadowView() const { return cloudShadowView_; }
+    VkImageLayout cloudShadowLayout() const { return cloudShadowLayout_; }
+
     VkSampler shadowSampler = VK_NULL_HANDLE;  // nearest, compare LESS_OR_EQUAL, border = depth 1 (lit)
 
 private:

@@ -41,6 +41,7 @@ Renderer::Impl::~Impl() {
     for (VkCommandBuffer c : commandBuffers)
         if (c) vkFreeCommandBuffers(device, host.commandPool, 1, &c);
     lighting.destroy(device);
+    forward.destroy(device);
     localShadows.destroy(device);
     gbuffer.destroy(device);
     shadow.destroy(device);
@@ -136,10 +137,11 @@ bool Renderer::Impl::createResources(std::string& error) {
         !localShadows.create(host, error))
         return false;
 
-    if (!createImage(
-            host, kHdrFormat, extent,
-            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, hdr,
-            error))
+    // COLOR_ATTACHMENT: the forward pass blends transparent surfaces into it after postfx.
+    if (!createImage(host, kHdrFormat, extent,
+                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+                     hdr, error))
         return false;
     LightingInputs in{&frameUniforms,
                       &lightsUniforms,
@@ -150,7 +152,9 @@ bool Renderer::Impl::createResources(std::string& error) {
                       &hdr,
                       &localShadows.atlas(),
                       &shadowFaces};
-    if (!lighting.create(host, in, error)) return false;
+    if (!lighting.create(host, in, error) ||
+        !forward.create(host, hdr, lighting.setLayout(), kFramesInFlight, error))
+        return false;
     if (!createBuffer(host, VkDeviceSize(extent.width) * extent.height * 8, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       true, readback, error))
         return false;

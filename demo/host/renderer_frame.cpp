@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace demo {
@@ -17,9 +18,10 @@ namespace {
 constexpr VkPipelineStageFlags kHdrReaderStages = VK_PIPELINE_STAGE_TRANSFER_BIT |
                                                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
                                                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT;
-// Stages reading the frame uniforms.
-constexpr VkPipelineStageFlags kUniformStages =
-    VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+// Stages reading the frame uniforms (the forward pass's vertex and fragment shaders too).
+constexpr VkPipelineStageFlags kUniformStages = VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                                                VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
+                                                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 constexpr VkPipelineStageFlags kCompute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
 
 // The light is pre-exposed (light.preExposure): the lighting writes radiance × preExposure, as postfx does.
@@ -201,6 +203,9 @@ PostfxInputs Renderer::Impl::postfxInputs(const Scene& scene, uint64_t frameInde
     in.froxelFog = froxelFogSettings(scene);  // its volumes point into scene.froxelVolumes
     in.atmosphere = scene.atmosphere;
     in.clouds = scene.clouds;
+    // The forward pass's transparent surfaces read postfx's volumetrics through the lookup.
+    in.volumetricsLookup = scene.volumetricsLookup;
+    in.volumetricsLookup.enabled = hasForwardDraws(scene);
     return in;
 }
 
@@ -337,15 +342,15 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     vkCmdUpdateBuffer(cmd, frameUniforms.buffer, 0, sizeof(u), &u);
     bufferBarrier(cmd, frameUniforms, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   kUniformStages, VK_ACCESS_UNIFORM_READ_BIT);
-    // Local lights (lighting pass only): the same, for the entries in use (none: nothing written).
+    // Local lights (lighting and forward passes): the same, for the entries in use (none: nothing written).
     if (!scene.lights.empty()) {
         const std::vector<shared::GpuLight> lights = makeGpuLights(scene, preExposure, localShadowFrame);
-        bufferBarrier(cmd, lightsUniforms, kCompute, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+        bufferBarrier(cmd, lightsUniforms, kUniformStages, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                       VK_ACCESS_TRANSFER_WRITE_BIT);
         vkCmdUpdateBuffer(cmd, lightsUniforms.buffer, 0, lights.size() * sizeof(shared::GpuLight),
                           lights.data());
         bufferBarrier(cmd, lightsUniforms, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      kCompute, VK_ACCESS_UNIFORM_READ_BIT);
+                      kUniformStages, VK_ACCESS_UNIFORM_READ_BIT);
     }
 
     // The shadowed lights' faces: the same, for the faces in use, in chunks of vkCmdUpdateBuffer's 64 KiB.
@@ -368,10 +373,12 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     // their attachments after the previous frame's COMPUTE_SHADER reads: the lighting pass and
     // postfx (whose release barriers end in COMPUTE_SHADER -> ALL_COMMANDS) read depth and shadow maps.
     // The local shadow atlas is drawn with shadowed lights, and cleared once after it was replaced.
-    if (shadows) shadow.record(cmd, frameSet, vertices, indices, draws);
+    // Transparent objects are not in the G-buffer (the forward pass draws them) and cast no shadow.
+    const std::vector<MeshDraw> casters = shadowCasterDraws(scene, draws);
+    if (shadows) shadow.record(cmd, frameSet, vertices, indices, casters);
     if (!faces.empty() || !localShadows.cleared())
-        localShadows.record(cmd, vertices, indices, draws, makeShadowFaceDraws(localShadowFrame));
-    gbuffer.record(cmd, frameSet, vertices, indices, draws);
+        localShadows.record(cmd, vertices, indices, casters, makeShadowFaceDraws(localShadowFrame));
+    gbuffer.record(cmd, frameSet, vertices, indices, opaqueDraws(scene, draws));
 
     // Lighting overwrites every HDR pixel: discard the old content once its readers are done.
     imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, kHdrReaderStages, 0, kCompute,
@@ -390,6 +397,44 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     }
     cameraCutRequested = false;  // told to postfx
     cloudShadow = postfx::cloudShadowTransform(frame);
+    // The transparent surfaces over postfx's composite. Not with a separate output (the CPU reference
+    // path, whose HDR image keeps the un-fogged opaque scene): there they are left out.
+    if (!frame.volumetricsLookup.enabled || fogOutput.image != VK_NULL_HANDLE) return true;
+    return recordForward(cmd, scene, frame, error);
+}
+
+bool Renderer::Impl::recordForward(VkCommandBuffer cmd, const Scene& scene, const postfx::FrameInfo& frame,
+                                   std::string& error) {
+    const size_t slot = frame.frameIndex % kFramesInFlight;
+    const ForwardFrame forwardFrame = buildForwardFrame(scene, draws, frame.timeSeconds);
+    if (forwardFrame.draws.empty()) return true;
+    if (!forward.upload(host, slot, forwardFrame, error)) return false;
+    ForwardPass::Inputs in;
+    in.lightingSet = lighting.set();
+    in.vertices = &vertices;
+    in.indices = &indices;
+    postfx::VolumetricsLookupBindings bindings;
+    bindings.uniforms = shared::kForwardBindingLookupUniforms;
+    bindings.scattering = shared::kForwardBindingLookupScattering;
+    bindings.transmittance = shared::kForwardBindingLookupTransmittance;
+    if (postfx::Status s = postfx->writeVolumetricsLookup(forward.lookupSet(slot), bindings); !s.ok()) {
+        in.fogged = false;
+        if (!warnedNoLookup) {
+            std::fprintf(stderr, "[demo warning] no volumetrics lookup (%s): transparent surfaces unfogged\n",
+                         s.message.c_str());
+            warnedNoLookup = true;
+        }
+    }
+    // The clouds' shadow map this frame's postfx wrote, at this frame's rows, when the lighting's binding
+    // holds it (otherwise none: rows putting every point outside the map).
+    VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    const VkImageView map = postfx->imageView(postfx::kCloudsShadowMap, &layout);
+    if (map != VK_NULL_HANDLE && map == lighting.cloudShadowView() &&
+        layout == lighting.cloudShadowLayout()) {
+        in.cloudShadowU = glm::vec4(glm::dvec4(cloudShadow.u));
+        in.cloudShadowV = glm::vec4(glm::dvec4(cloudShadow.v));
+    }
+    forward.record(cmd, slot, forwardFrame, in);
     return true;
 }
 

@@ -4,6 +4,7 @@
 
 #include "host/atmosphere_lighting.h"
 #include "host/camera_math.h"
+#include "host/forward_pass.h"
 #include "host/gpu_resources.h"
 #include "host/lighting_pass.h"
 #include "host/local_shadow_pass.h"
@@ -69,7 +70,12 @@ struct Renderer::Impl {
     mutable LocalShadowLayout localShadowLayout;
 
     GpuBuffer vertices, indices;  // host-visible scene mesh
-    std::vector<MeshDraw> draws;
+    std::vector<MeshDraw> draws;  // one per scene object (setScene)
+    // The transparent objects and particles, after postfx (host/forward_pass.h).
+    ForwardPass forward;
+    // Set once postfx refused to write its volumetrics lookup: the forward pass draws without it (a
+    // warning is printed once).
+    bool warnedNoLookup = false;
 
     std::unique_ptr<postfx::Context> postfx;
     ImageInfo hdrInfo, depthInfo;
@@ -135,6 +141,9 @@ struct Renderer::Impl {
     // Renderer::recordFrame, with postfx writing to `fogOutput` (FrameInfo::output) when present.
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                      const postfx::ImageInput& fogOutput, std::string& error);
+    // The forward pass of `scene` after postfx recorded `frame` (its lookup written into this slot's set).
+    bool recordForward(VkCommandBuffer cmd, const Scene& scene, const postfx::FrameInfo& frame,
+                       std::string& error);
     // Submits the ended `cmd` on the host's queue, signalling fences[slot] (reset first); a failed
     // submission marks the renderer broken.
     bool submit(VkCommandBuffer cmd, size_t slot, std::string& error);

@@ -6,6 +6,7 @@
 #include "scene/json_read.h"
 #include "scene/json_text.h"
 #include "scene/lights_json.h"
+#include "scene/transparency_json.h"
 
 #include <glm/geometric.hpp>
 
@@ -138,15 +139,15 @@ private:
 
 // ---- scene -----------------------------------------------------------------------------------------
 
-constexpr const char* kTopKeys[] = {"camera",           "sun",      "ambient", "sky",
-                                    "objects",          "lights",   "effects", "frame_time",
-                                    "camera_cut_frame", "budget_ms"};
+constexpr const char* kTopKeys[] = {"camera",           "sun",       "ambient",   "sky",
+                                    "objects",          "lights",    "effects",   "frame_time",
+                                    "camera_cut_frame", "budget_ms", "particles", "volumetrics_lookup"};
 constexpr const char* kCameraKeys[] = {"position", "look_at", "up",       "fov_y_deg", "near",
                                        "far",      "ev100",   "velocity", "yaw_rate"};
 constexpr const char* kSunKeys[] = {"direction", "illuminance", "shadows"};
-constexpr const char* kPlaneKeys[] = {"type", "point", "normal", "albedo"};
-constexpr const char* kBoxKeys[] = {"type", "center", "half_size", "albedo"};
-constexpr const char* kSphereKeys[] = {"type", "center", "radius", "albedo"};
+constexpr const char* kPlaneKeys[] = {"type", "point", "normal", "albedo", "opacity", "forward"};
+constexpr const char* kBoxKeys[] = {"type", "center", "half_size", "albedo", "opacity", "forward"};
+constexpr const char* kSphereKeys[] = {"type", "center", "radius", "albedo", "opacity", "forward"};
 
 // The view direction and up vector must make a usable basis: sin(angle) at least this.
 constexpr double kMinSinUpView = 1e-3;
@@ -247,6 +248,8 @@ Object readObject(const json& j, const std::string& path) {
     } else {
         fail(typePath, "unknown object type " + json_text::quote(name) + " (expected plane, box or sphere)");
     }
+    if (const json* a = find(j, "opacity")) o.opacity = readNumber(*a, child(path, "opacity"), Range::Unit);
+    if (const json* f = find(j, "forward")) o.forward = readBool(*f, child(path, "forward"));
     return o;
 }
 
@@ -271,6 +274,9 @@ Scene readScene(const json& root) {
 
     if (const json* lights = find(root, "lights")) scene.lights = readLights(*lights, "lights");
     if (const json* effects = find(root, "effects")) readEffects(*effects, "effects", scene);
+    if (const json* p = find(root, "particles")) scene.particles = readParticles(*p, "particles");
+    if (const json* v = find(root, "volumetrics_lookup"))
+        readVolumetricsLookup(*v, "volumetrics_lookup", scene.volumetricsLookup);
     if (const json* t = find(root, "frame_time")) scene.frameTime = readDouble(*t, "frame_time", kFrameTime);
     if (const json* b = find(root, "budget_ms")) scene.budgetMs = readNumber(*b, "budget_ms", kBudgetMs);
     if (const json* c = find(root, "camera_cut_frame"))
@@ -373,13 +379,27 @@ nlohmann::json sceneToJson(const Scene& scene) {
                 break;
         }
     }
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        objects[i]["opacity"] = number(scene.objects[i].opacity);
+        objects[i]["forward"] = scene.objects[i].forward;
+    }
     j["objects"] = std::move(objects);
+    j["particles"] = particlesToJson(scene.particles);
+    j["volumetrics_lookup"] = volumetricsLookupToJson(scene.volumetricsLookup);
     j["lights"] = lightsToJson(scene.lights);
     j["effects"] = effectsToJson(scene);
     j["frame_time"] = doubleNumber(scene.frameTime);
     if (scene.cameraCutFrame) j["camera_cut_frame"] = *scene.cameraCutFrame;
     j["budget_ms"] = number(scene.budgetMs);
     return j;
+}
+
+bool hasForwardDraws(const Scene& scene) {
+    for (const Object& o : scene.objects)
+        if (drawnForward(o)) return true;
+    for (const ParticleEmitter& e : scene.particles)
+        if (e.enabled && e.count > 0) return true;
+    return false;
 }
 
 postfx::FroxelFogSettings froxelFogSettings(const Scene& scene) {

@@ -3,11 +3,13 @@
 #pragma once
 
 #include "scene/light.h"
+#include "scene/particles.h"
 
 #include <postfx/atmosphere.h>
 #include <postfx/clouds.h>
 #include <postfx/fog.h>
 #include <postfx/froxel_fog.h>
+#include <postfx/volumetrics_lookup.h>
 #include <glm/glm.hpp>
 // Declares nlohmann::json (sceneToJson's type) alone: a file that writes or reads JSON includes
 // <nlohmann/json.hpp>, and the others (the renderer, most tests) skip its parse.
@@ -80,7 +82,22 @@ struct Object {
     glm::vec3 halfSize{0.5f};            // box only [m], (0, 1e7]
     float radius = 0.5f;                 // sphere only [m], (0, 1e7]
     glm::vec3 albedo{0.5f};              // diffuse reflectance, each in [0, 1]
+    // Coverage [1], [0, 1]: 1 opaque (the G-buffer), below 1 transparent (the forward pass after postfx,
+    // blended over the frame with this alpha, seen through postfx's volumetrics lookup).
+    float opacity = 1.0f;
+    // Drawn in the forward pass even at opacity 1 (tests compare it with the same object drawn opaque).
+    bool forward = false;
 };
+
+// Whether `object` is drawn in the forward pass (transparent or forced there) rather than the G-buffer.
+inline bool drawnForward(const Object& object) {
+    return object.forward || object.opacity < 1.0f;
+}
+// Whether `object` casts shadows (the sun's map, the local lights' atlas): opaque ones only, so a glass
+// pane does not cast a black shadow; an object forced forward at opacity 1 still does.
+inline bool castsShadows(const Object& object) {
+    return object.opacity >= 1.0f;
+}
 
 struct Scene {
     Camera camera;
@@ -108,6 +125,13 @@ struct Scene {
     postfx::AtmosphereSettings atmosphere;
     // effects.clouds: postfx's volumetric clouds (docs/effects/clouds.md); disabled unless the file has it.
     postfx::CloudSettings clouds;
+    // `particles`: emitters of camera-facing quads drawn in the forward pass (scene/particles.h), at most
+    // kMaxParticleEmitters.
+    std::vector<ParticleEmitter> particles;
+    // `volumetrics_lookup`: the resolution and depth range of postfx's lookup for the forward pass
+    // (FrameInfo::volumetricsLookup). Its `enabled` is not read from the file: the renderer turns the lookup
+    // on whenever the scene has forward draws (hasForwardDraws).
+    postfx::VolumetricsLookupSettings volumetricsLookup;
     // `frame_time`: frame n is at time n · frameTime [s], for the motion of the camera and lights and for
     // postfx (FrameInfo::timeSeconds); (0, 1]. Kept in double, so that the default is exactly 1/60 s.
     double frameTime = kDefaultFrameTime;
@@ -118,6 +142,10 @@ struct Scene {
     // history); none when absent.
     std::optional<uint32_t> cameraCutFrame;
 };
+
+// Whether the scene draws anything in the forward pass: an object drawnForward or an enabled emitter with
+// particles.
+bool hasForwardDraws(const Scene& scene);
 
 // scene.froxelFog with its volumes pointing into scene.froxelVolumes (volumeCount their number), as the
 // renderer gives it to postfx (FrameInfo::froxelFog): valid while `scene` lives and its froxelVolumes is

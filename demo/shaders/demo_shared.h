@@ -130,6 +130,28 @@ struct DrawPush {
     vec4 albedo;  // rgb diffuse reflectance
 };
 
+// The forward pass (forward.vert, forward.frag): its descriptor set 0 is the lighting pass's set (the
+// bindings above; the G-buffer depth read for the depth test), set 1 postfx's volumetrics lookup at these
+// bindings (postfx::VolumetricsLookupBindings).
+DEMO_CONST(uint, kForwardLookupSet, 1u);
+DEMO_CONST(uint, kForwardBindingLookupUniforms, 0u);
+DEMO_CONST(uint, kForwardBindingLookupScattering, 1u);
+DEMO_CONST(uint, kForwardBindingLookupTransmittance, 2u);
+// What a forward draw is (ForwardPush::params.x).
+DEMO_CONST(uint, kForwardOpenSurface, 0u);    // a plane: both sides drawn
+DEMO_CONST(uint, kForwardClosedSurface, 1u);  // a box or sphere: its back faces discarded
+DEMO_CONST(uint, kForwardParticle, 2u);       // a camera-facing quad, a soft disc (6 vertices each)
+
+// Push constants of the forward pass, per draw (vertex and fragment stages).
+struct ForwardPush {
+    vec4 albedoOpacity;  // rgb: diffuse reflectance; a: opacity [1]
+    vec4 params;         // x: kForward*; yzw: unused
+    // postfx::cloudShadowTransform of this frame (the clouds' shadow map it wrote), or rows putting every
+    // point outside the map (w = -1) when the lighting's binding holds another image.
+    vec4 cloudShadowU;
+    vec4 cloudShadowV;
+};
+
 // Tonemap of the windowed demo (demo/shaders/tonemap.comp), the same curve as the CPU tonemap of .png
 // files (demo/host/image_io.cpp): exposure 1 / (kExposureSaturation · 2^ev100), ACES fitted
 // (Narkowicz 2015): x (A x + B) / (x (C x + D) + E), then the sRGB OETF.
@@ -155,6 +177,7 @@ struct TonemapPush {
 static_assert(sizeof(FrameUniforms) == 3 * 64 + 11 * 16, "FrameUniforms must match std140");
 static_assert(sizeof(LightsUniforms) == 16384, "LightsUniforms must match std140 and fit 16 KiB");
 static_assert(sizeof(DrawPush) == 16, "DrawPush must match std430 push constants");
+static_assert(sizeof(ForwardPush) == 64, "ForwardPush must match std430 push constants");
 static_assert(sizeof(GpuShadowFace) == 96, "GpuShadowFace must match std430");
 static_assert(sizeof(ShadowFacePush) == 64, "ShadowFacePush must match std430 push constants");
 static_assert(sizeof(TonemapPush) == 32, "TonemapPush must match std430 push constants");

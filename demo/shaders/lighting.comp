@@ -34,15 +34,9 @@ layout(set = 0, binding = kBindingLocalShadowFaces, std430) readonly buffer Loca
 #include "local_shadow.glsl"
 #include "shadow.glsl"
 
-const float kPi = 3.14159265358979;
+#include "surface_light.glsl"
 
-// The clouds' transmittance toward the sun at world position p: 1 outside postfx's map.
-float cloudShadow(vec3 p) {
-    vec2 uv = vec2(dot(frame.cloudShadowU.xyz, p) + frame.cloudShadowU.w,
-                   dot(frame.cloudShadowV.xyz, p) + frame.cloudShadowV.w);
-    if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0)))) return 1.0;
-    return textureLod(cloudShadowMap, uv, 0.0).r;
-}
+const float kPi = 3.14159265358979;
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -59,31 +53,8 @@ void main() {
 
         vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
         vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
-        float nDotL = max(dot(n, frame.toSun.xyz), 0.0);
-        float visibility = 1.0;
-        if (frame.toSun.w > 0.5 && nDotL > 0.0) visibility = sunVisibility(world, n, nDotL);
-        if (nDotL > 0.0) visibility *= cloudShadow(world);
-        float altitudeSpan = frame.sunOpticalDepthHigh.w - frame.sunOpticalDepthLow.w;
-        float a = clamp((world.y - frame.sunOpticalDepthLow.w) / altitudeSpan, 0.0, 1.0);
-        vec3 sunTransmittance = exp(-mix(frame.sunOpticalDepthLow.rgb, frame.sunOpticalDepthHigh.rgb, a));
-        vec3 irradiance = frame.sunIlluminance.rgb * sunTransmittance * (nDotL * visibility);
-        uint lightCount = uint(frame.depthParams.w);
-        for (uint i = 0u; i < lightCount; ++i) {
-            GpuLight light = lightList.lights[i];
-            vec3 toLight = light.positionRadius.xyz - relative;
-            float d = length(toLight);
-            vec3 l = d > 0.0 ? toLight / d : n;
-            float nDotLi = max(dot(n, l), 0.0);
-            if (nDotLi <= 0.0) continue;
-            float spot =
-                spotFactor(dot(light.directionCosOuter.xyz, -l), light.directionCosOuter.w, light.cosInner.x);
-            float falloff = localLightFalloff(d, light.positionRadius.w, light.intensityRange.w);
-            float contribution = falloff * spot * nDotLi;
-            if (light.cosInner.z > 0.5 && contribution > 0.0)
-                contribution *= localShadowVisibility(light, relative, n, nDotLi, d);
-            irradiance += light.intensityRange.rgb * contribution;
-        }
-        irradiance = min(irradiance, vec3(1e30));  // finite (I · falloff may overflow): albedo 0 gives 0
+        vec3 irradiance =
+            surfaceIrradiance(relative, world, n, false, frame.cloudShadowU, frame.cloudShadowV);
         radiance = albedo / kPi * irradiance + albedo * frame.ambient.rgb;
     }
     imageStore(hdr, pixel, vec4(min(radiance, vec3(kHalfMax)), 1.0));

@@ -14,6 +14,7 @@
 #include "window/light_controls.h"
 #include "window/swapchain.h"
 #include "window/tonemap_pass.h"
+#include "window/transparency_controls.h"
 #include "window/ui_overlay.h"
 
 #define GLFW_INCLUDE_NONE
@@ -94,9 +95,10 @@ private:
     VkExtent2D renderExtent_{0, 0};
     TonemapPass tonemap_;
     std::unique_ptr<UiOverlay> ui_;
-    FogControls fogControls_;                // edits scene_.fog and scene_.sun from the overlay's panel
-    FroxelFogControls froxelFogControls_;    // edits scene_.froxelFog and scene_.froxelVolumes
-    LightControls lightControls_;            // edits scene_.lights
+    FogControls fogControls_;                    // edits scene_.fog and scene_.sun from the overlay's panel
+    FroxelFogControls froxelFogControls_;        // edits scene_.froxelFog and scene_.froxelVolumes
+    LightControls lightControls_;                // edits scene_.lights
+    TransparencyControls transparencyControls_;  // edits objects' opacity and scene_.particles
     AtmosphereControls atmosphereControls_;  // edits scene_.atmosphere, scene_.sun.direction, the camera's y
     CloudsControls cloudsControls_;          // edits scene_.clouds
     CameraControls cameraControls_;          // edits scene_.camera.ev100 (exposure and pre-exposure)
@@ -378,6 +380,7 @@ bool App::drawFrame(Frame& outcome, std::string& error) {
             fogControls_.build(scene_);
             froxelFogControls_.build(scene_);
             lightControls_.build(scene_);
+            transparencyControls_.build(scene_);
         });
     }
 

@@ -228,7 +228,9 @@ TEST_P(DemoObjectRoundTrip, ParseSerialiseParse) {
     // Serialised, every key is written; reading it back gives the same scene and the same text.
     const json out = demo::sceneToJson(first.scene);
     EXPECT_EQ(out["objects"][0]["type"], in["type"]);
-    EXPECT_EQ(out["objects"][0].size(), in.size());
+    EXPECT_EQ(out["objects"][0].size(), in.size() + 2);  // and the defaults of opacity and forward
+    EXPECT_EQ(out["objects"][0]["opacity"], 1.0);
+    EXPECT_EQ(out["objects"][0]["forward"], false);
     const Parsed second = parse(out.dump(2));
     ASSERT_TRUE(second.ok) << second.error;
     expectSameScene(first.scene, second.scene);
@@ -407,8 +409,8 @@ std::vector<Rejection> rejections() {
     addText("RootNumber", "42", "(root): expected a JSON object, got 42");
     addText("RootNull", "null", "(root): expected a JSON object, got null");
     add("UnknownTopLevelKey", with("/fog", json::object()), "fog: unknown key",
-        "(expected camera, sun, ambient, sky, objects, lights, effects, frame_time, camera_cut_frame or "
-        "budget_ms)");
+        "(expected camera, sun, ambient, sky, objects, lights, effects, frame_time, camera_cut_frame, "
+        "budget_ms, particles or volumetrics_lookup)");
     add("UnknownTopLevelKeyNotIdentifier", with("/my key\n", 1), R"(["my key\n"]: unknown key)");
 
     // missing keys

@@ -180,7 +180,8 @@ std::vector<Rejection> rejections() {
         {"CutTooLate", "/camera_cut_frame", 4294967296.0, "camera_cut_frame: expected an integer in"},
         {"TopUnknownKey", "/frametime", 0.01,
          "frametime: unknown key (expected camera, sun, ambient, sky, "
-         "objects, lights, effects, frame_time, camera_cut_frame or budget_ms)"},
+         "objects, lights, effects, frame_time, camera_cut_frame, budget_ms, particles or "
+         "volumetrics_lookup)"},
         {"LightVelocityTooFast",
          "/lights/0/velocity",
          {0, 0, -1e5},

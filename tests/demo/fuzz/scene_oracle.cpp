@@ -2,6 +2,7 @@
 
 #include "core/checks.h"
 #include "host/camera_math.h"
+#include "host/forward_draws.h"
 #include "host/local_shadows.h"
 #include "host/scene_mesh.h"
 #include "scene/motion.h"
@@ -80,6 +81,9 @@ std::string frameProblem(const Scene& scene, double timeSeconds, VkExtent2D exte
     frame.fog = scene.fog;
     frame.froxelFog = froxelFogSettings(scene);  // as renderer_frame.cpp passes it
     frame.atmosphere = scene.atmosphere;
+    // The volumetrics lookup as renderer_frame.cpp turns it on (postfxInputs).
+    frame.volumetricsLookup = scene.volumetricsLookup;
+    frame.volumetricsLookup.enabled = hasForwardDraws(scene);
     // The lights and their shadows as renderer_frame.cpp passes them (postfxInputs), in an atlas within
     // the renderer's limit.
     const LocalShadowLayout shadows = layoutLocalShadows(scene.lights, kMaxShadowAtlasEdge);
@@ -110,6 +114,14 @@ std::string frameProblem(const Scene& scene, double timeSeconds, VkExtent2D exte
 std::string stateProblem(const Scene& scene, double timeSeconds) {
     for (bool infiniteFar : {false, true})
         if (std::string p = meshProblem(scene, infiniteFar); !p.empty()) return p;
+    // The forward pass's particles (renderer_frame.cpp, recordForward): finite quads, in range of
+    // its draws.
+    const ForwardFrame forward = buildForwardFrame(scene, buildSceneMesh(scene, false).draws, timeSeconds);
+    for (const MeshVertex& v : forward.particleVertices)
+        if (!postfx::core::allFinite(v.position) || !postfx::core::allFinite(v.normal))
+            return "particles: a vertex is not finite";
+    for (const ForwardDraw& d : forward.draws)
+        if (!std::isfinite(d.distance) || !std::isfinite(d.opacity)) return "forward: a draw is not finite";
 
     for (uint32_t mapSize : {1u, 2048u, 16384u}) {
         const ShadowFit fit = fitShadowMap(scene, mapSize);
