@@ -114,8 +114,7 @@ bool ForwardPass::create(const VulkanHost& host, const GpuImage& hdr, VkDescript
                  error))
         return false;
     particleBuffers_.resize(framesInFlight);
-    return createPipeline(device, spirv::forward_frag, fogged_, error) &&
-           createPipeline(device, spirv::forward_frag_FORWARD_UNFOGGED, unfogged_, error);
+    return createPipeline(device, spirv::forward_frag, pipeline_, error);
 }
 
 bool ForwardPass::createPipeline(VkDevice device, std::span<const uint32_t> fragment, VkPipeline& out,
@@ -193,8 +192,7 @@ bool ForwardPass::createPipeline(VkDevice device, std::span<const uint32_t> frag
 }
 
 void ForwardPass::destroy(VkDevice device) {
-    for (VkPipeline p : {fogged_, unfogged_})
-        if (p) vkDestroyPipeline(device, p, nullptr);
+    if (pipeline_) vkDestroyPipeline(device, pipeline_, nullptr);
     if (layout_) vkDestroyPipelineLayout(device, layout_, nullptr);
     if (lookupPool_) vkDestroyDescriptorPool(device, lookupPool_, nullptr);
     if (lookupLayout_) vkDestroyDescriptorSetLayout(device, lookupLayout_, nullptr);
@@ -233,12 +231,10 @@ void ForwardPass::record(VkCommandBuffer cmd, size_t slot, const ForwardFrame& f
     rbi.framebuffer = framebuffer_;
     rbi.renderArea = {{0, 0}, extent_};
     vkCmdBeginRenderPass(cmd, &rbi, VK_SUBPASS_CONTENTS_INLINE);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, in.fogged ? fogged_ : unfogged_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &in.lightingSet, 0, nullptr);
-    if (in.fogged) {
-        vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, shared::kForwardLookupSet, 1,
-                                &lookupSets_[slot], 0, nullptr);
-    }
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, shared::kForwardLookupSet, 1,
+                            &lookupSets_[slot], 0, nullptr);
     const VkDeviceSize offset = 0;
     vkCmdBindIndexBuffer(cmd, in.indices->buffer, 0, VK_INDEX_TYPE_UINT32);
     int bound = -1;  // 0: the scene mesh's vertices, 1: the particles'

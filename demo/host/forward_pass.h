@@ -35,7 +35,6 @@ public:
         VkDescriptorSet lightingSet = VK_NULL_HANDLE;
         const GpuBuffer* vertices = nullptr;  // the scene mesh
         const GpuBuffer* indices = nullptr;
-        bool fogged = true;  // false: without postfx's volumetrics (set 1 not bound)
         glm::vec4 cloudShadowU{0.0f, 0.0f, 0.0f, -1.0f};  // shared::ForwardPush's rows
         glm::vec4 cloudShadowV{0.0f, 0.0f, 0.0f, -1.0f};
     };
@@ -56,8 +55,7 @@ private:
     VkDescriptorPool lookupPool_ = VK_NULL_HANDLE;
     std::vector<VkDescriptorSet> lookupSets_;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
-    VkPipeline fogged_ = VK_NULL_HANDLE;
-    VkPipeline unfogged_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
     std::vector<GpuBuffer> particleBuffers_;  // host-visible, one per frame in flight
 };
 

@@ -418,12 +418,8 @@ bool Renderer::Impl::recordForward(VkCommandBuffer cmd, const Scene& scene, cons
     bindings.scattering = shared::kForwardBindingLookupScattering;
     bindings.transmittance = shared::kForwardBindingLookupTransmittance;
     if (postfx::Status s = postfx->writeVolumetricsLookup(forward.lookupSet(slot), bindings); !s.ok()) {
-        in.fogged = false;
-        if (!warnedNoLookup) {
-            std::fprintf(stderr, "[demo warning] no volumetrics lookup (%s): transparent surfaces unfogged\n",
-                         s.message.c_str());
-            warnedNoLookup = true;
-        }
+        error = "postfx volumetrics lookup: " + s.message;
+        return false;
     }
     // The clouds' shadow map this frame's postfx wrote, at this frame's rows, when the lighting's binding
     // holds it (otherwise none: rows putting every point outside the map).

@@ -75,7 +75,6 @@ struct Renderer::Impl {
     ForwardPass forward;
     // Set once postfx refused to write its volumetrics lookup: the forward pass draws without it (a
     // warning is printed once).
-    bool warnedNoLookup = false;
 
     std::unique_ptr<postfx::Context> postfx;
     ImageInfo hdrInfo, depthInfo;

@@ -2,7 +2,7 @@
 // (surface_light.glsl), seen through postfx's volumetrics (surface·T + L, postfx/volumetrics.glsl) and
 // blended over the frame with its opacity α: out = (surface·T + L)·α + dst·(1 − α). The depth test is
 // done here against the G-buffer's depth (read as a texture: the depth image stays read-only, no
-// attachment); nothing writes depth. Compiled with FORWARD_UNFOGGED: no volumetrics (set 1 unused).
+// attachment); nothing writes depth.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "demo_shared.h"
@@ -24,14 +24,12 @@ layout(push_constant) uniform PushBlock {
     ForwardPush draw;
 };
 
-#ifndef FORWARD_UNFOGGED
 #define POSTFX_LOOKUP_SET kForwardLookupSet
 #define POSTFX_LOOKUP_BINDING_UNIFORMS kForwardBindingLookupUniforms
 #define POSTFX_LOOKUP_BINDING_SCATTERING kForwardBindingLookupScattering
 #define POSTFX_LOOKUP_BINDING_TRANSMITTANCE kForwardBindingLookupTransmittance
 // Quoted: glslangValidator resolves only quoted includes through its -I directories.
 #include "postfx/volumetrics.glsl"
-#endif
 
 #include "local_shadow.glsl"
 #include "shadow.glsl"
@@ -66,9 +64,7 @@ void main() {
     vec3 irradiance = surfaceIrradiance(inRelative, world, n, kind == kForwardParticle, draw.cloudShadowU,
                                         draw.cloudShadowV);
     vec3 radiance = albedo / kPi * irradiance + albedo * frame.ambient.rgb;
-#ifndef FORWARD_UNFOGGED
     PostfxVolumetrics v = postfxVolumetricsRelative(inRelative);
     radiance = radiance * v.transmittance + v.radiance;
-#endif
     outColor = vec4(min(radiance, vec3(kHalfMax)), alpha);
 }

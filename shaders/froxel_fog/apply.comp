@@ -22,7 +22,6 @@ layout(binding = kFroxelBindingIntegrated) uniform sampler3D integratedVolume;
 #include "froxel_fog/grid.glsl"
 #include "froxel_fog/integrated.glsl"
 
-
 void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(pixel, fog.extent.xy))) return;

@@ -3,7 +3,7 @@
 // drawn opaque (no effects; postfx's froxel fog, ray-marched fog and aerial perspective), a half-transparent
 // quad in homogeneous fog against the closed form, a quad in front of the clouds gets none of them, and the
 // transparent scenes render under the validation layer.
-// The tests that need postfx's volumetrics lookup are DISABLED_ until the library builds it (until then
+// The tests that need postfx's volumetrics lookup are  until the library builds it (until then
 // the forward pass draws unfogged): enable them then.
 #include "gpu_test.h"
 #include "host/renderer.h"
@@ -150,7 +150,7 @@ TEST_F(DemoRendererTransparency, ForwardQuadLitAsTheGBufferWithoutEffects) {
 }
 
 // The froxel fog (grid 160x90x128, the lookup's x, y matching it: 160x90x128, near 0.5 m, max 200 m).
-TEST_F(DemoRendererTransparency, DISABLED_ForwardQuadMatchesTheFroxelFog) {
+TEST_F(DemoRendererTransparency, ForwardQuadMatchesTheFroxelFog) {
     demo::Scene scene = quadScene();
     scene.froxelFog.enabled = true;
     scene.froxelFog.density = 0.03f;
@@ -169,7 +169,7 @@ TEST_F(DemoRendererTransparency, DISABLED_ForwardQuadMatchesTheFroxelFog) {
 }
 
 // The ray-marched fog, integrated by the lookup at 160x90x128 (near 0.5 m, max 200 m).
-TEST_F(DemoRendererTransparency, DISABLED_ForwardQuadMatchesTheRayMarchedFog) {
+TEST_F(DemoRendererTransparency, ForwardQuadMatchesTheRayMarchedFog) {
     demo::Scene scene = quadScene();
     scene.fog.enabled = true;
     scene.fog.density = 0.03f;
@@ -187,7 +187,7 @@ TEST_F(DemoRendererTransparency, DISABLED_ForwardQuadMatchesTheRayMarchedFog) {
 }
 
 // The aerial perspective: a quad 2 km away through the atmosphere (lookup 160x90x64, near 1 m, max 10 km).
-TEST_F(DemoRendererTransparency, DISABLED_ForwardQuadMatchesTheAerialPerspective) {
+TEST_F(DemoRendererTransparency, ForwardQuadMatchesTheAerialPerspective) {
     demo::Scene scene = quadScene();
     scene.lights.clear();
     scene.camera.farPlane = 100000.0f;
@@ -205,7 +205,7 @@ TEST_F(DemoRendererTransparency, DISABLED_ForwardQuadMatchesTheAerialPerspective
 // A half-transparent quad at d = 20 m in homogeneous fog lit by the ambient only (sun off), in front of a
 // black wall at D = 60 m: L(t) = L∞ (1 - e^{-σ t}), T(t) = e^{-σ t}, L∞ = albedo · ambient; the pixel is
 // (Q · T(d) + L(d)) · α + L(D) · (1 - α) with Q = albedo_q · ambient.
-TEST_F(DemoRendererTransparency, DISABLED_HalfTransparentQuadInHomogeneousFogIsTheClosedForm) {
+TEST_F(DemoRendererTransparency, HalfTransparentQuadInHomogeneousFogIsTheClosedForm) {
     constexpr double kSigma = 0.04, kD = 20.0, kWall = 60.0, kAlpha = 0.5, kFogAlbedo = 0.9,
                      kQuadAlbedo = 0.7;
     const glm::dvec3 ambient(400.0, 500.0, 600.0);

@@ -39,7 +39,8 @@ layout(set = POSTFX_LOOKUP_SET, binding = POSTFX_LOOKUP_BINDING_UNIFORMS, std140
     PostfxLookupUniforms postfxLookup;
 };
 layout(set = POSTFX_LOOKUP_SET, binding = POSTFX_LOOKUP_BINDING_SCATTERING) uniform sampler3D postfxLookupL;
-layout(set = POSTFX_LOOKUP_SET, binding = POSTFX_LOOKUP_BINDING_TRANSMITTANCE) uniform sampler3D postfxLookupT;
+layout(set = POSTFX_LOOKUP_SET,
+       binding = POSTFX_LOOKUP_BINDING_TRANSMITTANCE) uniform sampler3D postfxLookupT;
 
 struct PostfxVolumetrics {
     vec3 radiance;       // L: light scattered toward the camera in front of the point [pre-exposed radiance]

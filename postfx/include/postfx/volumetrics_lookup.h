@@ -19,19 +19,19 @@
 namespace postfx {
 
 // The ranges of VolumetricsLookupSettings.
-inline constexpr uint32_t kMaxLookupExtentXY = 1024;      // froxels across and down
-inline constexpr uint32_t kMaxLookupExtentZ = 512;        // slices
-inline constexpr uint64_t kMaxLookupFroxels = 1u << 24;   // x·y·z: 256 MiB of images at most
-inline constexpr float kMinLookupNear = 0.01f;            // [m]
-inline constexpr float kMaxLookupNear = 1e5f;             // [m]
-inline constexpr float kMaxLookupDistance = 1e7f;         // [m]
+inline constexpr uint32_t kMaxLookupExtentXY = 1024;     // froxels across and down
+inline constexpr uint32_t kMaxLookupExtentZ = 512;       // slices
+inline constexpr uint64_t kMaxLookupFroxels = 1u << 24;  // x·y·z: 256 MiB of images at most
+inline constexpr float kMinLookupNear = 0.01f;           // [m]
+inline constexpr float kMaxLookupNear = 1e5f;            // [m]
+inline constexpr float kMaxLookupDistance = 1e7f;        // [m]
 
 // FrameInfo::volumetricsLookup. Off (the default): no pass, no image, no memory.
 struct VolumetricsLookupSettings {
     bool enabled = false;
-    // Froxels across, down and along the view [1]: x, y in [1, 1024], z in [2, 512], x·y·z ≤ 2^24. The ray-marched
-    // fog's medium is integrated at this resolution; the other effects are sampled at it (matching the
-    // froxel fog's grid in x and y samples it exactly there).
+    // Froxels across, down and along the view [1]: x, y in [1, 1024], z in [2, 512], x·y·z ≤ 2^24. The
+    // ray-marched fog's medium is integrated at this resolution; the other effects are sampled at it
+    // (matching the froxel fog's grid in x and y samples it exactly there).
     UVec3 extent{160, 90, 64};
     // Where the first slice ends [m], in [0.01, 1e5] and below maxDistance; from the camera to it, (L, T)
     // run linearly from (0, 1). Slices then follow a geometric series up to maxDistance.

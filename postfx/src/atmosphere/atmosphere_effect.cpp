@@ -75,8 +75,8 @@ const core::ComputePipelineDesc kApPass{"atmosphere.aerial_perspective",
                                         spirv::atmosphere_aerial_perspective_comp, kApBindings};
 // [rgba32]: the color format.
 // The volumetrics lookup's part (core/lookup_volume.h).
-const core::ComputePipelineDesc kLookupPass{"atmosphere.lookup", spirv::atmosphere_lookup_comp, kLookupBindings,
-                                            core::kLookupPushBytes};
+const core::ComputePipelineDesc kLookupPass{"atmosphere.lookup", spirv::atmosphere_lookup_comp,
+                                            kLookupBindings, core::kLookupPushBytes};
 const core::ComputePipelineDesc kApplyPass[2] = {
     {"atmosphere.apply", spirv::atmosphere_apply_comp, kApplyBindings},
     {"atmosphere.apply", spirv::atmosphere_apply_comp_COLOR_RGBA32F, kApplyBindings}};
@@ -435,7 +435,8 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         b.pass(kLookupPass, g[0], g[1], g[2]);
         bindLuts();
         b.bind(gpu::kAtmosphereBindingApScattering, apScattering, Use::Sampled, SamplerKind::LinearClamp)
-            .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::Sampled, SamplerKind::LinearClamp);
+            .bind(gpu::kAtmosphereBindingApTransmittance, apTransmittance, Use::Sampled,
+                  SamplerKind::LinearClamp);
         core::bindLookup(b, lookup);
     }
     return Status::success();

@@ -69,12 +69,10 @@ const core::ComputePipelineDesc kUpsample[3] = {
     {"clouds.upsample", spirv::clouds_upsample_comp_COLOR_RGBA32F, kUpsampleBindings},
     {"clouds.upsample", spirv::clouds_upsample_comp_SCATTER_RGBA32F, kUpsampleBindings}};
 // The volumetrics lookup's part (core/lookup_volume.h), reading an RGBA16F or RGBA32F march image.
-constexpr core::Binding kLookupBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
-                                             {gpu::kCloudBindingScatter, kStorage},
-                                             {gpu::kCloudBindingDistance, kStorage},
-                                             core::kLookupUniformsBinding,
-                                             core::kLookupScatteringBinding,
-                                             core::kLookupTransmittanceBinding};
+constexpr core::Binding kLookupBindings[] = {
+    {gpu::kCloudBindingUniforms, kUniform}, {gpu::kCloudBindingScatter, kStorage},
+    {gpu::kCloudBindingDistance, kStorage}, core::kLookupUniformsBinding,
+    core::kLookupScatteringBinding,         core::kLookupTransmittanceBinding};
 const core::ComputePipelineDesc kLookupPass[2] = {
     {"clouds.lookup", spirv::clouds_lookup_comp, kLookupBindings, core::kLookupPushBytes},
     {"clouds.lookup", spirv::clouds_lookup_comp_SCATTER_RGBA32F, kLookupBindings, core::kLookupPushBytes}};

@@ -238,12 +238,13 @@ Status checkVolumetricsLookup(const VolumetricsLookupSettings& s) {
     const uint32_t smallest[3] = {1, 1, 2};
     for (int i = 0; i < 3; ++i)
         if (s.extent[i] < smallest[i] || s.extent[i] > largest[i])
-            return invalid(name + "extent." + "xyz"[i] + ": " + std::to_string(s.extent[i]) + " is outside [" +
-                           std::to_string(smallest[i]) + ", " + std::to_string(largest[i]) + "]");
+            return invalid(name + "extent." + "xyz"[i] + ": " + std::to_string(s.extent[i]) +
+                           " is outside [" + std::to_string(smallest[i]) + ", " + std::to_string(largest[i]) +
+                           "]");
     if (uint64_t(s.extent.x) * s.extent.y * s.extent.z > kMaxLookupFroxels)
-        return invalid(name + "extent: " + std::to_string(s.extent.x) + "x" + std::to_string(s.extent.y) + "x" +
-                       std::to_string(s.extent.z) + " froxels exceed " + std::to_string(kMaxLookupFroxels) +
-                       " (2 × 8 bytes each)");
+        return invalid(name + "extent: " + std::to_string(s.extent.x) + "x" + std::to_string(s.extent.y) +
+                       "x" + std::to_string(s.extent.z) + " froxels exceed " +
+                       std::to_string(kMaxLookupFroxels) + " (2 × 8 bytes each)");
     if (!(s.nearDistance >= kMinLookupNear && s.nearDistance <= kMaxLookupNear))
         return invalid(name + "nearDistance: " + numberText(s.nearDistance) + " is outside [" +
                        numberText(kMinLookupNear) + ", " + numberText(kMaxLookupNear) + "]");

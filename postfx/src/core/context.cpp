@@ -1,8 +1,8 @@
 #include <postfx/context.h>
 
 #include "core/checks.h"
-#include "core/lookup_volume.h"
 #include "core/context_impl.h"
+#include "core/lookup_volume.h"
 #include "effects.h"
 
 #include <string>

@@ -15,8 +15,10 @@ inline constexpr ResourceId kLookupTransmittance{"postfx.lookup_transmittance"};
 inline constexpr ResourceId kLookupUniforms{"postfx.lookup"};
 
 // The bindings of a lookup pass's part of the volume (shaders/common/lookup.glsl), for its layout.
-inline constexpr Binding kLookupUniformsBinding{gpu::kLookupBindingUniforms, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
-inline constexpr Binding kLookupScatteringBinding{gpu::kLookupBindingScattering, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+inline constexpr Binding kLookupUniformsBinding{gpu::kLookupBindingUniforms,
+                                                VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+inline constexpr Binding kLookupScatteringBinding{gpu::kLookupBindingScattering,
+                                                  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
 inline constexpr Binding kLookupTransmittanceBinding{gpu::kLookupBindingTransmittance,
                                                      VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
 inline constexpr uint32_t kLookupPushBytes = sizeof(gpu::LookupPush);

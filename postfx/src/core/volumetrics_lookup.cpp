@@ -28,7 +28,8 @@ Status Context::volumetricsLookup(VolumetricsLookup& out) const {
     const core::FrameGraph::HeldImage scattering = impl.graph.heldImage(core::kLookupScattering.name);
     const core::FrameGraph::HeldImage transmittance = impl.graph.heldImage(core::kLookupTransmittance.name);
     if (!scattering.image || !transmittance.image ||
-        !impl.graph.uniformSlot(core::kLookupUniforms, impl.lookupFrame, out.uniformBuffer, out.uniformOffset))
+        !impl.graph.uniformSlot(core::kLookupUniforms, impl.lookupFrame, out.uniformBuffer,
+                                out.uniformOffset))
         return impl.report(core::invalid("volumetricsLookup: its images are not held"));
     if (Status s = impl.graph.sampler(core::SamplerKind::LinearClamp, out.sampler); !s) return impl.report(s);
     out.frameIndex = impl.lookupFrame;
@@ -44,8 +45,9 @@ Status Context::writeVolumetricsLookup(VkDescriptorSet set, const VolumetricsLoo
     if (!set) return impl_->report(core::invalid("writeVolumetricsLookup: set is VK_NULL_HANDLE"));
     if (bindings.uniforms == bindings.scattering || bindings.uniforms == bindings.transmittance ||
         bindings.scattering == bindings.transmittance)
-        return impl_->report(core::invalid("writeVolumetricsLookup: bindings " + std::to_string(bindings.uniforms) +
-                                           ", " + std::to_string(bindings.scattering) + ", " +
+        return impl_->report(core::invalid("writeVolumetricsLookup: bindings " +
+                                           std::to_string(bindings.uniforms) + ", " +
+                                           std::to_string(bindings.scattering) + ", " +
                                            std::to_string(bindings.transmittance) + " are not distinct"));
     VolumetricsLookup lookup;
     if (Status s = volumetricsLookup(lookup); !s) return s;

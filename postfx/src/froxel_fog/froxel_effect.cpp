@@ -123,8 +123,8 @@ const core::ComputePipelineDesc kApplyPass[2] = {
     {"froxel_fog.apply", spirv::froxel_fog_apply_comp, kApplyBindings},
     {"froxel_fog.apply", spirv::froxel_fog_apply_comp_COLOR_RGBA32F, kApplyBindings}};
 // The volumetrics lookup's part (core/lookup_volume.h).
-const core::ComputePipelineDesc kLookupPass{"froxel_fog.lookup", spirv::froxel_fog_lookup_comp, kLookupBindings,
-                                            core::kLookupPushBytes};
+const core::ComputePipelineDesc kLookupPass{"froxel_fog.lookup", spirv::froxel_fog_lookup_comp,
+                                            kLookupBindings, core::kLookupPushBytes};
 const core::ComputePipelineDesc kNoiseGenerate{"froxel_fog.noise", spirv::common_noise_generate_comp,
                                                kNoiseBindings, sizeof(gpu::NoisePush)};
 
