@@ -225,6 +225,11 @@ void Runner::Impl::recordReadback(VkCommandBuffer cmd) {
 bool Runner::Impl::recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Method method, float stepLength,
                                uint64_t frameIndex, size_t slot, bool withReadback, std::string& error) {
     if (isPostfx(method)) {
+        // The demo's forward pass (transparent surfaces through postfx's lookup), timed when drawn.
+        if (queries && demo::hasForwardDraws(scene)) {
+            vkCmdResetQueryPool(cmd, queries, uint32_t(slot) * 2, 2);
+            renderer->timeForwardPass(queries, uint32_t(slot) * 2);
+        }
         if (!renderer->recordFrame(cmd, scene, frameIndex, error)) return false;
     } else {
 #if POSTFX_BENCH_BASELINES
@@ -329,6 +334,13 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
                 total += t.milliseconds;
             }
             totals.push_back(total);
+            // The host's forward pass, not postfx's: listed as "host.forward", not in the total.
+            uint64_t stamps[2] = {0, 0};
+            if (m.queries && m.timestampMask != 0 && demo::hasForwardDraws(scene) &&
+                vkGetQueryPoolResults(device, m.queries, uint32_t(slot) * 2, 2, sizeof stamps, stamps,
+                                      sizeof(uint64_t), VK_QUERY_RESULT_64_BIT) == VK_SUCCESS)
+                addPass("host.forward",
+                        double((stamps[1] - stamps[0]) & m.timestampMask) * m.timestampPeriodNs * 1e-6);
             return true;
         }
         if (m.timestampMask == 0) return true;

@@ -154,6 +154,10 @@ public:
     // The next recorded frame tells postfx FrameInfo::cameraCut: the view does not continue the previous
     // frame's (the window demo's view reset), so every temporal history is dropped.
     void requestCameraCut();
+    // The next recordFrame writes two timestamps into `pool` at `firstQuery` and `firstQuery + 1` around its
+    // forward pass (the benchmark's timing of the transparent surfaces), when it draws one; the caller
+    // resets them before. A null pool: none.
+    void timeForwardPass(VkQueryPool pool, uint32_t firstQuery);
 
     // postfx's plan (docs/frame-plan.md) for frame `frameIndex` of `scene` as recordFrame(cmd, scene,
     // frameIndex) would record it now (given what postfx already holds, e.g. a generated noise texture).

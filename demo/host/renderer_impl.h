@@ -141,6 +141,8 @@ struct Renderer::Impl {
     bool recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64_t frameIndex,
                      const postfx::ImageInput& fogOutput, std::string& error);
     // The forward pass of `scene` after postfx recorded `frame` (its lookup written into this slot's set).
+    VkQueryPool forwardQueries = VK_NULL_HANDLE;  // timeForwardPass
+    uint32_t forwardFirstQuery = 0;
     bool recordForward(VkCommandBuffer cmd, const Scene& scene, const postfx::FrameInfo& frame,
                        std::string& error);
     // Submits the ended `cmd` on the host's queue, signalling fences[slot] (reset first); a failed
