@@ -55,15 +55,6 @@ postfx::Status FroxelCase::reference(std::vector<float>& out, uint32_t steps) co
     return postfx::reference::renderFroxelFog(in, out);
 }
 
-void FroxelGpuFixture::SetUp() {
-    GpuTest::SetUp();
-    ASSERT_TRUE(host);
-    ASSERT_TRUE(gpu.init(hostHandles()).ok());
-    postfx::ContextCreateInfo info;
-    info.depth.reversedZ = true;
-    ASSERT_TRUE(createContext(context, info).ok());
-}
-
 std::vector<float> FroxelGpuFixture::render(const FroxelCase& c, uint64_t frameIndex) {
     postfx::FrameInfo frame = c.prepared();
     frame.frameIndex = frameIndex;

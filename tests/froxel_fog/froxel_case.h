@@ -33,14 +33,10 @@ FroxelCase froxelCase(uint32_t w, uint32_t h, double cameraY, uint32_t wallColum
 
 // A GPU test of froxel cases: one context (reversed Z, as froxelCase's camera) kept across renders, so
 // that temporal accumulation carries from one render to the next.
-class FroxelGpuFixture : public GpuTest {
+class FroxelGpuFixture : public ReversedZContextTest {
 protected:
-    void SetUp() override;
     // prepared() at `frameIndex`, through the fog harness; a failed record() fails the test.
     std::vector<float> render(const FroxelCase& c, uint64_t frameIndex = 0);
-
-    postfx::core::Gpu gpu;
-    std::unique_ptr<postfx::Context> context;
 };
 
 }  // namespace test
