@@ -38,8 +38,9 @@ demo::Scene frameVariant(const demo::Scene& showcase, const std::string& fog);
 // both on Auto under scene.budgetMs, which the caller sets).
 demo::Scene withPreset(const demo::Scene& scene, const std::string& preset);
 // `scene` with every box and sphere drawn in the demo's forward pass at opacity 0.5 and a smoke emitter: the
-// volumetrics lookup (default size) and the forward pass, timed as "host.forward".
-void withTransparentSurfaces(demo::Scene& scene);
+// volumetrics lookup (default size; at most a column per pixel below 1280 wide) and the forward pass, timed
+// as "host.forward".
+void withTransparentSurfaces(demo::Scene& scene, uint32_t width, uint32_t height);
 // The effect a pass belongs to: its name up to the first '.' ("clouds.march" -> "clouds").
 std::string passEffect(const std::string& pass);
 
