@@ -230,21 +230,14 @@ TEST_F(FrameLookupTest, HomogeneousFogMatchesTheClosedForm) {
         f.sun.illuminance = {0.0f, 0.0f, 0.0f};
         const float sigma = 0.01f;
         const glm::vec3 albedo{0.9f, 0.8f, 0.7f};
-        if (froxel) {
-            f.froxelFog.enabled = true;
-            f.froxelFog.density = sigma;
-            f.froxelFog.heightFalloff = 0.0f;
-            f.froxelFog.albedo = albedo;
-            f.froxelFog.maxDistance = 500.0f;
-            f.froxelFog.noise.enabled = false;
-        } else {
-            f.fog.enabled = true;
-            f.fog.density = sigma;
-            f.fog.heightFalloff = 0.0f;
-            f.fog.albedo = albedo;
-            f.fog.maxDistance = 500.0f;
-            f.fog.noise.enabled = false;
-        }
+        (froxel ? f.froxelFog.enabled : f.fog.enabled) = true;
+        // The medium both fogs share (FogMedium), set once.
+        postfx::FogMedium& medium = froxel ? static_cast<postfx::FogMedium&>(f.froxelFog) : f.fog;
+        medium.density = sigma;
+        medium.heightFalloff = 0.0f;
+        medium.albedo = albedo;
+        medium.maxDistance = 500.0f;
+        medium.noise.enabled = false;
         std::vector<glm::vec4> points;
         const double d = 80.0;
         const FogHarnessImages images = surfaces(
