@@ -12,7 +12,7 @@ if(DEFINE)
     endforeach()
 endif()
 execute_process(
-    COMMAND "${GLSLANG}" -V --target-env vulkan1.1 ${include_args} --depfile "${DEPFILE}"
+    COMMAND "${GLSLANG}" -V --target-env vulkan1.0 ${include_args} --depfile "${DEPFILE}"
             --vn "${VAR}" -o "${OUT}.tmp" "${SRC}"
     RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 # glslangValidator prints the file name on its first line even when all is well.

@@ -148,7 +148,9 @@ std::unique_ptr<VulkanHost> VulkanHost::create(const HostOptions& options, std::
         error = "the Vulkan loader does not support Vulkan 1.1";
         return nullptr;
     }
-    host->apiVersion = loaderVersion >= VK_API_VERSION_1_2 ? VK_API_VERSION_1_2 : VK_API_VERSION_1_1;
+    host->apiVersion = options.apiVersion                    ? options.apiVersion
+                       : loaderVersion >= VK_API_VERSION_1_2 ? VK_API_VERSION_1_2
+                                                             : VK_API_VERSION_1_1;
 
     std::vector<const char*> layers, extensions = options.instanceExtensions;
     VkDebugUtilsMessengerCreateInfoEXT debugInfo = messengerInfo(host.get());
@@ -310,8 +312,9 @@ void VulkanHost::addMessage(std::string message) {
 std::string VulkanHost::deviceDescription() const {
     std::string name = properties.deviceName;
     if (physicalDevice == VK_NULL_HANDLE) return name;  // after destroy()
-    if (properties.apiVersion < VK_API_VERSION_1_2 &&
-        !hasDeviceExtension(physicalDevice, "VK_KHR_driver_properties"))
+    // vkGetPhysicalDeviceProperties2 is Vulkan 1.1's: not on a 1.0 instance.
+    if (apiVersion < VK_API_VERSION_1_1 || (properties.apiVersion < VK_API_VERSION_1_2 &&
+                                            !hasDeviceExtension(physicalDevice, "VK_KHR_driver_properties")))
         return name;
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
     VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};

@@ -19,6 +19,8 @@ struct HostOptions {
     bool validation = false;
     std::vector<const char*> instanceExtensions;  // e.g. from glfwGetRequiredInstanceExtensions
     bool swapchain = false;                       // enable VK_KHR_swapchain on the device
+    // The instance's VkApplicationInfo::apiVersion; 0: 1.2 where the loader has it, else 1.1.
+    uint32_t apiVersion = 0;
     // Optional: the queue family must also present, e.g. wrapping glfwGetPhysicalDevicePresentationSupport.
     // Called after the instance exists, for each candidate (device, graphics+compute family).
     std::function<bool(VkInstance, VkPhysicalDevice, uint32_t queueFamily)> presentSupport;
@@ -48,7 +50,7 @@ public:
     VkQueue queue = VK_NULL_HANDLE;
     VkCommandPool commandPool = VK_NULL_HANDLE;  // of queueFamily, RESET_COMMAND_BUFFER_BIT
     VkPhysicalDeviceProperties properties{};
-    uint32_t apiVersion = 0;  // the instance's VkApplicationInfo::apiVersion (1.2 where available, else 1.1)
+    uint32_t apiVersion = 0;  // the instance's VkApplicationInfo::apiVersion (HostOptions::apiVersion)
     bool validationEnabled = false;
     bool debugUtilsEnabled = false;  // VK_EXT_debug_utils is enabled on the instance (labels work)
 

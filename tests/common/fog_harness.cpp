@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -16,7 +17,85 @@ using postfx::core::GpuImage;
 using postfx::core::ImageTransition;
 
 size_t texelBytes(VkFormat format) {
-    return format == VK_FORMAT_R32G32B32A32_SFLOAT ? 16 : 8;
+    switch (format) {
+        case VK_FORMAT_R32G32B32A32_SFLOAT:
+            return 16;
+        case VK_FORMAT_R16G16B16A16_SFLOAT:
+        case VK_FORMAT_R16G16B16A16_UNORM:
+            return 8;
+        default:
+            return 4;
+    }
+}
+
+bool isFloatTarget(VkFormat format) {
+    return format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R32G32B32A32_SFLOAT;
+}
+
+double srgbEncode(double v) {
+    return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+}
+double srgbDecode(double e) {
+    return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+uint32_t unorm(double v, uint32_t bits) {
+    const double top = double((1u << bits) - 1u);
+    return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * top));
+}
+
+// One texel's RGBA (linear) as `format`'s 32-bit word, and back.
+uint32_t packTexel(const float* rgba, VkFormat format) {
+    const bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB ||
+                      format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
+    uint32_t c[4];
+    switch (format) {
+        case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
+            return glm::packF2x11_1x10(glm::vec3(rgba[0], rgba[1], rgba[2]));
+        case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+        case VK_FORMAT_A2R10G10B10_UNORM_PACK32:
+            for (int k = 0; k < 3; ++k)
+                c[k] = unorm(rgba[k], 10);
+            c[3] = unorm(rgba[3], 2);
+            if (format == VK_FORMAT_A2R10G10B10_UNORM_PACK32) std::swap(c[0], c[2]);
+            return c[0] | c[1] << 10 | c[2] << 20 | c[3] << 30;
+        default:  // 8 bits per channel, R first (B first for B8G8R8A8)
+            for (int k = 0; k < 3; ++k)
+                c[k] = unorm(srgb ? srgbEncode(rgba[k]) : rgba[k], 8);
+            c[3] = unorm(rgba[3], 8);
+            if (format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB)
+                std::swap(c[0], c[2]);
+            return c[0] | c[1] << 8 | c[2] << 16 | c[3] << 24;
+    }
+}
+
+void unpackTexel(uint32_t word, VkFormat format, float* rgba) {
+    const bool srgb = format == VK_FORMAT_R8G8B8A8_SRGB || format == VK_FORMAT_B8G8R8A8_SRGB ||
+                      format == VK_FORMAT_A8B8G8R8_SRGB_PACK32;
+    switch (format) {
+        case VK_FORMAT_B10G11R11_UFLOAT_PACK32: {
+            const glm::vec3 v = glm::unpackF2x11_1x10(word);
+            rgba[0] = v.x, rgba[1] = v.y, rgba[2] = v.z, rgba[3] = 1.0f;
+            return;
+        }
+        case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+        case VK_FORMAT_A2R10G10B10_UNORM_PACK32: {
+            uint32_t c[3] = {word & 1023u, word >> 10 & 1023u, word >> 20 & 1023u};
+            if (format == VK_FORMAT_A2R10G10B10_UNORM_PACK32) std::swap(c[0], c[2]);
+            for (int k = 0; k < 3; ++k)
+                rgba[k] = float(c[k] / 1023.0);
+            rgba[3] = float((word >> 30) / 3.0);
+            return;
+        }
+        default: {
+            uint32_t c[4] = {word & 255u, word >> 8 & 255u, word >> 16 & 255u, word >> 24};
+            if (format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB)
+                std::swap(c[0], c[2]);
+            for (int k = 0; k < 3; ++k)
+                rgba[k] = float(srgb ? srgbDecode(c[k] / 255.0) : c[k] / 255.0);
+            rgba[3] = float(c[3] / 255.0);
+            return;
+        }
+    }
 }
 
 void packColor(const std::vector<float>& rgba, VkFormat format, void* dst) {
@@ -24,9 +103,16 @@ void packColor(const std::vector<float>& rgba, VkFormat format, void* dst) {
         std::memcpy(dst, rgba.data(), rgba.size() * 4);
         return;
     }
-    uint16_t* out = static_cast<uint16_t*>(dst);
-    for (size_t i = 0; i < rgba.size(); ++i)
-        out[i] = glm::packHalf1x16(rgba[i]);
+    if (format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R16G16B16A16_UNORM) {
+        uint16_t* out = static_cast<uint16_t*>(dst);
+        for (size_t i = 0; i < rgba.size(); ++i)
+            out[i] = format == VK_FORMAT_R16G16B16A16_SFLOAT ? glm::packHalf1x16(rgba[i])
+                                                             : uint16_t(unorm(rgba[i], 16));
+        return;
+    }
+    uint32_t* out = static_cast<uint32_t*>(dst);
+    for (size_t i = 0; i < rgba.size() / 4; ++i)
+        out[i] = packTexel(&rgba[i * 4], format);
 }
 
 void unpackColor(const void* src, VkFormat format, size_t count, std::vector<float>& rgba) {
@@ -35,9 +121,15 @@ void unpackColor(const void* src, VkFormat format, size_t count, std::vector<flo
         std::memcpy(rgba.data(), src, count * 4);
         return;
     }
-    const uint16_t* in = static_cast<const uint16_t*>(src);
-    for (size_t i = 0; i < count; ++i)
-        rgba[i] = glm::unpackHalf1x16(in[i]);
+    if (format == VK_FORMAT_R16G16B16A16_SFLOAT || format == VK_FORMAT_R16G16B16A16_UNORM) {
+        const uint16_t* in = static_cast<const uint16_t*>(src);
+        for (size_t i = 0; i < count; ++i)
+            rgba[i] = format == VK_FORMAT_R16G16B16A16_SFLOAT ? glm::unpackHalf1x16(in[i]) : in[i] / 65535.0f;
+        return;
+    }
+    const uint32_t* in = static_cast<const uint32_t*>(src);
+    for (size_t i = 0; i < count / 4; ++i)
+        unpackTexel(in[i], format, &rgba[i * 4]);
 }
 
 ImageTransition to(VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout layout,
@@ -102,7 +194,12 @@ postfx::Status FogHarness::run(postfx::Context& context, const FogHarnessImages&
     postfx::core::ImageDesc cd;
     cd.format = images.colorFormat;
     cd.extent = {w, h, 1};
-    cd.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    cd.usage =
+        images.colorUsage
+            ? images.colorUsage
+            : VkImageUsageFlags(VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
+                                (isFloatTarget(images.colorFormat) ? VK_IMAGE_USAGE_STORAGE_BIT
+                                                                   : VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT));
     GpuImage colorImage, outputImage, depthImage, shadowImage, atlasImage;
     const bool shadow = !images.shadow.empty(), atlas = !images.localShadow.empty();
     const size_t shadowBytes = size_t(images.shadowWidth) * images.shadowHeight * 4;

@@ -18,7 +18,12 @@ namespace test {
 
 struct FogHarnessImages {
     uint32_t width = 0, height = 0;
+    // Any color target postfx takes (RGBA16F/32F, 8-bit UNORM/sRGB, B10G11R11, A2B10G10R10, RGBA16 UNORM):
+    // `color` is packed into it and read back from it (linear values; sRGB encoded and decoded here).
     VkFormat colorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    // Usage of the color (and output) image; 0: STORAGE and TRANSFER_SRC/DST for RGBA16F/32F, the two
+    // transfer bits for the others.
+    VkImageUsageFlags colorUsage = 0;
     std::vector<float> color;  // RGBA
     std::vector<float> depth;  // one per pixel
     VkImageLayout colorLayout = VK_IMAGE_LAYOUT_GENERAL;

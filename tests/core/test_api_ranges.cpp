@@ -132,10 +132,10 @@ void addImageRows(std::vector<Row>& bad, const std::string& name,
                   std::function<postfx::ImageInput&(FrameInfo&)> at) {
     addBad(bad, name + ".image", "null", [at](FrameInfo& f) { at(f).image = VK_NULL_HANDLE; });
     addBad(bad, name + ".view", "null", [at](FrameInfo& f) { at(f).view = VK_NULL_HANDLE; });
-    addBad(bad, name + ".format", "R8G8B8A8_UNORM",
-           [at](FrameInfo& f) { at(f).format = VK_FORMAT_R8G8B8A8_UNORM; });
+    addBad(bad, name + ".format", "R8G8_SNORM", [at](FrameInfo& f) { at(f).format = VK_FORMAT_R8G8_SNORM; });
     addBad(bad, name + ".format", "cast 0x7ffffffe",
            [at](FrameInfo& f) { at(f).format = VkFormat(0x7ffffffe); });
+    addBad(bad, name + ".samples", "4", [at](FrameInfo& f) { at(f).samples = VK_SAMPLE_COUNT_4_BIT; });
     addBad(bad, name + ".extent", "0 wide", [at](FrameInfo& f) { at(f).extent.width = 0; });
     addBad(bad, name + ".extent", "0 high", [at](FrameInfo& f) { at(f).extent.height = 0; });
     addBad(bad, name + ".layout", "UNDEFINED",

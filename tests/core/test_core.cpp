@@ -126,8 +126,8 @@ TEST_F(CoreTest, RejectsBadCreateInfoNamingTheField) {
         EXPECT_EQ(s.code, Result::InvalidArgument) << c.field;
         EXPECT_NE(s.message.find(c.field), std::string::npos) << s.message;
         EXPECT_FALSE(context);
-        ASSERT_EQ(messages.errors.size(), 1u) << c.field;
-        EXPECT_EQ(messages.errors[0], s.message);
+        // Returned, not also sent to the callback: each error reaches the host once.
+        EXPECT_TRUE(messages.errors.empty()) << c.field;
     }
 }
 
@@ -146,7 +146,7 @@ TEST_F(CoreTest, RecordValidatesFrameInputs) {
         {"FrameInfo.commandBuffer", [](postfx::FrameInfo& f) { f.commandBuffer = VK_NULL_HANDLE; }},
         {"FrameInfo.color.image", [](postfx::FrameInfo& f) { f.color.image = VK_NULL_HANDLE; }},
         {"FrameInfo.color.view", [](postfx::FrameInfo& f) { f.color.view = VK_NULL_HANDLE; }},
-        {"FrameInfo.color.format", [](postfx::FrameInfo& f) { f.color.format = VK_FORMAT_R8G8B8A8_UNORM; }},
+        {"FrameInfo.color.format", [](postfx::FrameInfo& f) { f.color.format = VK_FORMAT_R8_UNORM; }},
         {"FrameInfo.color.extent",
          [](postfx::FrameInfo& f) {
              f.color.extent = {0, 8};
@@ -163,12 +163,13 @@ TEST_F(CoreTest, RecordValidatesFrameInputs) {
              f.depth.extent = {8, 8};
          }},
         // Usage flags, formats by name, and the output image: checked whether or not an effect runs.
-        {"FrameInfo.color.usage lacks VK_IMAGE_USAGE_STORAGE_BIT",
+        // Without STORAGE, postfx blits the color into its own image and back (core/target.h).
+        {"FrameInfo.color.usage lacks VK_IMAGE_USAGE_TRANSFER_SRC_BIT",
          [](postfx::FrameInfo& f) { f.color.usage = VK_IMAGE_USAGE_SAMPLED_BIT; }},
         {"FrameInfo.depth.usage lacks VK_IMAGE_USAGE_SAMPLED_BIT",
          [](postfx::FrameInfo& f) { f.depth.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT; }},
-        {"FrameInfo.color.format VK_FORMAT_R8G8B8A8_UNORM is not supported",
-         [](postfx::FrameInfo& f) { f.color.format = VK_FORMAT_R8G8B8A8_UNORM; }},
+        {"FrameInfo.color.format VK_FORMAT_R8_UNORM is not supported",
+         [](postfx::FrameInfo& f) { f.color.format = VK_FORMAT_R8_UNORM; }},
         {"FrameInfo.output is FrameInfo.color", [](postfx::FrameInfo& f) { f.output = f.color; }},
         {"FrameInfo.output.extent 8x8 differs",
          [](postfx::FrameInfo& f) {

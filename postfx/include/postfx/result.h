@@ -31,8 +31,9 @@ struct [[nodiscard]] Status {
 
 enum class MessageSeverity { Info, Warning, Error };
 
-// Optional host callback: postfx reports every error it returns (and warnings it does not return,
-// such as a feature it falls back from) through it. Called on the thread that made the postfx call.
+// Optional host callback for what postfx cannot return: warnings (a feature it falls back from, timings
+// measured elsewhere that it skips). Errors are returned as a Status and never sent here as well, so a
+// host that prints both sees each message once. Called on the thread that made the postfx call.
 using MessageCallback = void (*)(MessageSeverity severity, const char* message, void* userData);
 
 }  // namespace postfx

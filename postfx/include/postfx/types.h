@@ -45,6 +45,10 @@ struct ImageInput {
     // The usage the image was created with (VkImageCreateInfo::usage): postfx checks that it allows what
     // postfx does with the image (STORAGE for color and output, SAMPLED for depth and the shadow map).
     VkImageUsageFlags usage = 0;
+    // The image's sample count (VkImageCreateInfo::samples). postfx reads and writes single-sampled
+    // images only: a host with multisampled color or depth resolves them first; anything else is refused
+    // by name (docs/integration.md, "Depth image").
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
 
     bool present() const { return image != VK_NULL_HANDLE; }
 };

@@ -406,7 +406,9 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         return Status::success();
     }
     core::ImageDesc marchDesc;
-    marchDesc.format = frame.color.format;
+    // The composite's format (postfx.target's when the host's color is another: core/target.h).
+    marchDesc.format = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT ? VK_FORMAT_R32G32B32A32_SFLOAT
+                                                                           : VK_FORMAT_R16G16B16A16_SFLOAT;
     marchDesc.extent = {march.x, march.y, 1};
     marchDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
     const core::ImageRef scatterImage = b.transientImage(kScatter, marchDesc);

@@ -31,11 +31,16 @@ void BarrierBatch::add(const ImageTransition& t) {
 }
 
 void BarrierBatch::computeMemory(VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+    memory(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, srcAccess, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, dstAccess);
+}
+
+void BarrierBatch::memory(VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                          VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
     memory_ = true;
     memorySrc_ |= srcAccess;
     memoryDst_ |= dstAccess;
-    src_ |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-    dst_ |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    src_ |= srcStage;
+    dst_ |= dstStage;
 }
 
 void BarrierBatch::record(const Gpu& gpu, VkCommandBuffer cmd) {
@@ -51,8 +56,17 @@ void BarrierBatch::record(const Gpu& gpu, VkCommandBuffer cmd) {
     memorySrc_ = memoryDst_ = 0;
 }
 
+VkPipelineStageFlags stagesOfAccess(VkAccessFlags access) {
+    VkPipelineStageFlags stages = 0;
+    if (access & (VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT))
+        stages |= VK_PIPELINE_STAGE_TRANSFER_BIT;
+    if (access & ~(VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT) || !stages)
+        stages |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    return stages;
+}
+
 ImageTransition acquireHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout hostLayout,
-                                 VkImageLayout layout, VkAccessFlags computeAccess) {
+                                 VkImageLayout layout, VkAccessFlags access) {
     ImageTransition t;
     t.image = image;
     t.aspect = aspect;
@@ -60,21 +74,22 @@ ImageTransition acquireHostImage(VkImage image, VkImageAspectFlags aspect, VkIma
     t.newLayout = layout;
     t.srcStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
     t.srcAccess = VK_ACCESS_MEMORY_WRITE_BIT;
-    t.dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-    t.dstAccess = computeAccess;
+    t.dstStage = stagesOfAccess(access);
+    t.dstAccess = access;
     return t;
 }
 
 ImageTransition releaseHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout layout,
-                                 VkImageLayout hostLayout, VkAccessFlags computeAccess) {
+                                 VkImageLayout hostLayout, VkAccessFlags access) {
     ImageTransition t;
     t.image = image;
     t.aspect = aspect;
     t.oldLayout = layout;
     t.newLayout = hostLayout;
-    t.srcStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    t.srcStage = stagesOfAccess(access);
     // Reads need no availability, but a layout change must still wait for them (execution dependency).
-    t.srcAccess = computeAccess & (VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+    t.srcAccess =
+        access & (VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
     t.dstStage = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
     t.dstAccess = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
     return t;
@@ -110,8 +125,9 @@ bool sampleableLayout(VkImageLayout l) {
 HostImageUse useHostImage(VkImage image, VkFormat format, VkImageLayout hostLayout, bool storage,
                           VkAccessFlags access) {
     const VkImageLayout layout =
-        storage ? VK_IMAGE_LAYOUT_GENERAL
-                : (sampleableLayout(hostLayout) ? hostLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        storage || (access & (VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT))
+            ? VK_IMAGE_LAYOUT_GENERAL
+            : (sampleableLayout(hostLayout) ? hostLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     // Layout transitions of depth/stencil images cover both aspects; the host's view selects depth.
     const VkImageAspectFlags aspect = aspectOfFormat(format);
     return {layout, acquireHostImage(image, aspect, hostLayout, layout, access),

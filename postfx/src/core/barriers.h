@@ -32,6 +32,9 @@ public:
     void add(const ImageTransition& t);
     // A global memory barrier compute -> compute: `srcAccess` (0: execution only) -> `dstAccess`.
     void computeMemory(VkAccessFlags srcAccess, VkAccessFlags dstAccess);
+    // The same between any stages (a transfer pass's).
+    void memory(VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                VkAccessFlags dstAccess);
     bool empty() const { return images_.empty() && !memory_; }
     // Records the batch (nothing when empty) and empties it.
     void record(const Gpu& gpu, VkCommandBuffer cmd);
@@ -43,12 +46,15 @@ private:
     VkAccessFlags memorySrc_ = 0, memoryDst_ = 0;
 };
 
-// A host image (in `hostLayout`) about to be accessed by postfx compute passes in `layout`.
+// The stages of postfx's passes that `access` names: transfer for TRANSFER_*, compute for the others.
+VkPipelineStageFlags stagesOfAccess(VkAccessFlags access);
+// A host image (in `hostLayout`) about to be accessed by postfx's passes in `layout` with `access`
+// (shader or transfer accesses).
 ImageTransition acquireHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout hostLayout,
-                                 VkImageLayout layout, VkAccessFlags computeAccess);
-// The same image handed back to the host in `hostLayout` after postfx's compute access.
+                                 VkImageLayout layout, VkAccessFlags access);
+// The same image handed back to the host in `hostLayout` after postfx's `access`.
 ImageTransition releaseHostImage(VkImage image, VkImageAspectFlags aspect, VkImageLayout layout,
-                                 VkImageLayout hostLayout, VkAccessFlags computeAccess);
+                                 VkImageLayout hostLayout, VkAccessFlags access);
 
 VkImageAspectFlags aspectOfFormat(VkFormat format);
 
@@ -58,8 +64,8 @@ struct HostImageUse {
     ImageTransition acquire, release;
 };
 
-// Storage images (color, output) are used in GENERAL; sampled ones (depth, shadow map) in their own
-// layout when a shader may sample it there, else in SHADER_READ_ONLY_OPTIMAL.
+// Storage images (color, output) and the images of transfer passes are used in GENERAL; sampled ones (depth,
+// shadow map) in their own layout when a shader may sample it there, else in SHADER_READ_ONLY_OPTIMAL.
 HostImageUse useHostImage(VkImage image, VkFormat format, VkImageLayout hostLayout, bool storage,
                           VkAccessFlags access);
 

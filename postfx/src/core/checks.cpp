@@ -1,5 +1,7 @@
 #include "core/checks.h"
 
+#include "core/target.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <sstream>
@@ -46,10 +48,6 @@ std::string formatName(VkFormat format) {
 namespace core {
 namespace {
 
-bool isColorFormat(VkFormat f) {
-    return f == VK_FORMAT_R16G16B16A16_SFLOAT || f == VK_FORMAT_R32G32B32A32_SFLOAT;
-}
-
 bool isDepthFormat(VkFormat f) {
     return f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM || f == VK_FORMAT_D24_UNORM_S8_UINT ||
            f == VK_FORMAT_X8_D24_UNORM_PACK32 || f == VK_FORMAT_D32_SFLOAT_S8_UINT;
@@ -79,6 +77,10 @@ Status checkImage(const ImageInput& image, const ImageRule& rule) {
     if (!rule.formatOk(image.format))
         return invalid(n + ".format " + formatName(image.format) + " is not supported (expected " +
                        rule.formats + ")");
+    if (image.samples != VK_SAMPLE_COUNT_1_BIT)
+        return invalid(n + ".samples " + std::to_string(uint32_t(image.samples)) +
+                       ": postfx reads single-sampled images only; resolve the image first (for depth: "
+                       "VK_KHR_depth_stencil_resolve, or a pass taking the nearest sample)");
     if (image.extent.width == 0 || image.extent.height == 0)
         return invalid(n + ".extent is " + extentText(image.extent));
     if (rule.maxExtent &&
@@ -89,7 +91,7 @@ Status checkImage(const ImageInput& image, const ImageRule& rule) {
         return invalid(n + ".layout " + std::to_string(int64_t(image.layout)) + " is not a VkImageLayout");
     if (image.layout == VK_IMAGE_LAYOUT_UNDEFINED || image.layout == VK_IMAGE_LAYOUT_PREINITIALIZED)
         return invalid(n + ".layout is UNDEFINED/PREINITIALIZED: postfx needs the image's contents");
-    if (!(image.usage & rule.usage))
+    if (rule.usage && !(image.usage & rule.usage))
         return invalid(n + ".usage lacks " + usageName(rule.usage) + " (postfx " +
                        (rule.usage == VK_IMAGE_USAGE_STORAGE_BIT ? "reads and writes it as a storage image"
                                                                  : "samples it") +
@@ -98,6 +100,33 @@ Status checkImage(const ImageInput& image, const ImageRule& rule) {
 }
 
 // Length >= 1e-6, in double: a float dot product of a vector like (1e30, 0, 0) would overflow.
+// In place (core/target.h): color and output STORAGE. Through postfx.target: the color TRANSFER_SRC (it is
+// blitted in), the image written (the output, else the color) TRANSFER_DST.
+Status checkTargetUsage(const FrameInfo& frame) {
+    const bool separate = frame.output.present();
+    if (compositesInPlace(frame.color)) {
+        if (separate && !(frame.output.usage & VK_IMAGE_USAGE_STORAGE_BIT))
+            return invalid(
+                "FrameInfo.output.usage lacks VK_IMAGE_USAGE_STORAGE_BIT (postfx writes it as a "
+                "storage image, as the color; set ImageInput::usage to the usage the image was "
+                "created with)");
+        return Status::success();
+    }
+    const std::string why = " (FrameInfo.color is " + formatName(frame.color.format) +
+                            (frame.color.usage & VK_IMAGE_USAGE_STORAGE_BIT ? "" : " without STORAGE usage") +
+                            ": postfx composites in its own RGBA16F image, blitted from the color and back "
+                            "into " +
+                            (separate ? "the output" : "the color") +
+                            "; set ImageInput::usage to the usage the image was created with)";
+    if (!(frame.color.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT))
+        return invalid("FrameInfo.color.usage lacks VK_IMAGE_USAGE_TRANSFER_SRC_BIT" + why);
+    const ImageInput& written = separate ? frame.output : frame.color;
+    if (!(written.usage & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
+        return invalid(std::string(separate ? "FrameInfo.output" : "FrameInfo.color") +
+                       ".usage lacks VK_IMAGE_USAGE_TRANSFER_DST_BIT" + why);
+    return Status::success();
+}
+
 bool longEnough(const Vec3& v) {
     const glm::dvec3 d(v);
     return glm::dot(d, d) >= 1e-12;
@@ -151,6 +180,50 @@ Status checkRange(const char* field, double v, double lo, double hi) {
         return invalid(std::string(field) + ": " + numberText(v) + " is outside [" + numberText(lo) + ", " +
                        numberText(hi) + "]");
     return Status::success();
+}
+
+ProjectedDepth projectedDepth(const Mat4& projection) {
+    // The view-space points of the view's centre at depth 0 and 1 (Vulkan NDC), and their distances; a
+    // point at infinity (w = 0: an infinite far plane) has none.
+    const glm::dmat4 inverse = glm::inverse(glm::dmat4(projection));
+    double distance[2];
+    for (int z = 0; z < 2; ++z) {
+        const glm::dvec4 p = inverse * glm::dvec4(0.0, 0.0, double(z), 1.0);
+        const double length = glm::length(glm::dvec3(p));
+        distance[z] = std::abs(p.w) > 1e-12 * length ? length / std::abs(p.w) : INFINITY;
+    }
+    ProjectedDepth out;
+    out.reversedZ = distance[1] < distance[0];
+    out.near = std::min(distance[0], distance[1]);
+    out.far = std::max(distance[0], distance[1]);
+    return out;
+}
+
+namespace {
+
+std::string conventionText(bool reversedZ, bool infiniteFar) {
+    return std::string(reversedZ ? "reversed Z" : "standard Z") +
+           (infiniteFar ? ", infinite far" : ", finite far");
+}
+
+}  // namespace
+
+Status checkDepthConvention(const Mat4& projection, const DepthConvention& depth) {
+    // Perspective only: an affine projection (w independent of the point, the default identity among
+    // them) has no distance that a depth of 0 or 1 must mean.
+    if (projection[0][3] == 0.0f && projection[1][3] == 0.0f && projection[2][3] == 0.0f)
+        return Status::success();
+    const ProjectedDepth p = projectedDepth(projection);
+    // A far plane beyond 1e5 near distances passes for infinite; one at infinity is never finite.
+    const bool mismatch = p.reversedZ != depth.reversedZ || (depth.infiniteFar && p.far < 1e5 * p.near) ||
+                          (!depth.infiniteFar && std::isinf(p.far));
+    if (!mismatch) return Status::success();
+    const std::string projected = conventionText(p.reversedZ, std::isinf(p.far)) + ": depth " +
+                                  (p.reversedZ ? "1" : "0") + " at " + numberText(p.near) + ", depth " +
+                                  (p.reversedZ ? "0" : "1") + " at " + numberText(p.far);
+    return invalid("ContextCreateInfo.depth (" + conventionText(depth.reversedZ, depth.infiniteFar) +
+                   ") differs from FrameInfo.camera.projection (" + projected +
+                   " view units): create the context with the projection's convention");
 }
 
 Status checkCamera(const CameraInput& camera, const std::string& prefix) {
@@ -259,9 +332,8 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
         return invalid("FrameInfo.structSize " + std::to_string(frame.structSize) +
                        " differs from the library's " + std::to_string(sizeof(FrameInfo)) +
                        ": the host was compiled with another postfx header or struct packing");
-    const ImageRule color{"FrameInfo.color", isColorFormat,
-                          "VK_FORMAT_R16G16B16A16_SFLOAT or VK_FORMAT_R32G32B32A32_SFLOAT",
-                          VK_IMAGE_USAGE_STORAGE_BIT, &info.maxExtent};
+    // The color's usage decides how postfx composites into it (core/target.h): checked below.
+    const ImageRule color{"FrameInfo.color", isBlitTargetFormat, blitTargetFormatNames(), 0, &info.maxExtent};
     if (Status s = checkImage(frame.color, color); !s) return s;
     const ImageRule depth{"FrameInfo.depth", isDepthFormat,
                           "VK_FORMAT_D32_SFLOAT, VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32, "
@@ -274,10 +346,8 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
     if (frame.output.present()) {
         if (frame.output.image == frame.color.image)
             return invalid("FrameInfo.output is FrameInfo.color: leave output empty to composite in place");
-        if (Status s =
-                checkImage(frame.output, {"FrameInfo.output", isColorFormat,
-                                          "VK_FORMAT_R16G16B16A16_SFLOAT or VK_FORMAT_R32G32B32A32_SFLOAT",
-                                          VK_IMAGE_USAGE_STORAGE_BIT, &info.maxExtent});
+        if (Status s = checkImage(frame.output, {"FrameInfo.output", isBlitTargetFormat,
+                                                 blitTargetFormatNames(), 0, &info.maxExtent});
             !s)
             return s;
         if (frame.output.format != frame.color.format)
@@ -287,12 +357,14 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
             return invalid("FrameInfo.output.extent " + extentText(frame.output.extent) +
                            " differs from FrameInfo.color.extent " + extentText(frame.color.extent));
     }
+    if (Status s = checkTargetUsage(frame); !s) return s;
     if (Status s = checkTime(frame.timeSeconds, "FrameInfo.timeSeconds"); !s) return s;
     if (Status s = checkVolumetricsLookup(frame.volumetricsLookup); !s) return s;
     if (!(frame.budgetMs >= 0.0f && frame.budgetMs <= kMaxBudgetMs))
         return invalid("FrameInfo.budgetMs: " + numberText(frame.budgetMs) + " is outside [0, " +
                        numberText(kMaxBudgetMs) + "]");
     if (Status s = checkCamera(frame.camera, "FrameInfo.camera"); !s) return s;
+    if (Status s = checkDepthConvention(frame.camera.projection, info.depth); !s) return s;
     if (Status s = checkLighting(frame.sun, frame.ambient, "FrameInfo."); !s) return s;
     const ShadowMapInput& shadow = frame.shadowMap;
     if (shadow.image.present()) {

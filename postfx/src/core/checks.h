@@ -55,6 +55,18 @@ inline constexpr double kMaxPreExposedLight = 1e7, kMaxPreExposedIntensity = 1e9
 // "1920x1080"
 std::string extentText(VkExtent2D extent);
 
+// What a projection does with depth, read from it: which of Vulkan's depths 0 and 1 is nearer, and the
+// distances [view units] of the view's centre at the near and far ends (far: +∞ for an infinite far plane).
+struct ProjectedDepth {
+    bool reversedZ = false;
+    double near = 0.0, far = 0.0;
+};
+ProjectedDepth projectedDepth(const Mat4& projection);
+// InvalidArgument naming ContextCreateInfo.depth and FrameInfo.camera.projection when a perspective
+// projection maps depth another way than the context was created for (a far plane beyond 1e5 near
+// distances passes for infinite); an affine (orthographic) projection is not checked.
+Status checkDepthConvention(const Mat4& projection, const DepthConvention& depth);
+
 // Number as the messages print it (shortest round-trip form: "1e+07", "0.5").
 std::string numberText(double value);
 

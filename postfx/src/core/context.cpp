@@ -3,6 +3,7 @@
 #include "core/checks.h"
 #include "core/context_impl.h"
 #include "core/lookup_volume.h"
+#include "core/target.h"
 #include "effects.h"
 
 #include <string>
@@ -45,12 +46,6 @@ Status validateCreateInfo(const ContextCreateInfo& info) {
 }
 
 }  // namespace
-
-Status Context::Impl::report(Status status) const {
-    if (!status.ok() && info.messageCallback)
-        info.messageCallback(MessageSeverity::Error, status.message.c_str(), info.messageUserData);
-    return status;
-}
 
 void Context::Impl::warn(const std::string& message) const {
     if (info.messageCallback)
@@ -101,50 +96,44 @@ void Context::Impl::addEffect(std::unique_ptr<core::Effect> effect) {
 
 Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& out) {
     out.reset();
-    auto fail = [&](Status s) {
-        if (info.messageCallback)
-            info.messageCallback(MessageSeverity::Error, s.message.c_str(), info.messageUserData);
-        return s;
-    };
-    if (Status s = validateCreateInfo(info); !s) return fail(s);
+    if (Status s = validateCreateInfo(info); !s) return s;
 
     auto impl = std::make_unique<Impl>();
     impl->info = info;
     core::Gpu& gpu = impl->gpu;
-    if (Status s = gpu.init(info); !s) return fail(s);
+    if (Status s = gpu.init(info); !s) return s;
 
     // postfx creates images as large as maxExtent (an effect's reduced-resolution targets, the copy).
     const uint32_t maxDimension = gpu.properties.limits.maxImageDimension2D;
     if (info.maxExtent.width > maxDimension || info.maxExtent.height > maxDimension)
-        return fail(core::invalid("ContextCreateInfo.maxExtent " + core::extentText(info.maxExtent) +
-                                  " exceeds the device's maxImageDimension2D " +
-                                  std::to_string(maxDimension)));
+        return core::invalid("ContextCreateInfo.maxExtent " + core::extentText(info.maxExtent) +
+                             " exceeds the device's maxImageDimension2D " + std::to_string(maxDimension));
 
     uint32_t familyCount = 0;
     gpu.fn.vkGetPhysicalDeviceQueueFamilyProperties(info.physicalDevice, &familyCount, nullptr);
     std::vector<VkQueueFamilyProperties> families(familyCount);
     gpu.fn.vkGetPhysicalDeviceQueueFamilyProperties(info.physicalDevice, &familyCount, families.data());
     if (info.queueFamilyIndex >= familyCount)
-        return fail(
-            core::invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
-                          " is out of range (the device has " + std::to_string(familyCount) + " families)"));
+        return core::invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
+                             " is out of range (the device has " + std::to_string(familyCount) +
+                             " families)");
     const VkQueueFamilyProperties& family = families[info.queueFamilyIndex];
     if (!(family.queueFlags & VK_QUEUE_COMPUTE_BIT))
-        return fail(core::invalid("ContextCreateInfo.queueFamilyIndex " +
-                                  std::to_string(info.queueFamilyIndex) + " does not support compute"));
+        return core::invalid("ContextCreateInfo.queueFamilyIndex " + std::to_string(info.queueFamilyIndex) +
+                             " does not support compute");
 
     if (Status s =
             impl->timer.create(gpu, info.framesInFlight, info.gpuTimings ? family.timestampValidBits : 0);
         !s)
-        return fail(s);
+        return s;
     if (info.gpuTimings && family.timestampValidBits == 0)
         impl->warn("queue family " + std::to_string(info.queueFamilyIndex) +
                    " has no timestamps: no GPU timings");
     for (uint32_t i = 0; i < info.framesInFlight; ++i) {
         impl->arenas.push_back(std::make_unique<core::DescriptorArena>());
-        if (Status s = impl->arenas.back()->create(gpu, kDescriptorSetsPerFrame); !s) return fail(s);
+        if (Status s = impl->arenas.back()->create(gpu, kDescriptorSetsPerFrame); !s) return s;
     }
-    if (Status s = impl->graph.create(gpu, info.framesInFlight, info.depth); !s) return fail(s);
+    if (Status s = impl->graph.create(gpu, info.framesInFlight, info.depth); !s) return s;
     for (std::unique_ptr<core::Effect>& effect : makeEffects(gpu))
         impl->addEffect(std::move(effect));
     out.reset(new Context(std::move(impl)));
@@ -162,6 +151,7 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
                                    FrameInfo& resolved, core::Frame& out,
                                    std::vector<AutoUse>* measuring) const {
     if (Status s = core::checkSharedInputs(frame, info); !s) return s;
+    if (Status s = core::checkTargetFeatures(gpu, frame); !s) return s;
     // Each active effect's preset replaces its knobs before its settings are checked; Auto picks the
     // preset (reading finished frames' timings, so before the timer starts this frame).
     resolved = frame;
@@ -217,11 +207,13 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
 
     graph.begin(out, resolved);
     out.shareDepth = activeCount >= 2;
+    core::declareTargetLoad(graph, out);
     for (size_t e = 0; e < effects.size(); ++e) {
         if (!effects[e]->active(resolved)) continue;
         core::FrameBuilder builder(graph, out, int(e));
         if (Status s = effects[e]->declare(builder); !s) return s;
     }
+    core::declareTargetStore(graph, out);
     core::declareLookupClear(graph, out);
     graph.compile(out);
     return Status::success();
@@ -235,18 +227,17 @@ Status Context::plan(const FrameInfo& frame, FramePlan& out) const {
     core::AutoQuality autoQuality = impl.autoQuality;
     FrameInfo resolved;
     core::Frame declared;
-    if (Status s = impl.prepareFrame(frame, autoQuality, resolved, declared, nullptr); !s)
-        return impl.report(s);
+    if (Status s = impl.prepareFrame(frame, autoQuality, resolved, declared, nullptr); !s) return s;
     impl.graph.plan(declared, out);
     return Status::success();
 }
 
 Status Context::record(const FrameInfo& frame) {
     Impl& impl = *impl_;
-    if (!frame.commandBuffer) return impl.report(core::invalid("FrameInfo.commandBuffer is VK_NULL_HANDLE"));
+    if (!frame.commandBuffer) return core::invalid("FrameInfo.commandBuffer is VK_NULL_HANDLE");
     std::vector<Impl::AutoUse> measuring;
     if (Status s = impl.prepareFrame(frame, impl.autoQuality, impl.resolved, impl.frame, &measuring); !s)
-        return impl.report(s);
+        return s;
     for (const Impl::AutoUse& m : measuring)
         if (m.preset != ~0u && !impl.timer.enabled() && !impl.warnedAutoWithoutTimings) {
             impl.warnedAutoWithoutTimings = true;
@@ -256,12 +247,12 @@ Status Context::record(const FrameInfo& frame) {
         }
 
     core::DescriptorArena& arena = impl.arena(frame.frameIndex);
-    if (Status s = arena.beginFrame(); !s) return impl.report(s);
+    if (Status s = arena.beginFrame(); !s) return s;
     impl.retirement.collect(frame.frameIndex, impl.info.framesInFlight);
     if (Status s = impl.graph.record(impl.frame, frame.commandBuffer, frame.frameIndex, arena, impl.timer,
                                      impl.retirement);
         !s)
-        return impl.report(s);
+        return s;
     for (const Impl::AutoUse& m : measuring)
         if (m.preset != ~0u) impl.autoQuality.recorded(frame.frameIndex, m.key, m.preset);
     impl.autoQuality.frameRecorded(frame.frameIndex);
@@ -290,8 +281,7 @@ Status Context::budgetChoice(BudgetChoice& out) const {
 Status Context::autoQuality(std::string_view effect, uint32_t& preset) const {
     const int e = impl_->effectIndex(effect);
     if (e < 0 || impl_->effects[size_t(e)]->presetCount() == 0)
-        return impl_->report(
-            core::invalid("autoQuality: '" + std::string(effect) + "' is not an effect with presets"));
+        return core::invalid("autoQuality: '" + std::string(effect) + "' is not an effect with presets");
     return impl_->autoQuality.chosen(e, preset);
 }
 
@@ -310,20 +300,16 @@ Status Context::setAutoQualityTimings(const std::vector<AutoQualityTimings>& tim
         const std::string name = "auto quality timings[" + std::to_string(k) + "]";
         const int e = impl_->effectIndex(t.effect);
         if (e < 0 || impl_->effects[size_t(e)]->presetCount() == 0)
-            return impl_->report(
-                core::invalid(name + ".effect: '" + t.effect + "' is not an effect with presets"));
+            return core::invalid(name + ".effect: '" + t.effect + "' is not an effect with presets");
         const uint32_t presets = impl_->effects[size_t(e)]->presetCount();
         if (t.presetMs.size() != presets)
-            return impl_->report(core::invalid(name + ".presetMs: " + std::to_string(t.presetMs.size()) +
-                                               " times, " + t.effect + " has " + std::to_string(presets) +
-                                               " presets"));
-        if (t.width == 0 || t.height == 0)
-            return impl_->report(core::invalid(name + ": extent must be at least 1x1"));
+            return core::invalid(name + ".presetMs: " + std::to_string(t.presetMs.size()) + " times, " +
+                                 t.effect + " has " + std::to_string(presets) + " presets");
+        if (t.width == 0 || t.height == 0) return core::invalid(name + ": extent must be at least 1x1");
         for (size_t i = 0; i < t.presetMs.size(); ++i)
             if (!std::isfinite(t.presetMs[i]) || t.presetMs[i] < 0.0f)
-                return impl_->report(core::invalid(name + ".presetMs[" + std::to_string(i) +
-                                                   "]: " + core::numberText(t.presetMs[i]) +
-                                                   " must be finite and >= 0"));
+                return core::invalid(name + ".presetMs[" + std::to_string(i) +
+                                     "]: " + core::numberText(t.presetMs[i]) + " must be finite and >= 0");
         if (const std::string other = impl_->otherOrigin(t.origin); !other.empty()) {
             impl_->warn(name + ": measured with " + other + "; skipped, measured again");
             continue;
@@ -342,16 +328,14 @@ VkImageView Context::imageView(ResourceName name, VkImageLayout* layout) const {
 
 Status Context::recordImageReadback(ResourceName name, VkCommandBuffer commandBuffer, VkBuffer buffer,
                                     VkDeviceSize offset, VkExtent3D& extent, VkDeviceSize& bytes) const {
-    if (!commandBuffer)
-        return impl_->report(core::invalid("recordImageReadback: commandBuffer is VK_NULL_HANDLE"));
-    if (!buffer) return impl_->report(core::invalid("recordImageReadback: buffer is VK_NULL_HANDLE"));
-    return impl_->report(
-        impl_->graph.recordReadback(name.value, commandBuffer, buffer, offset, extent, bytes));
+    if (!commandBuffer) return core::invalid("recordImageReadback: commandBuffer is VK_NULL_HANDLE");
+    if (!buffer) return core::invalid("recordImageReadback: buffer is VK_NULL_HANDLE");
+    return impl_->graph.recordReadback(name.value, commandBuffer, buffer, offset, extent, bytes);
 }
 
 Status Context::readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const {
     Status s = impl_->timer.read(frameIndex, out);
-    return s.code == Result::NotReady ? s : impl_->report(std::move(s));
+    return s.code == Result::NotReady ? s : std::move(s);
 }
 
 }  // namespace postfx

@@ -37,8 +37,6 @@ struct POSTFX_INTERNAL Context::Impl {
     // Adds an effect after the registered ones (tests add test-only effects; call before recording).
     void addEffect(std::unique_ptr<core::Effect> effect);
 
-    // Sends a failed status to the host's message callback and returns it unchanged.
-    Status report(Status status) const;
     void warn(const std::string& message) const;
 
     // `frame` checked, each active effect's preset chosen (Auto: by `autoQuality`) and applied into

@@ -55,6 +55,8 @@ namespace postfx::core {
     X(vkCmdPipelineBarrier)          \
     X(vkCmdCopyBufferToImage)        \
     X(vkCmdCopyImageToBuffer)        \
+    X(vkCmdBlitImage)                \
+    X(vkCmdCopyImage)                \
     X(vkCmdFillBuffer)
 
 struct DeviceFunctions {

@@ -19,11 +19,13 @@ const DepthConvention& FrameBuilder::depthConvention() const {
 }
 
 ImageRef FrameBuilder::compositeSource() const {
+    if (f_.target != kNoResource) return {f_.target};
     const uint16_t output = f_.host[size_t(HostImage::Output)];
     return {f_.composited && output != kNoResource ? output : f_.host[size_t(HostImage::Color)]};
 }
 
 ImageRef FrameBuilder::compositeTarget() const {
+    if (f_.target != kNoResource) return {f_.target};
     const uint16_t output = f_.host[size_t(HostImage::Output)];
     return {output != kNoResource ? output : f_.host[size_t(HostImage::Color)]};
 }
@@ -119,6 +121,16 @@ FrameBuilder& FrameBuilder::pass(const ComputePipelineDesc& pipeline, uint32_t x
     p.groups[2] = z;
     p.firstAccess = uint32_t(f_.accesses.size());
     f_.passes.push_back(p);
+    return *this;
+}
+
+FrameBuilder& FrameBuilder::transfer(const ComputePipelineDesc& named, TransferOp op, ImageRef source,
+                                     ImageRef destination) {
+    pass(named, 1, 1, 1);
+    f_.passes.back().transfer = op;
+    f_.accesses.push_back({0, source.index, Use::TransferRead, SamplerKind::NearestClamp});
+    f_.accesses.push_back({1, destination.index, Use::TransferWrite, SamplerKind::NearestClamp});
+    f_.passes.back().accessCount = 2;
     return *this;
 }
 

@@ -51,7 +51,13 @@ enum class Use : uint8_t {
                        // shader's code for it is off, e.g. by a specialization constant)
     Uniform,           // uniform buffer: this frame's slot (a storage buffer where the pipeline's layout
                        // declares one: data larger than a uniform buffer may hold)
+    TransferRead,      // source of a transfer pass (blit or copy)
+    TransferWrite,     // destination of a transfer pass: every texel written
 };
+
+// A pass that is not a dispatch: a blit (format conversion: the composite target's load and store) or a
+// copy of one image into another (core/target.h).
+enum class TransferOp : uint8_t { None, Blit, Copy };
 
 struct Access {
     uint32_t binding = 0;
@@ -88,6 +94,8 @@ struct PassDecl {
     uint32_t firstAccess = 0, accessCount = 0;  // in Frame::accesses
     bool builds = false;                        // writes a persistent image
     bool live = false;                          // recorded (compile())
+    // A transfer pass: `pipeline` only names it; its two accesses are the source and the destination.
+    TransferOp transfer = TransferOp::None;
 };
 
 // One frame's declarations and their compiled form. Reused from frame to frame (no allocation once warm).
@@ -102,6 +110,9 @@ struct Frame {
     // for all of them (FrameBuilder::depthInput); set by the context before the effects declare.
     bool shareDepth = false;
     bool composited = false;  // a pass has written the composite target
+    // postfx.target: the RGBA16F image the effects composite into when the host's color cannot be
+    // composited in place (core/target.h); kNoResource otherwise.
+    uint16_t target = kNoResource;
     // The volumetrics lookup (FrameInfo::volumetricsLookup), declared by the first lookupTarget() call:
     // its two images and uniforms, and whether a pass has written them yet.
     uint16_t lookupScattering = kNoResource, lookupTransmittance = kNoResource, lookupUniforms = kNoResource;
@@ -164,7 +175,8 @@ public:
     // before declaring the pass.
     LookupTarget lookupTarget();
     // Compositing into color: the image the next composite reads (host color, or the separate output
-    // once an earlier pass has written it) and the one it writes (the output when given, else color).
+    // once an earlier pass has written it) and the one it writes (the output when given, else color); both
+    // postfx.target when the host's color is not composited in place (core/target.h).
     ImageRef compositeSource() const;
     ImageRef compositeTarget() const;
     // A view the host lends through settings (e.g. its own noise texture): bound in `layout`, which the
@@ -205,6 +217,9 @@ public:
     // The pass's specialization constants (constant_id 0, 1, ...): one pipeline per distinct set, created
     // the first frame it is recorded; the last 4 used of a description are kept.
     FrameBuilder& constants(const PipelineConstants& constants);
+    // Declares a transfer pass named by `named` (its name only): `source` into `destination`, whole.
+    FrameBuilder& transfer(const ComputePipelineDesc& named, TransferOp op, ImageRef source,
+                           ImageRef destination);
 
 private:
     ImageRef ownedImage(const ResourceId& id, const ImageDesc& desc, ResourceDecl::Kind kind, uint64_t key);

@@ -61,6 +61,7 @@ void FrameGraph::begin(Frame& f, const FrameInfo& info) const {
     f.uniformData.clear();
     f.aliases.clear();
     f.composited = false;
+    f.target = kNoResource;
     f.lookupScattering = f.lookupTransmittance = f.lookupUniforms = kNoResource;
     f.lookupWritten = false;
     auto add = [&](HostImage which, bool present) {

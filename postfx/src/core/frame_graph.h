@@ -88,7 +88,10 @@ private:
         VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
         bool pendingWrite = false;    // written since its writes were last made visible
         bool readSinceWrite = false;  // read since the last write (a write must wait for it)
-        bool built = false;           // persistent: contents built from builtKey
+        // The stage of that write, and of those reads (compute, or transfer for the composite target).
+        VkPipelineStageFlags writeStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+        VkPipelineStageFlags readStages = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+        bool built = false;  // persistent: contents built from builtKey
         uint64_t builtKey = 0;
         bool used = false;  // declared and held this frame
         // Exported: written this frame (made visible to the host's commands at the end of record), and
@@ -115,6 +118,9 @@ private:
     const OwnedImage* findImage(const ResourceId* id) const;
     Status prepare(Frame& frame, uint64_t frameIndex, Retirement& retirement);
     Status preparePipelines(Frame& frame, uint64_t frameIndex, Retirement& retirement);
+    // Records a transfer pass (a blit or a copy of the whole color extent) with its label and timestamps.
+    void recordTransfer(const Frame& frame, const PassDecl& pass, const ImageInput* const* hostImages,
+                        VkCommandBuffer cmd, PassTimer& timer) const;
     // Before a new specialization of `desc` is cached: releases its least recently used one when
     // kMaxVariantsPerPipeline are held (never one this frame uses).
     void retireOldestVariant(const ComputePipelineDesc* desc, uint64_t frameIndex, Retirement& retirement);

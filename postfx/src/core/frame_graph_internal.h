@@ -9,10 +9,14 @@
 namespace postfx::core {
 
 inline bool reads(Use u) {
-    return u == Use::StorageRead || u == Use::StorageReadWrite || u == Use::Sampled || u == Use::Uniform;
+    return u == Use::StorageRead || u == Use::StorageReadWrite || u == Use::Sampled || u == Use::Uniform ||
+           u == Use::TransferRead;
 }
 inline bool writes(Use u) {
-    return u == Use::StorageWrite || u == Use::StorageReadWrite;
+    return u == Use::StorageWrite || u == Use::StorageReadWrite || u == Use::TransferWrite;
+}
+inline bool transfers(Use u) {
+    return u == Use::TransferRead || u == Use::TransferWrite;
 }
 inline bool storage(Use u) {
     return u == Use::StorageRead || u == Use::StorageWrite || u == Use::StorageReadWrite ||
@@ -61,7 +65,7 @@ inline VkDeviceSize slotBytes(uint32_t bytes) {
 
 // What one pass does with one resource, merged over its bindings.
 struct Merged {
-    bool read = false, write = false, storage = false, sampled = false, discard = true;
+    bool read = false, write = false, storage = false, sampled = false, transfer = false, discard = true;
     // Bound but declared unaccessed (Use::BoundOnly, Use::StorageBoundOnly): not a read or write in the
     // plan, but synchronized as the shader's code could access it (validation counts every statically
     // used binding): a sampled image as a read, a storage image as a read and a write.
@@ -78,10 +82,12 @@ inline Merged merge(const Frame& f, const PassDecl& p, uint16_t resource) {
         m.read |= reads(x.use);
         m.write |= writes(x.use);
         m.storage |= storage(x.use);
+        m.transfer |= transfers(x.use);
         m.sampled |= x.use == Use::Sampled || x.use == Use::BoundOnly;
         m.bound |= x.use == Use::BoundOnly || x.use == Use::StorageBoundOnly;
         m.boundStorage |= x.use == Use::StorageBoundOnly;
-        if (x.use != Use::StorageWrite && x.use != Use::StorageBoundOnly) m.discard = false;
+        if (x.use != Use::StorageWrite && x.use != Use::StorageBoundOnly && x.use != Use::TransferWrite)
+            m.discard = false;
     }
     m.discard = m.discard && m.write;
     return m;
@@ -94,8 +100,32 @@ inline bool seenBefore(const Frame& f, const PassDecl& p, uint32_t access) {
     return false;
 }
 
+// A transfer pass's source in TRANSFER_SRC_OPTIMAL, its destination in TRANSFER_DST_OPTIMAL.
+inline VkImageLayout transferLayout(Use u) {
+    return u == Use::TransferWrite ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL
+                                   : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+}
+
+// Storage accesses in GENERAL, sampled ones in SHADER_READ_ONLY_OPTIMAL, transfers in their own (a transfer
+// pass reads or writes each of its two images, never both).
 inline VkImageLayout ownedLayout(const Merged& m) {
+    if (m.transfer)
+        return m.write ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
     return m.storage ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
+
+// The stage and the access mask of a pass's use of a resource: the transfer stage for a transfer pass,
+// the compute shader stage otherwise.
+inline VkPipelineStageFlags passStage(const PassDecl& p) {
+    return p.transfer != TransferOp::None ? VK_PIPELINE_STAGE_TRANSFER_BIT
+                                          : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+}
+inline VkAccessFlags readAccess(VkPipelineStageFlags stage) {
+    return stage == VK_PIPELINE_STAGE_TRANSFER_BIT ? VK_ACCESS_TRANSFER_READ_BIT : VK_ACCESS_SHADER_READ_BIT;
+}
+inline VkAccessFlags writeAccess(VkPipelineStageFlags stage) {
+    return stage == VK_PIPELINE_STAGE_TRANSFER_BIT ? VK_ACCESS_TRANSFER_WRITE_BIT
+                                                   : VK_ACCESS_SHADER_WRITE_BIT;
 }
 
 // Adds postfx.copy (output = color) to a compiled frame whose separate output no live pass writes.

@@ -5,6 +5,7 @@
 #include "common/shared.h"
 #include "core/camera_math.h"
 #include "core/frame_graph_internal.h"
+#include "core/target.h"
 #include "postfx_objects_spirv.h"
 
 namespace postfx::core {
@@ -26,10 +27,20 @@ const ComputePipelineDesc kViewDistance{"postfx.view_distance", spirv::core_view
                                         kViewDistanceBindings, sizeof(gpu::ViewDistancePush)};
 inline constexpr ResourceId kViewDistanceImage{"postfx.view_distance"};
 
+// The same as a copy command, for a color target postfx does not composite in place (core/target.h):
+// same format, bit for bit.
+const ComputePipelineDesc kCopyTransfer{"postfx.copy", {}, {}, 0};
+
 }  // namespace
 
 void declareOutputCopy(const FrameGraph& graph, Frame& f) {
     const uint16_t output = f.host[size_t(HostImage::Output)];
+    if (!compositesInPlace(f.info->color)) {
+        FrameBuilder b(graph, f, -1);
+        b.transfer(kCopyTransfer, TransferOp::Copy, {f.host[size_t(HostImage::Color)]}, {output});
+        f.passes.back().live = true;
+        return;
+    }
     const VkExtent2D e = f.info->color.extent;
     const ComputePipelineDesc& copy =
         f.info->color.format == VK_FORMAT_R32G32B32A32_SFLOAT ? kCopy32 : kCopy16;

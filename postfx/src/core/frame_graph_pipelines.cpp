@@ -72,7 +72,7 @@ Status FrameGraph::preparePipelines(Frame& f, uint64_t frameIndex, Retirement& r
     passPipelines_.assign(f.passes.size(), nullptr);
     for (size_t i = 0; i < f.passes.size(); ++i) {
         const PassDecl& p = f.passes[i];
-        if (!p.live) continue;
+        if (!p.live || p.transfer != TransferOp::None) continue;
         auto it = std::find_if(pipelines_.begin(), pipelines_.end(), [&](const CachedPipeline& c) {
             return c.desc == p.pipeline && c.constants == p.constants;
         });

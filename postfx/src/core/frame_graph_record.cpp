@@ -32,6 +32,10 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
         bool used = false, storage = false;
         VkAccessFlags access = 0, written = 0;
         HostImageUse use{};
+        // An image of transfer passes only (core/target.h) changes layout between them: TRANSFER_SRC_OPTIMAL
+        // to be read, TRANSFER_DST_OPTIMAL to be written. `layout`: its layout now, while recording.
+        bool transferOnly = true;
+        VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     };
     HostUse hostUses[kHostImageCount];
     const ImageInput* hostImages[kHostImageCount] = {&info.color, &info.depth, &info.output,
@@ -42,23 +46,31 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
             if (x.resource == kNoResource || f.resources[x.resource].kind != ResourceDecl::Kind::Host)
                 continue;
             HostUse& h = hostUses[size_t(f.resources[x.resource].host)];
+            if (!h.used && transfers(x.use)) h.layout = transferLayout(x.use);
             h.used = true;
             h.storage |= storage(x.use);
-            if (reads(x.use)) h.access |= VK_ACCESS_SHADER_READ_BIT;
-            if (writes(x.use)) h.access |= VK_ACCESS_SHADER_WRITE_BIT;
+            h.transferOnly &= transfers(x.use);
+            if (reads(x.use)) h.access |= readAccess(passStage(p));
+            if (writes(x.use)) h.access |= writeAccess(passStage(p));
         }
     for (size_t i = 0; i < kHostImageCount; ++i)
         if (hostUses[i].used) {
             const ImageInput& image = *hostImages[i];
-            hostUses[i].use = useHostImage(image.image, image.format, image.layout, hostUses[i].storage,
-                                           hostUses[i].access);
+            HostUse& h = hostUses[i];
+            h.use = useHostImage(image.image, image.format, image.layout, h.storage, h.access);
+            if (h.transferOnly) {
+                h.use.layout = h.layout;
+                h.use.acquire.newLayout = h.layout;
+            } else {
+                h.layout = h.use.layout;
+            }
         }
 
     // Descriptor sets, before any command: an error leaves nothing half recorded.
     passSets_.assign(f.passes.size(), VK_NULL_HANDLE);
     for (size_t i = 0; i < f.passes.size(); ++i) {
         const PassDecl& p = f.passes[i];
-        if (!p.live) continue;
+        if (!p.live || p.transfer != TransferOp::None) continue;
         if (Status s = arena.allocate(passPipelines_[i]->setLayout(), passSets_[i]); !s)
             return {s.code, std::string(p.pipeline->name) + ": " + s.message};
         DescriptorWrites writes(passSets_[i]);
@@ -119,23 +131,44 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
         if (h.used) batch.add(h.use.acquire);
     batch.record(*gpu_, cmd);
 
-    // Pending accesses of the host images within this frame (postfx's own images keep theirs in images_).
-    bool hostPendingWrite[kHostImageCount] = {}, hostReadSinceWrite[kHostImageCount] = {};
+    // Pending accesses of the host images within this frame (postfx's own images keep theirs in images_):
+    // the stage of an unsynchronized write, and of the reads since the last write (0: none).
+    VkPipelineStageFlags hostWriteStage[kHostImageCount] = {}, hostReadStages[kHostImageCount] = {};
     for (size_t i = 0; i < f.passes.size(); ++i) {
         const PassDecl& p = f.passes[i];
         if (!p.live) continue;
+        const VkPipelineStageFlags stage = passStage(p);
         for (uint32_t a = p.firstAccess; a < p.firstAccess + p.accessCount; ++a) {
             const Access& x = f.accesses[a];
             if (seenBefore(f, p, a)) continue;
             const ResourceDecl& r = f.resources[x.resource];
             const Merged m = merge(f, p, x.resource);
+            const VkAccessFlags dstAccess = (m.synchronizedRead() ? readAccess(stage) : 0) |
+                                            (m.synchronizedWrite() ? writeAccess(stage) : 0);
             if (r.kind == ResourceDecl::Kind::Host) {
                 const size_t h = size_t(r.host);
-                if ((m.synchronizedRead() && hostPendingWrite[h]) ||
-                    (m.synchronizedWrite() && (hostPendingWrite[h] || hostReadSinceWrite[h])))
-                    batch.computeMemory(hostPendingWrite[h] ? VK_ACCESS_SHADER_WRITE_BIT : 0,
-                                        (m.synchronizedRead() ? VK_ACCESS_SHADER_READ_BIT : 0) |
-                                            (m.synchronizedWrite() ? VK_ACCESS_SHADER_WRITE_BIT : 0));
+                const VkPipelineStageFlags waitFor =
+                    (hostWriteStage[h] && (m.synchronizedRead() || m.synchronizedWrite()) ? hostWriteStage[h]
+                                                                                          : 0) |
+                    (m.synchronizedWrite() ? hostReadStages[h] : 0);
+                HostUse& use = hostUses[h];
+                const VkImageLayout layout = use.transferOnly ? transferLayout(x.use) : use.layout;
+                if (layout != use.layout) {
+                    ImageTransition t;
+                    t.image = hostImages[h]->image;
+                    t.oldLayout = use.layout;
+                    t.newLayout = layout;
+                    t.srcStage = waitFor | hostReadStages[h] | hostWriteStage[h];
+                    if (!t.srcStage) t.srcStage = VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT;
+                    t.srcAccess = hostWriteStage[h] ? writeAccess(hostWriteStage[h]) : 0;
+                    t.dstStage = stage;
+                    t.dstAccess = dstAccess;
+                    batch.add(t);
+                    use.layout = layout;
+                } else if (waitFor) {
+                    batch.memory(waitFor, hostWriteStage[h] ? writeAccess(hostWriteStage[h]) : 0, stage,
+                                 dstAccess);
+                }
             } else if (owned(r)) {
                 OwnedImage& o = *resourceImages_[x.resource];
                 const VkImageLayout layout = ownedLayout(m);
@@ -148,12 +181,14 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     t.oldLayout = m.discard ? VK_IMAGE_LAYOUT_UNDEFINED : o.layout;
                     t.newLayout = layout;
                     // An image the host may have read since (exported): after every earlier command.
-                    t.srcStage = o.hostMayRead ? VK_PIPELINE_STAGE_ALL_COMMANDS_BIT
-                                               : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-                    t.srcAccess = o.pendingWrite ? VK_ACCESS_SHADER_WRITE_BIT : 0;
-                    t.dstStage = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-                    t.dstAccess = (m.synchronizedRead() ? VK_ACCESS_SHADER_READ_BIT : 0) |
-                                  (m.synchronizedWrite() ? VK_ACCESS_SHADER_WRITE_BIT : 0);
+                    const VkPipelineStageFlags earlier =
+                        (o.pendingWrite ? o.writeStage : 0) | (o.readSinceWrite ? o.readStages : 0);
+                    t.srcStage = o.hostMayRead ? VkPipelineStageFlags(VK_PIPELINE_STAGE_ALL_COMMANDS_BIT)
+                                 : earlier     ? earlier
+                                               : VkPipelineStageFlags(VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+                    t.srcAccess = o.pendingWrite ? writeAccess(o.writeStage) : 0;
+                    t.dstStage = stage;
+                    t.dstAccess = dstAccess;
                     batch.add(t);
                     o.layout = layout;
                     o.pendingWrite = false;
@@ -164,28 +199,35 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
         }
         batch.record(*gpu_, cmd);
 
-        const ComputePipeline& pipeline = *passPipelines_[i];
-        beginLabel(gpu_->fn, cmd, pipeline.name().c_str());
-        timer.beginPass(cmd, pipeline.name(), p.effect, !p.builds);
-        pipeline.bind(cmd, passSets_[i], p.pushBytes ? p.push.data() : nullptr);
-        gpu_->fn.vkCmdDispatch(cmd, p.groups[0], p.groups[1], p.groups[2]);
-        timer.endPass(cmd);
-        endLabel(gpu_->fn, cmd);
+        if (p.transfer != TransferOp::None) {
+            recordTransfer(f, p, hostImages, cmd, timer);
+        } else {
+            const ComputePipeline& pipeline = *passPipelines_[i];
+            beginLabel(gpu_->fn, cmd, pipeline.name().c_str());
+            timer.beginPass(cmd, pipeline.name(), p.effect, !p.builds);
+            pipeline.bind(cmd, passSets_[i], p.pushBytes ? p.push.data() : nullptr);
+            gpu_->fn.vkCmdDispatch(cmd, p.groups[0], p.groups[1], p.groups[2]);
+            timer.endPass(cmd);
+            endLabel(gpu_->fn, cmd);
+        }
 
         for (uint32_t a = p.firstAccess; a < p.firstAccess + p.accessCount; ++a) {
             const Access& x = f.accesses[a];
             if (seenBefore(f, p, a)) continue;
             const ResourceDecl& r = f.resources[x.resource];
             const Merged m = merge(f, p, x.resource);
-            bool* pending = nullptr;
-            bool* readSince = nullptr;
             if (r.kind == ResourceDecl::Kind::Host) {
-                pending = &hostPendingWrite[size_t(r.host)];
-                readSince = &hostReadSinceWrite[size_t(r.host)];
-            } else if (owned(r)) {
+                const size_t h = size_t(r.host);
+                if (m.synchronizedWrite()) {
+                    hostWriteStage[h] = stage;
+                    hostReadStages[h] = 0;
+                } else if (m.synchronizedRead()) {
+                    hostReadStages[h] |= stage;
+                }
+                continue;
+            }
+            if (owned(r)) {
                 OwnedImage& o = *resourceImages_[x.resource];
-                pending = &o.pendingWrite;
-                readSince = &o.readSinceWrite;
                 // Written once: readable by the host (imageView, recordImageReadback); a history image
                 // holds the frame's result (the clouds' shadow map, the fogs' accumulations).
                 if (m.write && (r.kind == ResourceDecl::Kind::Persistent ||
@@ -194,21 +236,27 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                     o.builtKey = r.buildKey;
                 }
                 if (m.write && r.exported) o.writtenForHost = true;
-            }
-            if (!pending) continue;
-            if (m.synchronizedWrite()) {
-                *pending = true;
-                *readSince = false;
-            } else if (m.synchronizedRead()) {
-                *readSince = true;
+                if (m.synchronizedWrite()) {
+                    o.pendingWrite = true;
+                    o.writeStage = stage;
+                    o.readSinceWrite = false;
+                    o.readStages = 0;
+                } else if (m.synchronizedRead()) {
+                    o.readStages = o.readSinceWrite ? o.readStages | stage : stage;
+                    o.readSinceWrite = true;
+                }
             }
         }
     }
 
     // Host images out, once, in the layouts they came in, postfx's writes visible to what follows; so are
     // the writes of the images the host reads after the frame (exported), in the layouts they are in.
-    for (const HostUse& h : hostUses)
-        if (h.used) batch.add(h.use.release);
+    for (const HostUse& h : hostUses) {
+        if (!h.used) continue;
+        ImageTransition release = h.use.release;
+        release.oldLayout = h.layout;  // a transfer image's last layout
+        batch.add(release);
+    }
     for (size_t i = 0; i < f.resources.size(); ++i) {
         OwnedImage* o = resourceImages_[i];
         if (!o || !f.resources[i].exported || !o->writtenForHost) continue;
@@ -229,6 +277,38 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
     batch.record(*gpu_, cmd);
     endLabel(gpu_->fn, cmd);
     return Status::success();
+}
+
+void FrameGraph::recordTransfer(const Frame& f, const PassDecl& p, const ImageInput* const* hostImages,
+                                VkCommandBuffer cmd, PassTimer& timer) const {
+    VkImage images[2] = {};
+    for (uint32_t k = 0; k < 2; ++k) {
+        const ResourceDecl& r = f.resources[f.accesses[p.firstAccess + k].resource];
+        images[k] = r.kind == ResourceDecl::Kind::Host
+                        ? hostImages[size_t(r.host)]->image
+                        : resourceImages_[f.accesses[p.firstAccess + k].resource]->image->handle();
+    }
+    const VkExtent2D e = f.info->color.extent;
+    const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    beginLabel(gpu_->fn, cmd, p.pipeline->name);
+    timer.beginPass(cmd, p.pipeline->name, p.effect, false);
+    // The barriers before the pass put the source in TRANSFER_SRC_OPTIMAL, the destination in
+    // TRANSFER_DST_OPTIMAL (transferLayout).
+    const VkImageLayout src = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                        dst = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+    if (p.transfer == TransferOp::Blit) {
+        VkImageBlit region{};
+        region.srcSubresource = region.dstSubresource = layers;
+        region.srcOffsets[1] = region.dstOffsets[1] = {int32_t(e.width), int32_t(e.height), 1};
+        gpu_->fn.vkCmdBlitImage(cmd, images[0], src, images[1], dst, 1, &region, VK_FILTER_NEAREST);
+    } else {
+        VkImageCopy region{};
+        region.srcSubresource = region.dstSubresource = layers;
+        region.extent = {e.width, e.height, 1};
+        gpu_->fn.vkCmdCopyImage(cmd, images[0], src, images[1], dst, 1, &region);
+    }
+    timer.endPass(cmd);
+    endLabel(gpu_->fn, cmd);
 }
 
 FrameGraph::HeldImage FrameGraph::heldImage(const char* name) const {

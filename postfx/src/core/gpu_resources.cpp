@@ -18,10 +18,6 @@ Status Gpu::init(const ContextCreateInfo& info) {
         if (Status s = fn.loadDebugLabels(info.instance, info.getInstanceProcAddr); !s) return s;
     fn.vkGetPhysicalDeviceProperties(info.physicalDevice, &properties);
     fn.vkGetPhysicalDeviceMemoryProperties(info.physicalDevice, &memory);
-    if (properties.apiVersion < VK_API_VERSION_1_1)
-        return {Result::Unsupported,
-                "the device supports Vulkan " + std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) +
-                    "." + std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)) + "; postfx needs 1.1"};
     return Status::success();
 }
 

@@ -22,16 +22,16 @@ Status Context::volumetricsLookup(VolumetricsLookup& out) const {
     out = {};
     Impl& impl = *impl_;
     if (!impl.lookupRecorded)
-        return impl.report(core::invalid(
+        return core::invalid(
             "volumetricsLookup: the last record() did not build it (FrameInfo.volumetricsLookup.enabled was "
-            "false, or no frame was recorded)"));
+            "false, or no frame was recorded)");
     const core::FrameGraph::HeldImage scattering = impl.graph.heldImage(core::kLookupScattering.name);
     const core::FrameGraph::HeldImage transmittance = impl.graph.heldImage(core::kLookupTransmittance.name);
     if (!scattering.image || !transmittance.image ||
         !impl.graph.uniformSlot(core::kLookupUniforms, impl.lookupFrame, out.uniformBuffer,
                                 out.uniformOffset))
-        return impl.report(core::invalid("volumetricsLookup: its images are not held"));
-    if (Status s = impl.graph.sampler(core::SamplerKind::LinearClamp, out.sampler); !s) return impl.report(s);
+        return core::invalid("volumetricsLookup: its images are not held");
+    if (Status s = impl.graph.sampler(core::SamplerKind::LinearClamp, out.sampler); !s) return s;
     out.frameIndex = impl.lookupFrame;
     out.uniformRange = sizeof(gpu::LookupUniforms);
     out.scattering = scattering.image->view();
@@ -42,13 +42,12 @@ Status Context::volumetricsLookup(VolumetricsLookup& out) const {
 }
 
 Status Context::writeVolumetricsLookup(VkDescriptorSet set, const VolumetricsLookupBindings& bindings) const {
-    if (!set) return impl_->report(core::invalid("writeVolumetricsLookup: set is VK_NULL_HANDLE"));
+    if (!set) return core::invalid("writeVolumetricsLookup: set is VK_NULL_HANDLE");
     if (bindings.uniforms == bindings.scattering || bindings.uniforms == bindings.transmittance ||
         bindings.scattering == bindings.transmittance)
-        return impl_->report(core::invalid("writeVolumetricsLookup: bindings " +
-                                           std::to_string(bindings.uniforms) + ", " +
-                                           std::to_string(bindings.scattering) + ", " +
-                                           std::to_string(bindings.transmittance) + " are not distinct"));
+        return core::invalid("writeVolumetricsLookup: bindings " + std::to_string(bindings.uniforms) + ", " +
+                             std::to_string(bindings.scattering) + ", " +
+                             std::to_string(bindings.transmittance) + " are not distinct");
     VolumetricsLookup lookup;
     if (Status s = volumetricsLookup(lookup); !s) return s;
     const VkDescriptorBufferInfo buffer{lookup.uniformBuffer, lookup.uniformOffset, lookup.uniformRange};

@@ -1,0 +1,90 @@
+#include "core/target.h"
+
+#include "core/checks.h"
+
+namespace postfx::core {
+namespace {
+
+// Transfer passes are named by a description without SPIR-V (FrameBuilder::transfer).
+const ComputePipelineDesc kTargetLoad{"postfx.target_load", {}, {}, 0};
+const ComputePipelineDesc kTargetStore{"postfx.target_store", {}, {}, 0};
+
+bool hasFeature(const Gpu& gpu, VkFormat format, VkFormatFeatureFlags feature) {
+    VkFormatProperties properties{};
+    gpu.fn.vkGetPhysicalDeviceFormatProperties(gpu.physicalDevice, format, &properties);
+    return (properties.optimalTilingFeatures & feature) == feature;
+}
+
+}  // namespace
+
+bool compositesInPlace(const ImageInput& color) {
+    return (color.format == VK_FORMAT_R16G16B16A16_SFLOAT || color.format == VK_FORMAT_R32G32B32A32_SFLOAT) &&
+           (color.usage & VK_IMAGE_USAGE_STORAGE_BIT);
+}
+
+bool isBlitTargetFormat(VkFormat format) {
+    switch (format) {
+        case VK_FORMAT_R16G16B16A16_SFLOAT:
+        case VK_FORMAT_R32G32B32A32_SFLOAT:
+        case VK_FORMAT_B10G11R11_UFLOAT_PACK32:
+        case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+        case VK_FORMAT_A2R10G10B10_UNORM_PACK32:
+        case VK_FORMAT_R8G8B8A8_UNORM:
+        case VK_FORMAT_R8G8B8A8_SRGB:
+        case VK_FORMAT_B8G8R8A8_UNORM:
+        case VK_FORMAT_B8G8R8A8_SRGB:
+        case VK_FORMAT_A8B8G8R8_UNORM_PACK32:
+        case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+        case VK_FORMAT_R16G16B16A16_UNORM:
+            return true;
+        default:
+            return false;
+    }
+}
+
+const char* blitTargetFormatNames() {
+    return "R16G16B16A16_SFLOAT, R32G32B32A32_SFLOAT, B10G11R11_UFLOAT_PACK32, A2B10G10R10_UNORM_PACK32, "
+           "A2R10G10B10_UNORM_PACK32, R8G8B8A8_UNORM/SRGB, B8G8R8A8_UNORM/SRGB, A8B8G8R8_UNORM/SRGB_PACK32 "
+           "or R16G16B16A16_UNORM";
+}
+
+Status checkTargetFeatures(const Gpu& gpu, const FrameInfo& frame) {
+    if (compositesInPlace(frame.color)) return Status::success();
+    if (!hasFeature(gpu, frame.color.format, VK_FORMAT_FEATURE_BLIT_SRC_BIT))
+        return invalid("FrameInfo.color.format " + formatName(frame.color.format) +
+                       ": the device cannot blit from it (VK_FORMAT_FEATURE_BLIT_SRC_BIT, optimal tiling), "
+                       "which postfx needs to composite into it");
+    const bool separate = frame.output.present();
+    const ImageInput& written = separate ? frame.output : frame.color;
+    if (!hasFeature(gpu, written.format, VK_FORMAT_FEATURE_BLIT_DST_BIT))
+        return invalid(std::string(separate ? "FrameInfo.output" : "FrameInfo.color") + ".format " +
+                       formatName(written.format) +
+                       ": the device cannot blit into it (VK_FORMAT_FEATURE_BLIT_DST_BIT, optimal tiling), "
+                       "which postfx needs to composite into it");
+    return Status::success();
+}
+
+void declareTargetLoad(const FrameGraph& graph, Frame& f) {
+    f.target = kNoResource;
+    if (compositesInPlace(f.info->color)) return;
+    FrameBuilder b(graph, f, -1);
+    ImageDesc desc;
+    desc.format = f.info->color.format == VK_FORMAT_R32G32B32A32_SFLOAT ? VK_FORMAT_R32G32B32A32_SFLOAT
+                                                                        : VK_FORMAT_R16G16B16A16_SFLOAT;
+    desc.extent = {f.info->color.extent.width, f.info->color.extent.height, 1};
+    desc.usage =
+        VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    const ImageRef target = b.transientImage(kTargetImage, desc);
+    b.transfer(kTargetLoad, TransferOp::Blit, b.host(HostImage::Color), target);
+    f.target = target.index;
+}
+
+void declareTargetStore(const FrameGraph& graph, Frame& f) {
+    if (f.target == kNoResource || !f.composited) return;
+    FrameBuilder b(graph, f, -1);
+    const ImageRef output = b.host(HostImage::Output);
+    b.transfer(kTargetStore, TransferOp::Blit, {f.target},
+               output.valid() ? output : b.host(HostImage::Color));
+}
+
+}  // namespace postfx::core
