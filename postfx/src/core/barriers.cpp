@@ -125,9 +125,8 @@ bool sampleableLayout(VkImageLayout l) {
 HostImageUse useHostImage(VkImage image, VkFormat format, VkImageLayout hostLayout, bool storage,
                           VkAccessFlags access) {
     const VkImageLayout layout =
-        storage || (access & (VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT))
-            ? VK_IMAGE_LAYOUT_GENERAL
-            : (sampleableLayout(hostLayout) ? hostLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+        storage ? VK_IMAGE_LAYOUT_GENERAL
+                : (sampleableLayout(hostLayout) ? hostLayout : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     // Layout transitions of depth/stencil images cover both aspects; the host's view selects depth.
     const VkImageAspectFlags aspect = aspectOfFormat(format);
     return {layout, acquireHostImage(image, aspect, hostLayout, layout, access),

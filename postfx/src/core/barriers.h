@@ -64,8 +64,9 @@ struct HostImageUse {
     ImageTransition acquire, release;
 };
 
-// Storage images (color, output) and the images of transfer passes are used in GENERAL; sampled ones (depth,
-// shadow map) in their own layout when a shader may sample it there, else in SHADER_READ_ONLY_OPTIMAL.
+// Storage images (color, output) are used in GENERAL (by a transfer pass in its own: frame_graph_record.cpp);
+// sampled ones (depth, shadow map) in their own layout when a shader may sample it there, else in
+// SHADER_READ_ONLY_OPTIMAL.
 HostImageUse useHostImage(VkImage image, VkFormat format, VkImageLayout hostLayout, bool storage,
                           VkAccessFlags access);
 

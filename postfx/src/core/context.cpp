@@ -151,7 +151,8 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
                                    FrameInfo& resolved, core::Frame& out,
                                    std::vector<AutoUse>* measuring) const {
     if (Status s = core::checkSharedInputs(frame, info); !s) return s;
-    if (Status s = core::checkTargetFeatures(gpu, frame); !s) return s;
+    core::TargetStore targetStore = core::TargetStore::Blit;
+    if (Status s = core::checkTargetFeatures(gpu, frame, targetStore); !s) return s;
     // Each active effect's preset replaces its knobs before its settings are checked; Auto picks the
     // preset (reading finished frames' timings, so before the timer starts this frame).
     resolved = frame;
@@ -213,7 +214,7 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
         core::FrameBuilder builder(graph, out, int(e));
         if (Status s = effects[e]->declare(builder); !s) return s;
     }
-    core::declareTargetStore(graph, out);
+    core::declareTargetStore(graph, out, targetStore);
     core::declareLookupClear(graph, out);
     graph.compile(out);
     return Status::success();

@@ -32,9 +32,9 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
         bool used = false, storage = false;
         VkAccessFlags access = 0, written = 0;
         HostImageUse use{};
-        // An image of transfer passes only (core/target.h) changes layout between them: TRANSFER_SRC_OPTIMAL
-        // to be read, TRANSFER_DST_OPTIMAL to be written. `layout`: its layout now, while recording.
-        bool transferOnly = true;
+        // A transfer pass's image (core/target.h) is in TRANSFER_SRC_OPTIMAL while read, in
+        // TRANSFER_DST_OPTIMAL while written, in use.layout for the other passes. `layout`: its layout
+        // now, while recording (after the acquire: that of its first use).
         VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     };
     HostUse hostUses[kHostImageCount];
@@ -49,7 +49,6 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
             if (!h.used && transfers(x.use)) h.layout = transferLayout(x.use);
             h.used = true;
             h.storage |= storage(x.use);
-            h.transferOnly &= transfers(x.use);
             if (reads(x.use)) h.access |= readAccess(passStage(p));
             if (writes(x.use)) h.access |= writeAccess(passStage(p));
         }
@@ -58,12 +57,8 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
             const ImageInput& image = *hostImages[i];
             HostUse& h = hostUses[i];
             h.use = useHostImage(image.image, image.format, image.layout, h.storage, h.access);
-            if (h.transferOnly) {
-                h.use.layout = h.layout;
-                h.use.acquire.newLayout = h.layout;
-            } else {
-                h.layout = h.use.layout;
-            }
+            if (h.layout == VK_IMAGE_LAYOUT_UNDEFINED) h.layout = h.use.layout;  // first use: no transfer
+            h.use.acquire.newLayout = h.layout;
         }
 
     // Descriptor sets, before any command: an error leaves nothing half recorded.
@@ -152,7 +147,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
                                                                                           : 0) |
                     (m.synchronizedWrite() ? hostReadStages[h] : 0);
                 HostUse& use = hostUses[h];
-                const VkImageLayout layout = use.transferOnly ? transferLayout(x.use) : use.layout;
+                const VkImageLayout layout = transfers(x.use) ? transferLayout(x.use) : use.use.layout;
                 if (layout != use.layout) {
                     ImageTransition t;
                     t.image = hostImages[h]->image;
@@ -254,7 +249,7 @@ Status FrameGraph::record(Frame& f, VkCommandBuffer cmd, uint64_t frameIndex, De
     for (const HostUse& h : hostUses) {
         if (!h.used) continue;
         ImageTransition release = h.use.release;
-        release.oldLayout = h.layout;  // a transfer image's last layout
+        release.oldLayout = h.layout;  // its last use's
         batch.add(release);
     }
     for (size_t i = 0; i < f.resources.size(); ++i) {

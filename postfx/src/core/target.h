@@ -22,15 +22,21 @@ bool isBlitTargetFormat(VkFormat format);
 // Their names, for messages.
 const char* blitTargetFormatNames();
 
+// How postfx.target goes back into the host's image: a blit, or (a device that cannot blit into the
+// format, as lavapipe for B10G11R11) a compute pass storing into it, which needs STORAGE usage and the
+// format's storage feature.
+enum class TargetStore : uint8_t { Blit, Compute };
+
 // The device's format features for the frame's color and output through postfx.target: BLIT_SRC for the
-// image loaded, BLIT_DST for the one written (optimal tiling). Nothing to check when composited in place.
-Status checkTargetFeatures(const Gpu& gpu, const FrameInfo& frame);
+// image loaded (optimal tiling); BLIT_DST for the one written, else its storage (`store` says which).
+// Nothing to check when composited in place.
+Status checkTargetFeatures(const Gpu& gpu, const FrameInfo& frame, TargetStore& store);
 
 // Declares postfx.target and postfx.target_load (the host's color into it), before the effects declare,
 // when the color is not composited in place. Culled when no effect composites.
 void declareTargetLoad(const FrameGraph& graph, Frame& frame);
 // Declares postfx.target_store (postfx.target into the host's output, else its color) after the effects,
 // when one of them composited into postfx.target.
-void declareTargetStore(const FrameGraph& graph, Frame& frame);
+void declareTargetStore(const FrameGraph& graph, Frame& frame, TargetStore store);
 
 }  // namespace postfx::core
