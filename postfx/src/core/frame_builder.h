@@ -7,6 +7,7 @@
 
 #include "core/compute_pipeline.h"
 #include "core/gpu_resources.h"
+#include "core/world_frame.h"
 
 #include <array>
 #include <cstdint>
@@ -101,6 +102,9 @@ struct Frame {
     // Two or more of the frame's effects read the host's depth: postfx.view_distance unprojects it once
     // for all of them (FrameBuilder::depthInput); set by the context before the effects declare.
     bool shareDepth = false;
+    // The host's world frame (ContextCreateInfo::world): `info` is already in postfx's; what postfx hands
+    // back in world space (the volumetrics lookup's uniforms) is converted back with it.
+    WorldTransform world;
     bool composited = false;  // a pass has written the composite target
     // The volumetrics lookup (FrameInfo::volumetricsLookup), declared by the first lookupTarget() call:
     // its two images and uniforms, and whether a pass has written them yet.
