@@ -99,7 +99,7 @@ struct CloudUniforms {
                        // 1/period
     vec4 noiseDetail;  // the same for the detail texture
     // Coverage map: xy: offset added to camera-relative (x, z) ((camera - wind·t - origin) modulo the
-    // size), z: 1 / size [1/m]
+    // size), z: 1 / size [1/m] (u), w: ±1 / size (v; negative when v runs along -z)
     vec4 coverageMap;
     vec4 shape;         // x: coverage, y: 1 / top falloff, z: detail strength, w: σt where the field is 1
     vec4 phase;         // x: g forward, y: g back, z: lobe mix, w: albedo

@@ -79,7 +79,7 @@ float cloudField(vec3 x, float h) {
     // The host's coverage map m at the point's world (x, z): coverage·m, no noise read where m = 0.
     float map = 1.0;
     if ((cl.flags.x & kCloudFlagCoverageMap) != 0u) {
-        map = textureLod(coverageMap, (x.xz + cl.coverageMap.xy) * cl.coverageMap.z, 0.0).r;
+        map = textureLod(coverageMap, (x.xz + cl.coverageMap.xy) * cl.coverageMap.zw, 0.0).r;
         if (!(map > 0.0)) return 0.0;
     }
     if ((cl.flags.x & kCloudFlagNoise) == 0u) return map;

@@ -24,8 +24,9 @@ struct LookupUniforms {
     mat4 clipToRelative;
     vec4 camera;
     vec4 slices;
+    vec4 world;
 };
-static_assert(sizeof(LookupUniforms) == 160);
+static_assert(sizeof(LookupUniforms) == 176);
 // A lookup pass's push constants: x = 1 for the first writer of the frame (nothing to composite over).
 struct LookupPush {
     uvec4 flags;

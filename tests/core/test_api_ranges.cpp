@@ -602,6 +602,15 @@ TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {
          }},
         {"ContextCreateInfo.framesInFlight", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 0; }},
         {"ContextCreateInfo.framesInFlight", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 9; }},
+        {"ContextCreateInfo.world.up", [](postfx::ContextCreateInfo& i) { i.world.up = postfx::UpAxis(2); }},
+        {"ContextCreateInfo.world.handedness",
+         [](postfx::ContextCreateInfo& i) { i.world.handedness = postfx::Handedness(2); }},
+        {"ContextCreateInfo.world.unitsPerMetre",
+         [](postfx::ContextCreateInfo& i) { i.world.unitsPerMetre = std::nextafter(1e-3, 0.0); }},
+        {"ContextCreateInfo.world.unitsPerMetre",
+         [](postfx::ContextCreateInfo& i) { i.world.unitsPerMetre = std::nextafter(1e3, 2e3); }},
+        {"ContextCreateInfo.world.unitsPerMetre",
+         [](postfx::ContextCreateInfo& i) { i.world.unitsPerMetre = std::nan(""); }},
     };
     for (const CreateRow& row : bad) {
         postfx::ContextCreateInfo info = hostHandles();
@@ -623,6 +632,12 @@ TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {
          [maxDimension](postfx::ContextCreateInfo& i) {
              i.maxExtent = {maxDimension, maxDimension};
          }},
+        {"world z up, left-handed",
+         [](postfx::ContextCreateInfo& i) {
+             i.world = {postfx::UpAxis::Z, postfx::Handedness::Left, 100.0};
+         }},
+        {"world.unitsPerMetre 1e-3", [](postfx::ContextCreateInfo& i) { i.world.unitsPerMetre = 1e-3; }},
+        {"world.unitsPerMetre 1e3", [](postfx::ContextCreateInfo& i) { i.world.unitsPerMetre = 1e3; }},
     };
     for (const CreateRow& row : good) {
         postfx::ContextCreateInfo info = hostHandles();

@@ -6,7 +6,9 @@
 // with an error naming the field by its C++ path ("FrameInfo.atmosphere.topRadius"); the ranges are
 // atmosphereSettingsTable()'s (postfx/settings_table.h).
 // Defaults are Earth as in the paper's reference code. World y = 0 is the ground; the planet's centre is at
-// (0, -groundRadius, 0).
+// (0, -groundRadius, 0): in the host's world frame (ContextCreateInfo::world), its plane up = 0 is the
+// ground and the centre is groundRadius metres below its origin along the up axis. Every length here is in
+// metres, whatever the host's units.
 #pragma once
 
 #include <postfx/export.h>
@@ -118,19 +120,22 @@ inline constexpr ResourceName kAtmosphereAerialTransmittanceLut{"atmosphere.aeri
 // whether or not `enabled` is set.
 POSTFX_API Status validateAtmosphereSettings(const AtmosphereSettings& settings);
 
-// The sun's transmittance through the atmosphere from world position `worldPosition` [m] toward `toSun`
+// The sun's transmittance through the atmosphere from world position `worldPosition` toward `toSun`
 // (normalised here) [1] per RGB channel, evaluated in double without LUTs: 0 where the planet hides the sun,
 // exp(-optical depth to the top boundary) otherwise. A position below the ground is clamped onto it.
-// Settings must be valid (validateAtmosphereSettings); `enabled` is ignored.
+// Position and direction are in `world`, the host's world frame (ContextCreateInfo::world; the position in
+// its units). Settings must be valid (validateAtmosphereSettings); `enabled` is ignored.
 POSTFX_API Vec3 atmosphereSunTransmittance(const AtmosphereSettings& settings, const DVec3& worldPosition,
-                                           const Vec3& toSun);
+                                           const Vec3& toSun, const WorldFrame& world = {});
 
 // Irradiance the sky (the atmosphere's scattered light, not the sun's direct beam) gives a surface at
 // `worldPosition` facing the local zenith [lux], for a sun of `sunIlluminance` [lux] outside the atmosphere
 // toward `toSun`: ∫ L_sky(ω)·cos θ dω over the upper hemisphere, L_sky with single and (settings'
 // multipleScattering) multiple scattering (Hillaire's or the orders', as the settings say). A Lambertian
-// surface's ambient radiance is this / π. Settings must be valid; `enabled` is ignored.
+// surface's ambient radiance is this / π. Position and direction in `world`, as above. Settings must be
+// valid; `enabled` is ignored.
 POSTFX_API Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& worldPosition,
-                                        const Vec3& toSun, const Vec3& sunIlluminance);
+                                        const Vec3& toSun, const Vec3& sunIlluminance,
+                                        const WorldFrame& world = {});
 
 }  // namespace postfx

@@ -21,7 +21,8 @@ namespace postfx {
 // Where the clouds are. A value cast from another int is rejected.
 enum class CloudShape : uint32_t {
     // Between bottom_height and top_height above the ground: spherical shells around the planet's centre
-    // when the atmosphere is on (they follow its curvature), horizontal planes at y = bottom / top when off.
+    // when the atmosphere is on (they follow its curvature), horizontal planes at height (along the host's
+    // up axis) bottom / top when off.
     Layer,
     // Inside an oriented box (the seed's cloud); bottom/top heights are the box's own bottom and top.
     Box,
@@ -43,11 +44,16 @@ enum class CloudQuality : uint32_t {
     Auto,
 };
 
-// The box of CloudShape::Box.
+// The box of CloudShape::Box, placed in the host's world frame and units (ContextCreateInfo::world). The
+// defaults are postfx's own frame's (y up, metres).
 struct CloudBox {
-    DVec3 center{0.0, 2000.0, 0.0};           // world position [m]; each component in [-1e9, 1e9]
-    Vec3 halfSize{2000.0f, 500.0f, 2000.0f};  // half extents along the box's own axes [m]; each in (0, 1e7]
-    // Rotation of the box about world y, then its x [deg]; each in [-360, 360].
+    DVec3 center{0.0, 2000.0, 0.0};  // world position [host units]; each component in [-1e9, 1e9]
+    // Half extents along the box's own axes, the host's x, y, z before the rotation [host units]; each in
+    // (0, 1e7].
+    Vec3 halfSize{2000.0f, 500.0f, 2000.0f};
+    // Rotation of the box about the world's up axis (yaw), then about its x (pitch) [deg]: the box's axes
+    // are R_up(yaw)·R_x(pitch) applied to the host's x, y, z, each rotation by the right-hand rule on the
+    // host's coordinates (glm::rotate); each in [-360, 360].
     float yawDeg = 0.0f;
     float pitchDeg = 0.0f;
 };
@@ -61,8 +67,8 @@ struct CloudNoiseSettings {
     // Edge of the detail texture (Worley fBm) [texels]; power of two in [8, 128].
     uint32_t detailSize = 32;
     uint32_t seed = 1;  // generator seed; any value
-    // The base texture repeats every `tiling` metres along each world axis; the detail texture every
-    // tiling / 8 [m]; in [1, 1e7].
+    // The base texture repeats every `tiling` metres along each world axis (postfx's: the host's x, up and
+    // other horizontal axis); the detail texture every tiling / 8 [m]; in [1, 1e7].
     float tiling = 12000.0f;
     // How much the detail noise erodes the base shape's edges [1]; in [0, 1]. 0: none.
     float detailStrength = 0.35f;
@@ -78,18 +84,21 @@ struct CloudNoiseSettings {
 
 // A host's 2D coverage map (a weather map, docs/effects/clouds.md, "Density"): where its value m is
 // given, the local coverage is coverage × m (m = 0: no cloud there, and no noise is read), and with the
-// noise off the field is m. It lies on the world's x–z plane, u along +x and v along +z, its texel (0, 0)
-// corner at (origin_x, origin_z), repeating every `size` metres, and moves with the wind like the rest
-// of the field. A curved layer reads it at each point's world (x, z).
+// noise off the field is m. It lies on the world's horizontal plane, u along the host's +x and v along its
+// other horizontal axis (+z when y is up, +y when z is up: ContextCreateInfo::world), its texel (0, 0)
+// corner at (origin_x, origin_z) on those two axes, repeating every `size`, and moves with the wind like
+// the rest of the field. A curved layer reads it at each point's world (x, z) (z: the other axis).
 struct CloudCoverageMap {
     // 2D view whose first channel holds values in [0, 1], sampled with bilinear filtering and repeat
     // addressing, in `layout`. VK_NULL_HANDLE: no map (the coverage is the same everywhere).
     VkImageView texture = VK_NULL_HANDLE;
     // SHADER_READ_ONLY_OPTIMAL, GENERAL or READ_ONLY_OPTIMAL.
     VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    float size = 50000.0f;  // edge of the area the map covers [m]; in [1, 1e7]
-    double originX = 0.0;   // world x of the map's u = 0 edge [m]; in [-1e9, 1e9]
-    double originZ = 0.0;   // world z of the map's v = 0 edge [m]; in [-1e9, 1e9]
+    float size = 50000.0f;  // edge of the area the map covers [host units]; in [1, 1e7]
+    double originX = 0.0;   // world x of the map's u = 0 edge [host units]; in [-1e9, 1e9]
+    // The map's v = 0 edge on the host's other horizontal axis (z when y is up, y when z is up) [host
+    // units]; in [-1e9, 1e9].
+    double originZ = 0.0;
 };
 
 // How the light scattered more than once is modelled (docs/effects/clouds.md, "Multiple scattering"). A
@@ -131,7 +140,8 @@ struct CloudSettings {
     // (checked whatever the quality). Not used when FrameInfo::budgetMs is set.
     float autoBudgetMs = 0.5f;
     CloudShape shape = CloudShape::Layer;
-    // The layer's bottom and top above the ground (y = 0) [m]: bottom in [0, 1e6], top in (bottom, 1e6].
+    // The layer's bottom and top above the ground (the host's plane up = 0) [m, whatever the host's units]:
+    // bottom in [0, 1e6], top in (bottom, 1e6].
     float bottomHeight = 1500.0f;
     float topHeight = 4000.0f;
     CloudBox box;  // CloudShape::Box only
@@ -161,8 +171,8 @@ struct CloudSettings {
     float lightDistance = 6000.0f;
     // View rays are marched to the nearer of the geometry and this distance [m]; in (0, 1e7].
     float maxDistance = 100000.0f;
-    // Velocity of the density field [m/s]; each component in [-1e3, 1e3]. The field at time t is the one at
-    // t = 0 moved by wind·t (FrameInfo::timeSeconds).
+    // Velocity of the density field along the host's axes [m/s]; each component in [-1e3, 1e3]. The field at
+    // time t is the one at t = 0 moved by wind·t (FrameInfo::timeSeconds).
     Vec3 wind{10.0f, 0.0f, 0.0f};
     // Offset each pixel's first sample by interleaved gradient noise of pixel and frame (the temporal
     // accumulation averages it out); false: at the step's midpoint.
@@ -204,7 +214,8 @@ inline constexpr ResourceName kCloudsDetailNoise{"clouds.detail_noise"};
 inline constexpr ResourceName kCloudsShadowMap{"clouds.shadow_map"};
 
 // Where a world position reads the shadow map of the frame `frame` recorded: uv = (dot(u.xyz, P) + u.w,
-// dot(v.xyz, P) + v.w) for world position P [m]; outside [0, 1]² there is no cloud shadow (transmittance
+// dot(v.xyz, P) + v.w) for world position P in `world`, the host's world frame (ContextCreateInfo::world:
+// `frame` is in it, and so is P [host units]); outside [0, 1]² there is no cloud shadow (transmittance
 // 1). The map holds the transmittance from the shape's bottom along the sun's direction: exact for points
 // below the clouds, too dark for points inside them. A host lighting its surfaces before Context::record
 // reads the map held from the previous frame with that frame's FrameInfo (one frame late: the clouds move
@@ -214,6 +225,6 @@ struct CloudShadowTransform {
     DVec4 v{0.0, 0.0, 0.0, -1.0};
 };
 struct FrameInfo;
-POSTFX_API CloudShadowTransform cloudShadowTransform(const FrameInfo& frame);
+POSTFX_API CloudShadowTransform cloudShadowTransform(const FrameInfo& frame, const WorldFrame& world = {});
 
 }  // namespace postfx

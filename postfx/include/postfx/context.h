@@ -56,6 +56,13 @@ struct ContextCreateInfo {
 
     MessageCallback messageCallback = nullptr;  // optional
     void* messageUserData = nullptr;
+
+    // The host's world frame: up axis, handedness and units (types.h, WorldFrame; docs/integration.md,
+    // "World frame and units"). The default is postfx's own: y up, right-handed, metres. Every world-space
+    // input of FrameInfo is in this frame (positions and sizes of what the host places in its world in its
+    // units); media properties stay in metres. Checked by create(): up Y or Z, handedness Right or Left,
+    // unitsPerMetre in [1e-3, 1e3].
+    WorldFrame world;
 };
 
 // Everything postfx needs for one frame.

@@ -22,12 +22,13 @@ struct FogNoiseSettings {
     // Edge of the cubic noise texture postfx generates [texels]; power of two in [16, 256].
     uint32_t textureSize = 128;
     uint32_t seed = 1;  // generator seed; any value
-    // Texture coordinate = (x - wind·time) · 0.01 · tiling, so with tiling 1 the texture repeats every
-    // 100 m [1/100 m]; > 0 and <= 1000.
+    // Texture coordinate = (x - wind·time) · 0.01 · tiling, x in postfx's frame [m] (docs/integration.md,
+    // "World frame and units": the texture's axes are the host's x, up and other horizontal axis), so with
+    // tiling 1 the texture repeats every 100 m [1/100 m]; > 0 and <= 1000.
     float tiling = 1.0f;
     float threshold = 0.1f;   // noise(x) = clamp(n - threshold, 0, 1) · multiplier [1]; in [0, 1]
     float multiplier = 1.0f;  // [1]; in [0, 1e3]
-    Vec3 wind{0.0f};          // velocity of the noise field [m/s]; each component in [-1e3, 1e3]
+    Vec3 wind{0.0f};          // velocity of the noise field along the host's axes [m/s]; each in [-1e3, 1e3]
     // Optional host texture instead of the generated one: a 3D view (first channel read, values in
     // [0, 1]), sampled with trilinear filtering and repeat addressing, in `hostTextureLayout`.
     VkImageView hostTexture = VK_NULL_HANDLE;
@@ -63,9 +64,10 @@ struct FogMedium {
     // Henyey–Greenstein asymmetry g [1]; in [-1, 1], clamped to [-0.999, 0.999].
     // g > 0 scatters forward: brightest looking toward the sun.
     float anisotropy = 0.6f;
-    // Height fog: σt ∝ exp(-height_falloff · (y - base_height)) [1/m]; in [0, 10]. 0 = homogeneous.
+    // Height fog: σt ∝ exp(-height_falloff · (y - base_height)) [1/m], y the height along the host's up
+    // axis above its plane up = 0 [m]; in [0, 10]. 0 = homogeneous.
     float heightFalloff = 0.1f;
-    float baseHeight = 0.0f;  // [m]; finite
+    float baseHeight = 0.0f;  // [m] above the host's up = 0, whatever its units; finite
     // Rays are marched to the surface or to this distance, whichever is nearer [m]; in (0, 1e7].
     float maxDistance = 200.0f;
     // Sun visibility also includes the fog's own transmittance toward the sun (closed form of the

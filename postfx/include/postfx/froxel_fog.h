@@ -18,15 +18,18 @@ namespace postfx {
 
 enum class FogVolumeShape : uint32_t { Box, Sphere };  // another value (cast from an int) is rejected
 
-// A local fog volume: extinction added to the medium's inside a box or a sphere (additive density).
+// A local fog volume: extinction added to the medium's inside a box or a sphere (additive density). Placed
+// in the host's world frame and units (ContextCreateInfo::world), its density per metre.
 struct FogVolume {
     FogVolumeShape shape = FogVolumeShape::Box;
-    DVec3 center{0.0};     // world position [m]; each component in [-1e9, 1e9]
-    Vec3 halfSize{1.0f};   // box: half extent along world x, y, z [m]; each in [0, 1e7] (0: empty)
-    float radius = 1.0f;   // sphere: [m]; in [0, 1e7] (0: empty)
+    DVec3 center{0.0};  // world position [host units]; each component in [-1e9, 1e9]
+    Vec3 halfSize{
+        1.0f};  // box: half extent along the host's x, y, z [host units]; each in [0, 1e7] (0: empty)
+    float radius = 1.0f;   // sphere: [host units]; in [0, 1e7] (0: empty)
     float density = 0.1f;  // extinction added at full strength [1/m]; in [0, 1e6]
     // The density ramps with a smoothstep from 0 at the surface to full at this depth inside (distance
-    // to the nearest face for a box, radius - |x - center| for a sphere) [m]; in [0, 1e7]. 0 = hard edge.
+    // to the nearest face for a box, radius - |x - center| for a sphere) [host units]; in [0, 1e7]. 0 = hard
+    // edge.
     float edgeFalloff = 0.0f;
 };
 

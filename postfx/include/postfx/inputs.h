@@ -1,5 +1,8 @@
 // The per-frame inputs every effect shares: the camera, the sun, the shadow map and local lights
-// (FrameInfo). Checked once by Context::record and Context::plan, whichever effects run.
+// (FrameInfo). Checked once by Context::record and Context::plan, whichever effects run. Everything that
+// lives in the world is in the host's world frame (ContextCreateInfo::world: its up axis, handedness and
+// units, "[host units]" below; docs/integration.md, "World frame and units"), and every range of such a
+// field holds for the number as the host gives it.
 #pragma once
 
 #include <postfx/types.h>
@@ -10,19 +13,23 @@ namespace postfx {
 
 // The camera that rendered color and depth.
 struct CameraInput {
-    // World position [m] (double: postfx works camera-relative); each component in [-1e9, 1e9].
+    // World position [host units] (double: postfx works camera-relative); each component in [-1e9, 1e9].
     DVec3 position{0.0};
-    // World -> view; only its rotation is used (position gives the translation); finite, rotation invertible.
+    // World -> view, rigid in the host's units (a view space of either handedness: -z or +z forward); only
+    // its rotation is used (position gives the translation); finite, rotation invertible.
     Mat4 view{1.0f};
-    // View -> Vulkan clip, in the context's DepthConvention; finite, and projection · view rotation
-    // invertible with an inverse finite in float (postfx reconstructs view rays through it on the GPU).
+    // View [host units] -> Vulkan clip, in the context's DepthConvention; finite, and projection · view
+    // rotation invertible with an inverse finite in float (postfx reconstructs view rays through it on the
+    // GPU; checked as postfx's frame has it, in metres).
     Mat4 projection{1.0f};
 };
 
 // The sun (or moon): a directional light.
 struct SunInput {
-    Vec3 toSun{0.0f, 1.0f, 0.0f};  // direction toward the sun, finite, length >= 1e-6 (normalised by postfx)
-    Vec3 illuminance{0.0f};        // [lux] on a surface facing the sun; each in [0, 1e7]
+    // Direction toward the sun along the host's axes, finite, length >= 1e-6 (normalised by postfx). The
+    // default is up in postfx's own frame (y up).
+    Vec3 toSun{0.0f, 1.0f, 0.0f};
+    Vec3 illuminance{0.0f};  // [lux] on a surface facing the sun; each in [0, 1e7]
 };
 
 // The host's sun shadow map. Optional: with no image the sun is unshadowed (visibility 1).
@@ -41,9 +48,10 @@ struct ShadowMapInput {
     // Depth image (D32_SFLOAT, D16_UNORM, X8_D24_UNORM_PACK32, D24_UNORM_S8_UINT or R32_SFLOAT), usage
     // SAMPLED, any square or rectangular size.
     ImageInput image;
-    // World -> shadow clip space: x, y in [-1, 1] map to u, v = (x, y)/2 + 1/2, z/w is the stored depth.
-    // Finite, and worldToClip · translate(camera.position), the camera-relative transform postfx hands the
-    // GPU, finite in float (each element within ±3.4e38).
+    // World [host units] -> shadow clip space: x, y in [-1, 1] map to u, v = (x, y)/2 + 1/2, z/w is the
+    // stored depth. Finite, and worldToClip · translate(camera.position), the camera-relative transform
+    // postfx hands the GPU (in metres: its x, y, z columns times unitsPerMetre), finite in float (each
+    // element within ±3.4e38).
     DMat4 worldToClip{1.0};
     bool reversedZ = false;  // true: larger stored depth is nearer the sun
     float depthBias = 0.0f;  // added toward "lit" before comparing [shadow depth units]; finite, >= 0
@@ -59,13 +67,14 @@ inline constexpr uint32_t kNoLocalShadow = 0xffffffffu;
 
 struct LocalLight {
     LightType type = LightType::Point;
-    DVec3 position{0.0};                // world position [m]; each component in [-1e9, 1e9]
-    Vec3 direction{0.0f, -1.0f, 0.0f};  // the cone's axis [1]; finite; spot: length >= 1e-6 (normalised)
+    DVec3 position{0.0};                // world position [host units]; each component in [-1e9, 1e9]
+    Vec3 direction{0.0f, -1.0f, 0.0f};  // the cone's axis along the host's axes [1]; finite; spot: length
+                                        // >= 1e-6 (normalised); the default is down in postfx's frame
     Vec3 intensity{0.0f};               // luminous intensity per RGB channel [cd]; each in [0, 1e9]
-    float range = 100.0f;               // distance beyond which the light is ignored [m]; > 0, finite
-    float sourceRadius = 0.05f;         // guards the inverse square near the light [m]; in (0, range]
-    float innerConeAngle = 0.0f;        // spot: full intensity inside this half angle [rad]; in [0, outer]
-    float outerConeAngle = 0.785398f;   // spot: no light outside this half angle [rad]; in [0, π/2)
+    float range = 100.0f;              // distance beyond which the light is ignored [host units]; finite, > 0
+    float sourceRadius = 0.05f;        // guards the inverse square near the light [host units]; (0, range]
+    float innerConeAngle = 0.0f;       // spot: full intensity inside this half angle [rad]; in [0, outer]
+    float outerConeAngle = 0.785398f;  // spot: no light outside this half angle [rad]; in [0, π/2)
     // Its shadow: an index into FrameInfo.localShadows.shadows (< shadowCount), or kNoLocalShadow: the
     // light shines through everything. Several lights may share one shadow.
     uint32_t shadow = kNoLocalShadow;
@@ -79,8 +88,8 @@ inline constexpr uint32_t kMaxLocalLights = 256;
 struct LocalShadowFace {
     UVec2 offset{0u};  // the region's first texel (x, y) in the atlas [texels]
     UVec2 extent{0u};  // the region's size [texels]; each >= 1, and offset + extent inside the atlas
-    // World -> the face's clip space (perspective or orthographic): x, y in [-1, 1] map across the region
-    // (u, v = (x, y)/2 + 1/2 of it), z/w is the depth stored there. Finite, invertible, and
+    // World [host units] -> the face's clip space (perspective or orthographic): x, y in [-1, 1] map across
+    // the region (u, v = (x, y)/2 + 1/2 of it), z/w is the depth stored there. Finite, invertible, and
     // worldToClip · translate(camera.position) finite in float (as the sun's ShadowMapInput::worldToClip).
     DMat4 worldToClip{1.0};
 };

@@ -1,6 +1,11 @@
 // Double-precision CPU references of postfx's effects, for tests, benchmarks and `postfx-render
 // --reference`. They evaluate the same model as the GPU passes (docs/effects/*.md) with the same input
 // data, so that the difference between the two is integration and precision error only.
+//
+// They work in postfx's own world frame (y up, right-handed, metres: a default WorldFrame) and take no
+// WorldFrame: every position, direction, matrix and size in their inputs is in it, as a context converts
+// a host's frame into it (docs/integration.md, "World frame and units"). Their cloudShadowRows come from
+// cloudShadowTransform of that frame.
 #pragma once
 
 #include <postfx/atmosphere.h>

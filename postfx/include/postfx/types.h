@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <string>
 
 namespace postfx {
@@ -32,6 +33,24 @@ static_assert(sizeof(DMat4) == 128 && alignof(DMat4) == 8, "postfx::DMat4 must b
 struct DepthConvention {
     bool reversedZ = true;     // true: near plane at depth 1, far at 0 (recommended with D32_SFLOAT)
     bool infiniteFar = false;  // true: projection has no far plane (far at depth 0 / 1 reached at infinity)
+};
+
+// The host's world frame (ContextCreateInfo::world; docs/integration.md, "World frame and units"). postfx
+// works y up, right-handed, in metres, with the ground at y = 0; a host whose world is z up, left-handed or
+// in other units gives its own here, and hands every world-space input in its own frame and units: postfx
+// converts them once per frame, and what it hands back in world space (the volumetrics lookup,
+// cloudShadowTransform) is in the host's frame too. Media properties stay in metres (densities per metre,
+// heights and scale heights, distances in the settings); a height is along the host's up axis, above its
+// plane up = 0. Fixed at create time.
+enum class UpAxis : uint32_t { Y, Z };             // another value (cast from an int) is rejected
+enum class Handedness : uint32_t { Right, Left };  // another value (cast from an int) is rejected
+inline constexpr double kMinUnitsPerMetre = 1e-3;  // kilometres
+inline constexpr double kMaxUnitsPerMetre = 1e3;   // millimetres
+struct WorldFrame {
+    UpAxis up = UpAxis::Y;  // the world's up axis: Y (Vulkan, glTF, Unity) or Z (Unreal, Blender)
+    Handedness handedness = Handedness::Right;  // Right (glTF, Blender) or Left (Unity, Unreal)
+    // The host's world units in one metre [1]: 1 for metres, 100 for centimetres (Unreal); in [1e-3, 1e3].
+    double unitsPerMetre = 1.0;
 };
 
 // One host image handed to postfx for one record() call. postfx never owns it: it uses the view the

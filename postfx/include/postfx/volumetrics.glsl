@@ -15,12 +15,15 @@
 #ifndef POSTFX_VOLUMETRICS_GLSL
 #define POSTFX_VOLUMETRICS_GLSL
 
-// The lookup's uniforms (postfx's C++ writes the same std140 layout).
+// The lookup's uniforms (postfx's C++ writes the same std140 layout). World positions are the host's, in
+// its world frame and units (ContextCreateInfo::world); distances along the view are in metres.
 struct PostfxLookupUniforms {
-    mat4 relativeToClip;  // camera-relative world position [m] -> the camera's clip space (Vulkan, y down)
-    mat4 clipToRelative;  // its inverse (postfx's passes)
-    vec4 camera;          // xyz: the camera's world position [m] (float); w: the frame's pre-exposure
-    vec4 slices;          // x: the first slice's end [m], y: the last's, z: ln(y / x), w: slice count
+    mat4 relativeToClip;  // camera-relative world position [host units] -> the camera's clip space (Vulkan,
+                          // y down)
+    mat4 clipToRelative;  // postfx's passes: clip space -> camera-relative position in postfx's frame [m]
+    vec4 camera;  // xyz: the camera's world position [host units] (float); w: the frame's pre-exposure
+    vec4 slices;  // x: the first slice's end [m], y: the last's, z: ln(y / x), w: slice count
+    vec4 world;   // x: metres per host unit (1 / unitsPerMetre); y, z, w: 0
 };
 
 // Texture z of distance t [m] >= x (slices.x): texel k holds (L, T) at the end of slice k, the slices'
@@ -47,10 +50,10 @@ struct PostfxVolumetrics {
     vec3 transmittance;  // T: from the camera to the point [1]
 };
 
-// (L, T) between the camera and the point at camera-relative position x [m] (world axes).
+// (L, T) between the camera and the point at camera-relative position x [host units] (world axes).
 PostfxVolumetrics postfxVolumetricsRelative(vec3 x) {
     vec4 clip = postfxLookup.relativeToClip * vec4(x, 1.0);
-    float t = length(x);
+    float t = length(x) * postfxLookup.world.x;                           // [m]
     if (!(clip.w > 0.0)) return PostfxVolumetrics(vec3(0.0), vec3(1.0));  // behind the camera
     vec2 uv = clamp(clip.xy / clip.w * 0.5 + 0.5, 0.0, 1.0);
     float near = postfxLookup.slices.x;
@@ -65,7 +68,7 @@ PostfxVolumetrics postfxVolumetricsRelative(vec3 x) {
     return PostfxVolumetrics(L, T);
 }
 
-// (L, T) between the camera and the point at world position p [m].
+// (L, T) between the camera and the point at world position p [host units].
 PostfxVolumetrics postfxVolumetrics(vec3 p) {
     return postfxVolumetricsRelative(p - postfxLookup.camera.xyz);
 }

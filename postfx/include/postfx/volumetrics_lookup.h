@@ -6,8 +6,9 @@
 // composited in that frame (the aerial perspective, the clouds in front of that distance, the ray-marched or
 // the froxel fog), composed in postfx's composite order. The host's forward pass binds it (a descriptor set
 // it allocates from the layout below, with binding numbers it chooses) and includes
-// "postfx/volumetrics.glsl": postfxVolumetrics(worldPos) returns (L, T), and the surface is composited as
-// surface·T + L, pre-exposed like everything postfx writes.
+// "postfx/volumetrics.glsl": postfxVolumetrics(worldPos) returns (L, T) at a world position in the host's
+// world frame and units (ContextCreateInfo::world), and the surface is composited as surface·T + L,
+// pre-exposed like everything postfx writes. The settings' distances are in metres.
 #pragma once
 
 #include <postfx/export.h>

@@ -5,6 +5,7 @@
 #include "atmosphere/atmosphere_model.h"
 #include "atmosphere/atmosphere_orders.h"
 #include "atmosphere/atmosphere_reference.h"
+#include "core/world_frame.h"
 
 #include <postfx/atmosphere.h>
 
@@ -140,20 +141,24 @@ Vec3 toFloat(const dvec3& v) {
 }  // namespace
 
 Vec3 atmosphereSunTransmittance(const AtmosphereSettings& settings, const DVec3& worldPosition,
-                                const Vec3& toSun) {
+                                const Vec3& toSun, const WorldFrame& world) {
+    const core::WorldTransform frame(world);
     dvec3 s;
-    if (!unitDirection(toSun, s)) return Vec3(0.0f);
+    if (!unitDirection(frame.direction(glm::vec3(toSun)), s)) return Vec3(0.0f);
     const Model m = atmosphere::modelFrom(settings);
-    const dvec3 x = atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, dvec3(worldPosition)));
+    const dvec3 x =
+        atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, frame.position(dvec3(worldPosition))));
     return toFloat(atmosphere::sunTransmittance(m, x, s, kSunTransmittanceSteps));
 }
 
 Vec3 atmosphereSkyIrradiance(const AtmosphereSettings& settings, const DVec3& worldPosition,
-                             const Vec3& toSun, const Vec3& sunIlluminance) {
+                             const Vec3& toSun, const Vec3& sunIlluminance, const WorldFrame& world) {
+    const core::WorldTransform frame(world);
     dvec3 s;
-    if (!unitDirection(toSun, s)) return Vec3(0.0f);
+    if (!unitDirection(frame.direction(glm::vec3(toSun)), s)) return Vec3(0.0f);
     const Model m = atmosphere::modelFrom(settings);
-    const dvec3 x = atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, dvec3(worldPosition)));
+    const dvec3 x =
+        atmosphere::clampAboveGround(m, atmosphere::planetCentred(m, frame.position(dvec3(worldPosition))));
     const std::shared_ptr<const PsiTable> psi =
         settings.multipleScattering == AtmosphereMultipleScattering::Hillaire ? psiTable(m) : nullptr;
     const std::shared_ptr<const atmosphere::OrdersTable> orders =

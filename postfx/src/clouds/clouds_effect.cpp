@@ -179,9 +179,13 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
     };
     u.noiseBase = glm::vec4(offset(basePeriod), float(1.0 / basePeriod));
     u.noiseDetail = glm::vec4(offset(detailPeriod), float(1.0 / detailPeriod));
+    // uv = ((x - originX) / |size|, (z - originZ) / size): a negative size runs v along -z
+    // (settingsToPostfx); the offsets wrapped by whole periods.
     const CloudCoverageMap& map = s.coverageMap;
-    u.coverageMap = glm::vec4(float(wrap(moved.x - map.originX, map.size)),
-                              float(wrap(moved.z - map.originZ, map.size)), float(1.0 / map.size), 0.0f);
+    const double mapEdge = std::abs(double(map.size));
+    u.coverageMap =
+        glm::vec4(float(wrap(moved.x - map.originX, mapEdge)), float(wrap(moved.z - map.originZ, mapEdge)),
+                  float(1.0 / mapEdge), float(1.0 / double(map.size)));
     u.shape = glm::vec4(s.coverage, float(1.0 / topFalloff(s.cloudType)), s.noise.detailStrength, s.density);
     u.phase = glm::vec4(s.anisotropyForward, s.anisotropyBack, s.lobeMix, s.albedo);
     const CloudMultipleScattering& ms = s.multipleScattering;
@@ -224,6 +228,11 @@ Status CloudsEffect::validate(const FrameInfo& frame) const {
             "turn "
             "clouds.noise off)"};
     return Status::success();
+}
+
+void CloudsEffect::toPostfxFrame(const core::WorldTransform& world, FrameInfo& frame,
+                                 core::WorldScratch&) const {
+    settingsToPostfx(world, frame.clouds);
 }
 
 bool CloudsEffect::active(const FrameInfo& frame) const {

@@ -172,7 +172,9 @@ double field(const Model& m, const dvec3& x, double h) {
     double map = 1.0;  // the host's coverage map at the point's world (x, z)
     if (m.coverageMap.present()) {
         const CloudCoverageMap& c = m.s.coverageMap;
-        map = m.coverageMap.sample(dvec2(world.x - c.originX, world.z - c.originZ) / double(c.size));
+        // A negative size runs v along -z (settingsToPostfx).
+        map = m.coverageMap.sample(dvec2(world.x - c.originX, world.z - c.originZ) /
+                                   dvec2(std::abs(double(c.size)), double(c.size)));
         if (!(map > 0.0)) return 0.0;
     }
     if (!m.s.noise.enabled) return map;

@@ -59,6 +59,22 @@ Status validateSettings(const CloudSettings& s) {
     return Status::success();
 }
 
+void settingsToPostfx(const core::WorldTransform& world, CloudSettings& s) {
+    s.wind = world.direction(glm::vec3(s.wind));
+    // boxToWorld = R_up(yaw)·R_x(pitch) on the host's axes; R·R_a(θ)·R⁻¹ = R_{R·a}(det R · θ) for the
+    // signed permutation R, which takes the host's up to +y and its x to +x.
+    s.box.center = world.position(s.box.center);
+    s.box.halfSize = world.extent(glm::vec3(s.box.halfSize));
+    s.box.yawDeg = float(world.determinant()) * s.box.yawDeg;
+    s.box.pitchDeg = float(world.determinant()) * s.box.pitchDeg;
+    // v = (h - originZ)/size along the host's axis h = sign·z·u: v = (z - sign·originZ/u) / (sign·size/u).
+    CloudCoverageMap& map = s.coverageMap;
+    const double vSign = world.sign(2);
+    map.originX = world.length(map.originX);
+    map.originZ = vSign * world.length(map.originZ);
+    map.size = float(vSign * world.length(map.size));
+}
+
 }  // namespace postfx::clouds
 
 namespace postfx {

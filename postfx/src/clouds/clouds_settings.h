@@ -3,6 +3,8 @@
 
 #include <postfx/clouds.h>
 
+#include "core/world_frame.h"
+
 namespace postfx::clouds {
 
 inline constexpr double kMaxHeight = 1e6;                    // bottom / top height [m]
@@ -39,5 +41,12 @@ inline constexpr QualityPreset kQualityPresets[] = {
 };
 
 Status validateSettings(const CloudSettings& settings);
+
+// The settings' world-space fields in postfx's frame (core/world_frame.h; checked in the host's): the
+// wind (m/s along the host's axes), the box (its centre and half sizes, its yaw about the up axis and
+// pitch about its x with a mirror's sign) and the coverage map's placement. The map's u runs along the
+// host's x, postfx's +x; its v along the host's other horizontal axis, which is postfx's z or -z: in
+// postfx's frame a negative `size` says v runs along -z (|size| is the map's edge).
+void settingsToPostfx(const core::WorldTransform& world, CloudSettings& settings);
 
 }  // namespace postfx::clouds

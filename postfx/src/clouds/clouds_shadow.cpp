@@ -1,6 +1,7 @@
 #include "clouds/clouds_shadow.h"
 
 #include "clouds/clouds_model.h"
+#include "clouds/clouds_settings.h"
 #include "common/cloud_shadow.h"
 
 #include <cmath>
@@ -42,9 +43,11 @@ ShadowMapGeometry shadowMapGeometry(const FrameInfo& frame) {
 
 namespace postfx {
 
-// uv.x = (P.x + (y_b - P.y)·s_x - c_x) / E + 1/2 with s = toSun.xz / toSun.y (P moved along the sun's
-// direction onto the plane y = y_b), the same for uv.y with z.
-CloudShadowTransform cloudShadowTransform(const FrameInfo& frame) {
+namespace {
+
+// In postfx's frame: uv.x = (P.x + (y_b - P.y)·s_x - c_x) / E + 1/2 with s = toSun.xz / toSun.y (P moved
+// along the sun's direction onto the plane y = y_b), the same for uv.y with z.
+CloudShadowTransform postfxTransform(const FrameInfo& frame) {
     CloudShadowTransform t;
     if (!common::castsCloudShadows(frame)) return t;
     const glm::dvec3 sun = clouds::toSun(frame);
@@ -53,6 +56,22 @@ CloudShadowTransform cloudShadowTransform(const FrameInfo& frame) {
     const double sx = sun.x / sun.y, sz = sun.z / sun.y, e = g.extent;
     t.u = {1.0 / e, -sx / e, 0.0, (sx * g.center.y - g.center.x) / e + 0.5};
     t.v = {0.0, -sz / e, 1.0 / e, (sz * g.center.y - g.center.z) / e + 0.5};
+    return t;
+}
+
+}  // namespace
+
+CloudShadowTransform cloudShadowTransform(const FrameInfo& frame, const WorldFrame& world) {
+    const core::WorldTransform transform(world);
+    if (transform.identity()) return postfxTransform(frame);
+    // The frame's inputs the map depends on in postfx's frame; the rows then read the host's positions.
+    FrameInfo f = frame;
+    f.camera = transform.camera(frame.camera);
+    f.sun.toSun = transform.direction(glm::vec3(frame.sun.toSun));
+    clouds::settingsToPostfx(transform, f.clouds);
+    CloudShadowTransform t = postfxTransform(f);
+    for (DVec4* row : {&t.u, &t.v})
+        *row = DVec4(transform.hostRow(glm::dvec3(*row)), row->w);
     return t;
 }
 

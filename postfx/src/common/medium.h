@@ -8,6 +8,7 @@
 #include <postfx/result.h>
 
 #include "common/medium_shared.h"
+#include "core/world_frame.h"
 
 #include <string>
 
@@ -26,6 +27,12 @@ Status checkMediumRules(const FogMedium& medium, const std::string& prefix);
 // color as it is, so the analytic tail (which has no noise term) never adds fog to an empty medium.
 inline bool fogMediumEmpty(const FogMedium& s, bool noiseEnabled) {
     return s.density <= 0.0f || (noiseEnabled && (s.noise.multiplier <= 0.0f || s.noise.threshold >= 1.0f));
+}
+
+// The medium's one world-space field in postfx's frame (core/world_frame.h): the noise's wind, given along
+// the host's axes in m/s (its ranges hold either way: a signed permutation of a box is the box).
+inline void mediumToPostfx(const core::WorldTransform& world, FogMedium& medium) {
+    medium.noise.wind = world.direction(glm::vec3(medium.noise.wind));
 }
 
 // Empty-space skipping (fog.md, "Empty space"): the optical depth that the march may leave out.

@@ -226,7 +226,7 @@ Status checkDepthConvention(const Mat4& projection, const DepthConvention& depth
                    " view units): create the context with the projection's convention");
 }
 
-Status checkCamera(const CameraInput& camera, const std::string& prefix) {
+Status checkCamera(const CameraInput& camera, const std::string& prefix, double unitsPerMetre) {
     for (int c = 0; c < 3; ++c)
         if (Status s = checkRange((prefix + ".position").c_str(), camera.position[c], -kMaxWorldCoordinate,
                                   kMaxWorldCoordinate);
@@ -243,7 +243,10 @@ Status checkCamera(const CameraInput& camera, const std::string& prefix) {
         std::abs(glm::determinant(clip)) < 1e-30)
         return invalid(prefix + ".projection: projection · view rotation is not invertible");
     // The effects reconstruct view rays through the inverse, which the GPU gets in float.
-    if (!finiteAsFloat(glm::inverse(clip)))
+    glm::dmat4 inverse = glm::inverse(clip);
+    for (int c = 0; c < 4; ++c)
+        inverse[c] = glm::dvec4(glm::dvec3(inverse[c]) / unitsPerMetre, inverse[c].w);
+    if (!finiteAsFloat(inverse))
         return invalid(prefix + ".projection: projection · view rotation is nearly singular (its inverse " +
                        "is not finite in float)");
     return Status::success();
@@ -266,9 +269,13 @@ Status checkTime(double timeSeconds, const std::string& field) {
     return checkRange(field.c_str(), timeSeconds, -kMaxTimeSeconds, kMaxTimeSeconds);
 }
 
-Status checkShadowTransform(const DMat4& worldToClip, const DVec3& camera, const std::string& field) {
+Status checkShadowTransform(const DMat4& worldToClip, const DVec3& camera, const std::string& field,
+                            double unitsPerMetre) {
     if (!allFinite(worldToClip)) return invalid(field + ": is not finite");
-    if (!finiteAsFloat(glm::dmat4(worldToClip) * glm::translate(glm::dmat4(1.0), glm::dvec3(camera))))
+    glm::dmat4 relative = glm::dmat4(worldToClip) * glm::translate(glm::dmat4(1.0), glm::dvec3(camera));
+    for (int c = 0; c < 3; ++c)
+        relative[c] *= unitsPerMetre;
+    if (!finiteAsFloat(relative))
         return invalid(field + ": worldToClip · translate(camera.position) is not finite in float");
     return Status::success();
 }
@@ -363,7 +370,8 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
     if (!(frame.budgetMs >= 0.0f && frame.budgetMs <= kMaxBudgetMs))
         return invalid("FrameInfo.budgetMs: " + numberText(frame.budgetMs) + " is outside [0, " +
                        numberText(kMaxBudgetMs) + "]");
-    if (Status s = checkCamera(frame.camera, "FrameInfo.camera"); !s) return s;
+    const double units = info.world.unitsPerMetre;
+    if (Status s = checkCamera(frame.camera, "FrameInfo.camera", units); !s) return s;
     if (Status s = checkDepthConvention(frame.camera.projection, info.depth); !s) return s;
     if (Status s = checkLighting(frame.sun, frame.ambient, "FrameInfo."); !s) return s;
     const ShadowMapInput& shadow = frame.shadowMap;
@@ -374,7 +382,7 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
                              VK_IMAGE_USAGE_SAMPLED_BIT, nullptr};
         if (Status s = checkImage(shadow.image, rule); !s) return s;
         if (Status s = checkShadowTransform(shadow.worldToClip, frame.camera.position,
-                                            "FrameInfo.shadowMap.worldToClip");
+                                            "FrameInfo.shadowMap.worldToClip", units);
             !s)
             return s;
         if (!(shadow.depthBias >= 0.0f) || !std::isfinite(shadow.depthBias))
@@ -389,11 +397,11 @@ Status checkSharedInputs(const FrameInfo& frame, const ContextCreateInfo& info) 
     for (uint32_t i = 0; i < frame.lightCount; ++i)
         if (Status s = checkLight(frame.lights[i], "FrameInfo.lights[" + std::to_string(i) + "]"); !s)
             return s;
-    if (Status s = checkLocalShadows(frame); !s) return s;
+    if (Status s = checkLocalShadows(frame, units); !s) return s;
     return checkPreExposure(frame);
 }
 
-Status checkLocalShadows(const FrameInfo& frame) {
+Status checkLocalShadows(const FrameInfo& frame, double unitsPerMetre) {
     const LocalShadowAtlasInput& atlas = frame.localShadows;
     for (uint32_t i = 0; i < frame.lightCount; ++i) {
         const uint32_t shadow = frame.lights[i].shadow;
@@ -410,7 +418,7 @@ Status checkLocalShadows(const FrameInfo& frame) {
     if (Status s = checkImage(atlas.image, rule); !s) return s;
     return checkLocalShadowList(atlas.shadows, atlas.shadowCount, atlas.image.extent.width,
                                 atlas.image.extent.height, frame.camera.position,
-                                "FrameInfo.localShadows.shadows");
+                                "FrameInfo.localShadows.shadows", unitsPerMetre);
 }
 
 Status checkPreExposure(const FrameInfo& frame) {
@@ -438,7 +446,7 @@ Status checkPreExposure(const FrameInfo& frame) {
 }
 
 Status checkLocalShadowList(const LocalShadow* shadows, uint32_t count, uint32_t width, uint32_t height,
-                            const DVec3& camera, const std::string& name) {
+                            const DVec3& camera, const std::string& name, double unitsPerMetre) {
     if (count > kMaxLocalLights)
         return invalid(name + ": " + std::to_string(count) + " shadows exceed kMaxLocalLights (" +
                        std::to_string(kMaxLocalLights) + ")");
@@ -464,7 +472,9 @@ Status checkLocalShadowList(const LocalShadow* shadows, uint32_t count, uint32_t
                                std::to_string(face.offset.y) + ") + extent " + std::to_string(face.extent.x) +
                                "x" + std::to_string(face.extent.y) + " is outside the atlas " +
                                (std::to_string(width) + "x" + std::to_string(height)));
-            if (Status s = checkShadowTransform(face.worldToClip, camera, fn + ".worldToClip"); !s) return s;
+            if (Status s = checkShadowTransform(face.worldToClip, camera, fn + ".worldToClip", unitsPerMetre);
+                !s)
+                return s;
             const glm::dmat4 m(face.worldToClip);
             const double det = glm::determinant(m);
             if (!(std::abs(det) > 0.0) || !allFinite(glm::inverse(m)))

@@ -83,25 +83,30 @@ Status checkPreExposure(const FrameInfo& frame);
 // FrameInfo::localShadows and the lights' shadow indices: every light's shadow kNoLocalShadow or below
 // shadowCount; with an atlas or shadows, the atlas image, each shadow's face count and bias, each face's
 // region inside the atlas and its transform finite, finite camera-relative in float, and invertible.
-Status checkLocalShadows(const FrameInfo& frame);
+Status checkLocalShadows(const FrameInfo& frame, double unitsPerMetre = 1.0);
 // The shadows alone (also used by the CPU reference): at most kMaxLocalLights, not null when count > 0, each
 // one's faces and bias, each face inside a width × height atlas, its transform as above. `name` names the
 // array ("FrameInfo.localShadows.shadows").
+// `unitsPerMetre` (ContextCreateInfo::world) scales the camera-relative transforms as postfx's frame has
+// them.
 Status checkLocalShadowList(const LocalShadow* shadows, uint32_t count, uint32_t width, uint32_t height,
-                            const DVec3& camera, const std::string& name);
+                            const DVec3& camera, const std::string& name, double unitsPerMetre = 1.0);
 
 // The camera alone (also used by the CPU references): position within ±kMaxWorldCoordinate, view and
 // projection finite, projection times the view's rotation invertible with an inverse finite in float.
-// `prefix` names the struct ("FrameInfo.camera").
-Status checkCamera(const CameraInput& camera, const std::string& prefix);
+// `prefix` names the struct ("FrameInfo.camera"). With the host's `unitsPerMetre` the inverse is checked as
+// postfx's frame has it (WorldTransform::camera: its x, y, z rows divided by it).
+Status checkCamera(const CameraInput& camera, const std::string& prefix, double unitsPerMetre = 1.0);
 // The sun and ambient: finite, illuminance and ambient in [0, 1e7], a direction of length >= 1e-6 (as
 // computed in double). `prefix` is put before "sun." and "ambient" ("FrameInfo.").
 Status checkLighting(const SunInput& sun, const Vec3& ambient, const std::string& prefix);
 // The frame's time: finite, within ±kMaxTimeSeconds. `field` names it.
 Status checkTime(double timeSeconds, const std::string& field);
 // The shadow map's transform (also used by the CPU references): finite, and worldToClip · translate(camera)
-// (the camera-relative transform the GPU gets in float) finite in float. `field` names the matrix.
-Status checkShadowTransform(const DMat4& worldToClip, const DVec3& camera, const std::string& field);
+// (the camera-relative transform the GPU gets in float, in postfx's frame: its x, y, z columns times the
+// host's `unitsPerMetre`) finite in float. `field` names the matrix.
+Status checkShadowTransform(const DMat4& worldToClip, const DVec3& camera, const std::string& field,
+                            double unitsPerMetre = 1.0);
 // One local light (also used by the CPU references): type, position within ±kMaxWorldCoordinate, intensity
 // in [0, 1e9], range, source radius, cone angles, a spot's direction. `name` names it
 // ("FrameInfo.lights[2]").

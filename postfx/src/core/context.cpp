@@ -4,6 +4,7 @@
 #include "core/context_impl.h"
 #include "core/lookup_volume.h"
 #include "core/target.h"
+#include "core/world_frame.h"
 #include "effects.h"
 
 #include <string>
@@ -42,7 +43,7 @@ Status validateCreateInfo(const ContextCreateInfo& info) {
     if (info.framesInFlight == 0 || info.framesInFlight > kMaxFramesInFlight)
         return invalid("ContextCreateInfo.framesInFlight is " + std::to_string(info.framesInFlight) +
                        ": must be in 1.." + std::to_string(kMaxFramesInFlight));
-    return Status::success();
+    return core::checkWorldFrame(info.world, "ContextCreateInfo.world");
 }
 
 }  // namespace
@@ -100,6 +101,7 @@ Status Context::create(const ContextCreateInfo& info, std::unique_ptr<Context>& 
 
     auto impl = std::make_unique<Impl>();
     impl->info = info;
+    impl->world = core::WorldTransform(info.world);
     core::Gpu& gpu = impl->gpu;
     if (Status s = gpu.init(info); !s) return s;
 
@@ -148,7 +150,7 @@ const ContextCreateInfo& Context::createInfo() const {
 }
 
 Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& autoQuality,
-                                   FrameInfo& resolved, core::Frame& out,
+                                   FrameInfo& resolved, core::WorldScratch& scratch, core::Frame& out,
                                    std::vector<AutoUse>* measuring) const {
     if (Status s = core::checkSharedInputs(frame, info); !s) return s;
     core::TargetStore targetStore = core::TargetStore::Blit;
@@ -205,8 +207,15 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
     }
     for (const auto& effect : effects)
         if (Status s = effect->validate(resolved); !s) return s;
+    // Checked in the host's frame, so that messages name its values; from here on, postfx's own.
+    if (!world.identity()) {
+        core::sharedInputsToPostfx(world, resolved, scratch);
+        for (const auto& effect : effects)
+            effect->toPostfxFrame(world, resolved, scratch);
+    }
 
     graph.begin(out, resolved);
+    out.world = world;
     out.shareDepth = activeCount >= 2;
     core::declareTargetLoad(graph, out);
     for (size_t e = 0; e < effects.size(); ++e) {
@@ -228,7 +237,8 @@ Status Context::plan(const FrameInfo& frame, FramePlan& out) const {
     core::AutoQuality autoQuality = impl.autoQuality;
     FrameInfo resolved;
     core::Frame declared;
-    if (Status s = impl.prepareFrame(frame, autoQuality, resolved, declared, nullptr); !s) return s;
+    if (Status s = impl.prepareFrame(frame, autoQuality, resolved, impl.planScratch, declared, nullptr); !s)
+        return s;
     impl.graph.plan(declared, out);
     return Status::success();
 }
@@ -237,7 +247,9 @@ Status Context::record(const FrameInfo& frame) {
     Impl& impl = *impl_;
     if (!frame.commandBuffer) return core::invalid("FrameInfo.commandBuffer is VK_NULL_HANDLE");
     std::vector<Impl::AutoUse> measuring;
-    if (Status s = impl.prepareFrame(frame, impl.autoQuality, impl.resolved, impl.frame, &measuring); !s)
+    if (Status s = impl.prepareFrame(frame, impl.autoQuality, impl.resolved, impl.recordScratch, impl.frame,
+                                     &measuring);
+        !s)
         return s;
     for (const Impl::AutoUse& m : measuring)
         if (m.preset != ~0u && !impl.timer.enabled() && !impl.warnedAutoWithoutTimings) {

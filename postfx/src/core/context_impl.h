@@ -12,6 +12,7 @@
 #include "core/gpu.h"
 #include "core/pass_timer.h"
 #include "core/retirement.h"
+#include "core/world_frame.h"
 
 #include <memory>
 #include <vector>
@@ -26,8 +27,13 @@ struct POSTFX_INTERNAL Context::Impl {
     std::vector<std::unique_ptr<core::Effect>> effects;          // in composite order
     core::AutoQuality autoQuality;
     core::FrameGraph graph;
-    core::Frame frame;   // record()'s declarations, reused from frame to frame
-    FrameInfo resolved;  // record()'s frame with presets applied
+    core::Frame frame;           // record()'s declarations, reused from frame to frame
+    FrameInfo resolved;          // record()'s frame with presets applied, in postfx's world frame
+    core::WorldTransform world;  // ContextCreateInfo::world
+    // The converted frames' arrays (lights, shadows, an effect's), record()'s and plan()'s apart: a plan()
+    // between two record()s leaves record()'s frame as it was.
+    core::WorldScratch recordScratch;
+    mutable core::WorldScratch planScratch;
     bool warnedAutoWithoutTimings = false;
     // The last recorded frame's volumetrics lookup (Context::volumetricsLookup).
     bool lookupRecorded = false;
@@ -40,14 +46,15 @@ struct POSTFX_INTERNAL Context::Impl {
     void warn(const std::string& message) const;
 
     // `frame` checked, each active effect's preset chosen (Auto: by `autoQuality`) and applied into
-    // `resolved`, and the frame declared and compiled into `out`. `measuring` receives, per effect, the
+    // `resolved`, converted into postfx's world frame (its arrays into `scratch`), and the frame declared
+    // and compiled into `out`. `measuring` receives, per effect, the
     // Auto key and preset to report after recording (preset ~0u: none).
     struct AutoUse {
         core::AutoQualityKey key;
         uint32_t preset = ~0u;
     };
     Status prepareFrame(const FrameInfo& frame, core::AutoQuality& autoQuality, FrameInfo& resolved,
-                        core::Frame& out, std::vector<AutoUse>* measuring) const;
+                        core::WorldScratch& scratch, core::Frame& out, std::vector<AutoUse>* measuring) const;
 
     core::DescriptorArena& arena(uint64_t frameIndex) { return *arenas[frameIndex % arenas.size()]; }
     int effectIndex(std::string_view name) const;

@@ -13,6 +13,8 @@
 namespace postfx::core {
 
 class FrameBuilder;
+class WorldScratch;
+class WorldTransform;
 
 // How the frame asks an effect's quality to be chosen.
 struct QualityRequest {
@@ -50,6 +52,13 @@ public:
     // Bits of `frame` besides the color extent that change the presets' cost; Auto measures each
     // combination separately.
     virtual uint32_t autoFeatures(const FrameInfo& /*frame*/) const { return 0; }
+
+    // Converts the world-space fields of the effect's own settings in `frame` (checked, still in the host's
+    // world frame) into postfx's (core/world_frame.h): positions, sizes and directions of what it places in
+    // the world; an array they point to is copied into `scratch` first. Media properties stay as they are.
+    // Called for every effect, once per record() and plan(), when the host's frame is not postfx's.
+    virtual void toPostfxFrame(const WorldTransform& /*world*/, FrameInfo& /*frame*/,
+                               WorldScratch& /*scratch*/) const {}
 
     // Declares the frame's resources and passes into `builder` (frame validated, preset applied, the
     // effect active). Must not create GPU objects or change the effect: plan() calls it too.

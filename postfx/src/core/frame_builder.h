@@ -7,6 +7,7 @@
 
 #include "core/compute_pipeline.h"
 #include "core/gpu_resources.h"
+#include "core/world_frame.h"
 
 #include <array>
 #include <cstdint>
@@ -109,6 +110,9 @@ struct Frame {
     // Two or more of the frame's effects read the host's depth: postfx.view_distance unprojects it once
     // for all of them (FrameBuilder::depthInput); set by the context before the effects declare.
     bool shareDepth = false;
+    // The host's world frame (ContextCreateInfo::world): `info` is already in postfx's; what postfx hands
+    // back in world space (the volumetrics lookup's uniforms) is converted back with it.
+    WorldTransform world;
     bool composited = false;  // a pass has written the composite target
     // postfx.target: the RGBA16F image the effects composite into when the host's color cannot be
     // composited in place (core/target.h); kNoResource otherwise.

@@ -17,13 +17,16 @@ constexpr Binding kClearBindings[] = {kLookupUniformsBinding, kLookupScatteringB
 const ComputePipelineDesc kClear{"postfx.lookup_clear", spirv::core_lookup_clear_comp, kClearBindings,
                                  kLookupPushBytes};
 
-gpu::LookupUniforms lookupUniforms(const FrameInfo& frame) {
+// `frame` in postfx's world frame; the host's shaders get its camera and its camera-relative positions back
+// in its own (`world`), postfx's passes the inverse in postfx's.
+gpu::LookupUniforms lookupUniforms(const FrameInfo& frame, const WorldTransform& world) {
     const VolumetricsLookupSettings& s = frame.volumetricsLookup;
     const glm::dmat4 relativeToClip = glm::dmat4(frame.camera.projection) * rotationOnly(frame.camera.view);
     gpu::LookupUniforms u{};
-    u.relativeToClip = glm::mat4(relativeToClip);
+    u.relativeToClip = glm::mat4(relativeToClip * world.toPostfx());
     u.clipToRelative = glm::mat4(glm::inverse(relativeToClip));
-    u.camera = glm::vec4(glm::vec3(frame.camera.position), frame.preExposure);
+    u.camera = glm::vec4(glm::vec3(world.hostPosition(frame.camera.position)), frame.preExposure);
+    u.world = glm::vec4(float(1.0 / world.unitsPerMetre()), 0.0f, 0.0f, 0.0f);
     u.slices = glm::vec4(s.nearDistance, s.maxDistance,
                          float(std::log(double(s.maxDistance) / double(s.nearDistance))), float(s.extent.z));
     return u;
@@ -47,7 +50,7 @@ LookupTarget FrameBuilder::lookupTarget() {
         const ImageRef transmittance = context.transientImage(kLookupTransmittance, desc);
         context.exportImage(scattering);
         context.exportImage(transmittance);
-        const gpu::LookupUniforms u = lookupUniforms(*f_.info);
+        const gpu::LookupUniforms u = lookupUniforms(*f_.info, f_.world);
         f_.lookupUniforms = context.uniforms(kLookupUniforms, &u, sizeof u).index;
         f_.lookupScattering = scattering.index;
         f_.lookupTransmittance = transmittance.index;

@@ -1,6 +1,7 @@
 #include "fog/fog_effect.h"
 
 #include "common/cloud_shadow.h"
+#include "common/medium.h"
 #include "common/medium_noise.h"
 #include "common/shared_resources.h"
 #include "core/checks.h"
@@ -128,6 +129,11 @@ Status FogEffect::validate(const FrameInfo& frame) const {
     if (Status s = common::checkNoiseSupported(frame.fog.noise, noiseFormatSupported_, "FrameInfo.fog"); !s)
         return s;
     return Status::success();
+}
+
+void FogEffect::toPostfxFrame(const core::WorldTransform& world, FrameInfo& frame,
+                              core::WorldScratch&) const {
+    common::mediumToPostfx(world, frame.fog);
 }
 
 bool FogEffect::active(const FrameInfo& frame) const {

@@ -52,6 +52,9 @@ public:
     std::vector<double> presetErrors() const override;
     uint32_t autoFeatures(const FrameInfo& frame) const override;
 
+    // The noise's wind along postfx's axes.
+    void toPostfxFrame(const core::WorldTransform& world, FrameInfo& frame,
+                       core::WorldScratch& scratch) const override;
     Status declare(core::FrameBuilder& builder) const override;
     void recorded(const FrameInfo& frame, bool active) override;
 

@@ -187,6 +187,23 @@ Status FroxelFogEffect::validate(const FrameInfo& frame) const {
     return common::checkNoiseSupported(s.noise, noiseFormatSupported_, "FrameInfo.froxelFog");
 }
 
+void FroxelFogEffect::toPostfxFrame(const core::WorldTransform& world, FrameInfo& frame,
+                                    core::WorldScratch& scratch) const {
+    static constexpr char kVolumesSlot = 'v';
+    FroxelFogSettings& s = frame.froxelFog;
+    common::mediumToPostfx(world, s);
+    if (s.volumeCount == 0) return;
+    FogVolume* volumes = scratch.copy(&kVolumesSlot, s.volumes, s.volumeCount);
+    for (uint32_t i = 0; i < s.volumeCount; ++i) {
+        FogVolume& v = volumes[i];
+        v.center = world.position(v.center);
+        v.halfSize = world.extent(glm::vec3(v.halfSize));  // an axis-aligned box stays one
+        v.radius = float(world.length(v.radius));
+        v.edgeFalloff = float(world.length(v.edgeFalloff));
+    }
+    s.volumes = volumes;
+}
+
 bool FroxelFogEffect::active(const FrameInfo& frame) const {
     const FroxelFogSettings& s = frame.froxelFog;
     return s.enabled && (!common::fogMediumEmpty(s, s.noise.enabled) || volumesHoldDensity(s));

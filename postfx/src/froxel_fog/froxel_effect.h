@@ -41,6 +41,9 @@ public:
     Status validate(const FrameInfo& frame) const override;
     // Enabled, with a shared medium that is not empty or a fog volume that holds some density.
     bool active(const FrameInfo& frame) const override;
+    // The noise's wind and the fog volumes (copied) in postfx's frame.
+    void toPostfxFrame(const core::WorldTransform& world, FrameInfo& frame,
+                       core::WorldScratch& scratch) const override;
     Status declare(core::FrameBuilder& builder) const override;
     void recorded(const FrameInfo& frame, bool active) override;
 
