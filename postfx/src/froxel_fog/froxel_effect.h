@@ -42,6 +42,9 @@ public:
     // Enabled, with a shared medium that is not empty or a fog volume that holds some density.
     bool active(const FrameInfo& frame) const override;
     Status declare(core::FrameBuilder& builder) const override;
+    // The scatter pass's variants the lights select frame by frame: none, a loop over them, light lists,
+    // each with the local lights' shadows when the frame has an atlas with shadows.
+    void prewarmVariants(const FrameInfo& frame, core::PrewarmVariants& out) const override;
     void recorded(const FrameInfo& frame, bool active) override;
 
 private:
