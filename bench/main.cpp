@@ -9,6 +9,8 @@
 //   --atmosphere  the sky's LUT sizes and sample counts against reference (a) (bench/atmosphere_run.h)
 //   --clouds      the clouds' knobs and presets, converged and panning (bench/clouds_run.h)
 //   --frame       every effect together in the showcase scene, per preset and size (bench/frame_run.h)
+//   --first-frame the CPU time of a new context's first record(), prewarmed or not, with a pipeline cache
+//                 or not (bench/first_frame.h)
 // CPU only: --atmosphere-truth (the sky's path-traced table, bench/atmosphere_truth.h) and --clouds-slabs
 // (the clouds' multiple scattering against the path tracer, bench/clouds_slabs.h). --pipeline-stats prints
 // what the driver compiled the fog's march pipelines into (bench/pipeline_stats.h).
@@ -17,6 +19,7 @@
 #include "clouds_run.h"
 #include "clouds_slabs.h"
 #include "conclusions.h"
+#include "first_frame.h"
 #include "frame_run.h"
 #include "froxel_report.h"
 #include "froxel_run.h"
@@ -207,6 +210,17 @@ const char* kUsage =
     "  --frame-budget MS      also a row per fog with the clouds and the ray-marched fog on quality Auto\n"
     "                         under one frame budget (FrameInfo::budgetMs) [1; quick: 0]; 0: none\n"
     "                         quick also shrinks the clouds' shadow map to 64x64\n"
+    "first frame (--first-frame; docs/integration.md, \"Pipelines\"): the CPU time of record() in a new\n"
+    "context's first frames, on the showcase (froxel fog), its ray-marched fog version, and that one with\n"
+    "the clouds and the fog on quality Auto: without prewarm, after Context::prewarm, with a "
+    "VkPipelineCache\n"
+    "saved by an earlier context, both, and without again; pipelines compiled in each. Prints a table.\n"
+    "--size [1920x1080; quick: 160x90], --frames (after the first) [12; quick: 4], --validation apply;\n"
+    "quick also makes every LUT, volume, noise texture and shadow map small (the same pipelines).\n"
+    "  --first-frame          this mode (the drivers' shader disk caches are turned off for it)\n"
+    "  --driver-cache         leave the drivers' disk caches as the environment has them\n"
+    "  --first-frame-scenes LIST  of froxel (the showcase), raymarched (its ray-marched fog version), auto\n"
+    "                         (that one with the clouds and the fog on quality Auto) [all]\n"
     "pipeline statistics (--pipeline-stats): on a device of its own with "
     "VK_KHR_pipeline_executable_properties,\n"
     "compiles the fog's march pipelines (fog.raymarch at full size, reduced, reduced with temporal) and "
@@ -264,6 +278,9 @@ struct Args {
     // --frame
     bool frame = false;
     bool pipelineStats = false;  // --pipeline-stats: the fog march pipelines' driver statistics
+    bool firstFrame = false;     // --first-frame
+    bool driverCache = false;    // --driver-cache
+    std::vector<std::string> firstFrameScenes;              // --first-frame-scenes; empty: all
     std::vector<std::pair<uint32_t, uint32_t>> frameSizes;  // empty: the default
     std::vector<std::string> framePresets;                  // empty: the default
     double frameBudgetMs = -1.0;                            // < 0: the default
@@ -411,6 +428,17 @@ Args parseArgs(int argc, char** argv) {
             }
         } else if (a == "--pipeline-stats") {
             args.pipelineStats = true;
+        } else if (a == "--first-frame") {
+            args.firstFrame = true;
+        } else if (a == "--driver-cache") {
+            args.driverCache = true;
+        } else if (a == "--first-frame-scenes") {
+            args.firstFrameScenes = cli::splitList(value());
+            for (const std::string& scene : args.firstFrameScenes)
+                if (scene != "froxel" && scene != "raymarched" && scene != "auto")
+                    throw cli::UsageError{"--first-frame-scenes: '" + scene +
+                                          "' is not froxel, raymarched or auto"};
+            if (args.firstFrameScenes.empty()) throw cli::UsageError{"--first-frame-scenes is empty"};
         } else if (a == "--frame") {
             args.frame = true;
         } else if (a == "--frame-sizes") {
@@ -579,11 +607,17 @@ Args parseArgs(int argc, char** argv) {
                                   "' is not in --scenes"};
     }
     if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) + int(args.frame) + int(args.cloudsSlabs) +
-            int(args.atmosphereTruth) >
+            int(args.atmosphereTruth) + int(args.firstFrame) >
         1)
         throw cli::UsageError{
-            "--froxel, --atmosphere, --atmosphere-truth, --clouds, --clouds-slabs and --frame: "
+            "--froxel, --atmosphere, --atmosphere-truth, --clouds, --clouds-slabs, --frame and "
+            "--first-frame: "
             "one mode at a time"};
+    if (args.firstFrame) {
+        if (!sizeGiven) args.runner.width = quick ? 160 : 1920, args.runner.height = quick ? 90 : 1080;
+        if (!framesGiven) args.runner.frames = quick ? 4 : 12;
+        sizeGiven = framesGiven = true;
+    }
     if (args.atmosphereTruth) {
         if (!outGiven) args.out = "tests/atmosphere/data/path_traced_sky.csv";
         if (args.truthTarget == 0.0) args.truthTarget = quick ? 0.05 : 0.0025;
@@ -804,8 +838,22 @@ int runFrame(const Args& args, const std::string& command) {
     return bench::runFrame(a, command, utcNow());
 }
 
+int runFirstFrame(const Args& args, const std::string& command) {
+    bench::FirstFrameArgs a;
+    a.width = args.runner.width;
+    a.height = args.runner.height;
+    a.frames = args.runner.frames;
+    a.sceneDir = args.sceneDir;
+    a.validation = args.runner.validation;
+    a.driverCache = args.driverCache;
+    a.small = args.quick;
+    if (!args.firstFrameScenes.empty()) a.scenes = args.firstFrameScenes;
+    return bench::runFirstFrame(a, command);
+}
+
 int run(const Args& args, const std::string& command) {
     if (args.pipelineStats) return bench::runPipelineStats();
+    if (args.firstFrame) return runFirstFrame(args, command);
     if (args.frame) return runFrame(args, command);
     if (args.froxel) return runFroxel(args, command);
     if (args.clouds) return runClouds(args, command);

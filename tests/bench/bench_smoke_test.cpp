@@ -12,6 +12,7 @@
 // records, finite errors against reference (a), the report's sections).
 // BenchCloudsSmoke: `postfx-bench --clouds --quick` (its CSV's rows, the passes a still frame records,
 // finite errors against the clouds' reference, the report's sections).
+// BenchFirstFrameSmoke: `postfx-bench --first-frame --quick` (its table: prewarmed rows compile nothing).
 // ctest runs the suites as separate tests.
 // usage: bench_smoke_test POSTFX_BENCH SCENE_DIR OUT_DIR [gtest options]
 #include <gtest/gtest.h>
@@ -929,6 +930,57 @@ TEST_F(BenchFrameSmoke, CsvHasARowPerFogWithEveryEffectTimedAndAFiniteError) {
     const std::string md = readFile(out_ + "/results.md");
     for (const char* section : {"| device | ", "## Target", "| 64×36 | froxel | medium |"})
         EXPECT_NE(md.find(section), std::string::npos) << section;
+}
+
+// BenchFirstFrameSmoke: `postfx-bench --first-frame --quick` on the showcase alone, 2 frames after the
+// first, under the validation layer: a table row per setup, the prewarmed ones compiling no pipeline in
+// record(), the others compiling in the first.
+class BenchFirstFrameSmoke : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        std::filesystem::create_directories(gOut);
+        out_ = gOut + "/first_frame.txt";
+        const std::string command =
+            "'" + gBench +
+            "' --first-frame --quick --validation --frames 2 --first-frame-scenes froxel "
+            "--scene-dir '" +
+            gSceneDir + "' > '" + out_ + "'";
+        std::printf("running: %s\n", command.c_str());
+        std::fflush(stdout);
+        status_ = std::system(command.c_str());
+    }
+    static int status_;
+    static std::string out_;
+};
+int BenchFirstFrameSmoke::status_ = -1;
+std::string BenchFirstFrameSmoke::out_;
+
+TEST_F(BenchFirstFrameSmoke, PrewarmedRowsCompileNothingInRecord) {
+    const std::string text = readFile(out_);
+    ASSERT_EQ(status_, 0) << "postfx-bench --first-frame failed:\n" << text;
+    std::istringstream lines(text);
+    std::map<std::string, std::vector<std::string>> rows;  // setup -> its cells
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("| froxel | ", 0) != 0) continue;
+        std::vector<std::string> cells;
+        std::istringstream in(line.substr(1));
+        for (std::string cell; std::getline(in, cell, '|');)
+            cells.push_back(cell.substr(1, cell.size() - 2));
+        rows[cells.at(1)] = cells;
+    }
+    // The pipelines a cell counts: "228.2 (15)" -> 15.
+    auto pipelines = [](const std::string& cell) { return std::stoi(cell.substr(cell.rfind('(') + 1)); };
+    for (const char* setup : {"none", "prewarm", "cache", "cache + prewarm", "none, again"}) {
+        ASSERT_TRUE(rows.count(setup)) << setup << "\n" << text;
+        const std::vector<std::string>& r = rows.at(setup);
+        ASSERT_EQ(r.size(), 6u) << setup;
+        const bool prewarm = std::string(setup).find("prewarm") != std::string::npos;
+        EXPECT_EQ(pipelines(r[3]) == 0, prewarm) << setup << ": " << r[3];
+        EXPECT_EQ(pipelines(r[5]), 0) << setup << ": " << r[5];
+        if (prewarm) {
+            EXPECT_GT(pipelines(r[2]), 0) << setup << ": " << r[2];
+        }
+    }
 }
 
 // BenchRepeatSmoke: two runs of `postfx-bench --quick` on fog_default that differ only in how many frames

@@ -485,6 +485,13 @@ void froxelRows(std::vector<Row>& bad, std::vector<Row>& good) {
         good.push_back({r.field, r.value, froxel(r.set)});
 }
 
+// Device-memory callbacks for the create-info rows (create() allocates no device memory).
+VkResult refuseDeviceMemory(void*, const VkMemoryRequirements&, VkMemoryPropertyFlags,
+                            postfx::DeviceAllocation&) {
+    return VK_ERROR_OUT_OF_DEVICE_MEMORY;
+}
+void freeNoDeviceMemory(void*, const postfx::DeviceAllocation&) {}
+
 class CoreApiRanges : public GpuTest {
 protected:
     void SetUp() override {
@@ -584,6 +591,10 @@ TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {
              a.pfnInternalAllocation = [](void*, size_t, VkInternalAllocationType, VkSystemAllocationScope) {
              };
          })},
+        {"ContextCreateInfo.deviceMemory.free",
+         [](postfx::ContextCreateInfo& i) { i.deviceMemory.allocate = &refuseDeviceMemory; }},
+        {"ContextCreateInfo.deviceMemory.allocate",
+         [](postfx::ContextCreateInfo& i) { i.deviceMemory.free = &freeNoDeviceMemory; }},
         {"ContextCreateInfo.maxExtent",
          [](postfx::ContextCreateInfo& i) {
              i.maxExtent = {0, 16};
@@ -621,6 +632,9 @@ TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {
         EXPECT_NE(s.message.find(row.field), std::string::npos) << row.field << ": " << s.message;
         EXPECT_FALSE(created);
     }
+    VkPipelineCacheCreateInfo cacheInfo{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+    VkPipelineCache cache = VK_NULL_HANDLE;
+    ASSERT_EQ(vkCreatePipelineCache(host->device, &cacheInfo, nullptr, &cache), VK_SUCCESS);
     const CreateRow good[] = {
         {"framesInFlight 1", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 1; }},
         {"framesInFlight 8", [](postfx::ContextCreateInfo& i) { i.framesInFlight = 8; }},
@@ -638,6 +652,13 @@ TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {
          }},
         {"world.unitsPerMetre 1e-3", [](postfx::ContextCreateInfo& i) { i.world.unitsPerMetre = 1e-3; }},
         {"world.unitsPerMetre 1e3", [](postfx::ContextCreateInfo& i) { i.world.unitsPerMetre = 1e3; }},
+        // Borrowed, any cache of the device (or none, the default).
+        {"pipelineCache a host cache", [cache](postfx::ContextCreateInfo& i) { i.pipelineCache = cache; }},
+        {"deviceMemory both callbacks",
+         [](postfx::ContextCreateInfo& i) {
+             i.deviceMemory.allocate = &refuseDeviceMemory;
+             i.deviceMemory.free = &freeNoDeviceMemory;
+         }},
     };
     for (const CreateRow& row : good) {
         postfx::ContextCreateInfo info = hostHandles();
@@ -646,6 +667,7 @@ TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {
         const postfx::Status s = postfx::Context::create(info, created);
         EXPECT_TRUE(s.ok()) << row.field << ": " << s.message;
     }
+    vkDestroyPipelineCache(host->device, cache, nullptr);
 }
 
 // Derived quantities: fields valid one by one whose products overflowed float.

@@ -1,10 +1,10 @@
 // Fault injection: every fallible Vulkan call postfx makes fails in turn (tests/core/vulkan_interposer.h),
 // for scenarios that allocate (noise, shadow map, half resolution, separate RGBA32F output, timings off
-// with 3 frames in flight, quality Auto, images recreated every frame, all together). Each time, the call
-// that returns (create, record, readPassTimings) returns an error naming the failed Vulkan call, record() has
-// recorded nothing (the host may end, reset or even submit its command buffer), the same context records the
-// next frame with the same image as a run without faults, and once the context is destroyed every object it
-// created is destroyed.
+// with 3 frames in flight, quality Auto, images recreated every frame, all together, pipelines prewarmed).
+// Each time, the call that returns (create, record, readPassTimings) returns an error naming the failed
+// Vulkan call, record() has recorded nothing (the host may end, reset or even submit its command buffer), the
+// same context records the next frame with the same image as a run without faults, and once the context is
+// destroyed every object it created is destroyed.
 #include "fault_scene.h"
 #include "vulkan_interposer.h"
 
@@ -21,7 +21,8 @@ struct FaultScenario {
     FaultSceneOptions scene;
     uint32_t framesInFlight = 2;
     bool gpuTimings = true;
-    bool resize = false;  // odd frames 6x4 with a 32³ noise texture: images recreated every frame
+    bool resize = false;   // odd frames 6x4 with a 32³ noise texture: images recreated every frame
+    bool prewarm = false;  // Context::prewarm on the first frame, before its record()
 };
 
 // The scene of frame `f`.
@@ -100,7 +101,25 @@ protected:
 
         FogHarness harness(*host, gpu);
         uint64_t commandsBefore = 0;
-        harness.onBeforeRecord = [&](const postfx::FrameInfo&) { commandsBefore = interposer->commands(); };
+        bool prewarmed = false, prewarmFault = false;
+        harness.onBeforeRecord = [&](const postfx::FrameInfo& f) {
+            if (sc.prewarm && !prewarmed) {
+                // A failed prewarm leaves the context as it was: the frames go on as without faults.
+                prewarmed = true;
+                const bool firedBefore = interposer->fault().fired;
+                const postfx::Status p = context->prewarm(f);
+                prewarmFault = interposer->fault().fired && !firedBefore;
+                if (prewarmFault) {
+                    EXPECT_FALSE(p.ok()) << at << "prewarm() succeeded despite " << faultText();
+                    EXPECT_NE(p.message.find(interposer->fault().call), std::string::npos)
+                        << at << "prewarm()'s message does not name " << faultText() << ": " << p.message;
+                    interposer->disarm();
+                } else {
+                    EXPECT_TRUE(p.ok()) << at << p.message;
+                }
+            }
+            commandsBefore = interposer->commands();
+        };
         std::vector<uint64_t> recorded;  // frames record() succeeded for
         // Records frame f; true when it and its timings succeeded (a fault there has been checked).
         auto frame = [&](uint64_t f, bool expectClean) {
@@ -108,7 +127,7 @@ protected:
             Images out;
             const postfx::Status s = harness.run(*context, faultSceneImages(sceneAt(sc, f)),
                                                  faultSceneFrame(sceneAt(sc, f), f), out.color, &out.output);
-            const bool firedHere = interposer->fault().fired && !firedBefore;
+            const bool firedHere = interposer->fault().fired && !firedBefore && !(prewarmFault && f == 0);
             if (!s.ok()) {
                 EXPECT_TRUE(firedHere && !expectClean) << at << "frame " << f << ": " << s.message;
                 EXPECT_NE(s.message.find(interposer->fault().call), std::string::npos)
@@ -228,6 +247,12 @@ const FaultScenario kScenarios[] = {
     {"temporal_half_resolution",
      {.noise = true, .shadowMap = true, .resolutionScale = 0.5f, .temporal = true},
      2},
+    {"prewarm",
+     {.noise = true, .shadowMap = true, .resolutionScale = 0.5f, .temporal = true},
+     2,
+     true,
+     false,
+     true},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenarios, CoreFaultInjectionTest, ::testing::ValuesIn(kScenarios), scenarioName);

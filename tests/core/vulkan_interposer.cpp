@@ -70,6 +70,7 @@ struct State {
     PFN_vkVoidFunction real[kFnCount] = {};
     std::set<uint64_t> objects[size_t(VkObjectKind::Count)];
     uint64_t created[size_t(VkObjectKind::Count)] = {};
+    uint64_t pipelinesWithCache = 0;  // created with a VkPipelineCache
     uint64_t peak = 0;
     uint64_t commands = 0;
     uint64_t calls = 0;       // fallible calls since arm()
@@ -185,7 +186,10 @@ VkResult VKAPI_CALL createComputePipelines(VkDevice device, VkPipelineCache cach
     }
     const VkResult r = real<Fn::vkCreateComputePipelines>()(device, cache, count, infos, a, out);
     for (uint32_t i = 0; i < count; ++i)
-        if (out[i]) g->track(VkObjectKind::Pipeline, bits(out[i]), Fn::vkCreateComputePipelines);
+        if (out[i]) {
+            g->track(VkObjectKind::Pipeline, bits(out[i]), Fn::vkCreateComputePipelines);
+            if (cache) ++g->pipelinesWithCache;
+        }
     return r;
 }
 
@@ -378,6 +382,10 @@ uint64_t VulkanInterposer::live(VkObjectKind kind) const {
 
 uint64_t VulkanInterposer::created(VkObjectKind kind) const {
     return g->created[size_t(kind)];
+}
+
+uint64_t VulkanInterposer::pipelinesWithCache() const {
+    return g->pipelinesWithCache;
 }
 
 uint64_t VulkanInterposer::liveTotal() const {

@@ -64,8 +64,9 @@ public:
 
     uint64_t live(VkObjectKind kind) const;
     uint64_t created(VkObjectKind kind) const;  // since construction
-    uint64_t liveTotal() const;                 // every kind but mappings
-    uint64_t peakLiveTotal() const;             // since resetPeak()
+    uint64_t pipelinesWithCache() const;  // pipelines created with a VkPipelineCache, since construction
+    uint64_t liveTotal() const;           // every kind but mappings
+    uint64_t peakLiveTotal() const;       // since resetPeak()
     void resetPeak();
     std::string liveSummary() const;  // "Image 2, ImageView 2, ..." (kinds with live objects)
     uint64_t commands() const;        // vkCmd* calls recorded through the interposer

@@ -26,6 +26,32 @@
 
 namespace postfx {
 
+// A block of device memory the host hands postfx (DeviceMemoryCallbacks::allocate).
+struct DeviceAllocation {
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    VkDeviceSize offset = 0;  // where postfx binds its image or buffer; a multiple of the alignment asked
+    // For a request with VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT: memory's bytes at `offset`, mapped by the
+    // host and mapped while postfx holds the allocation (postfx never maps memory the host gave it).
+    void* mapped = nullptr;
+    void* handle = nullptr;  // the host's own (its allocator's allocation), handed back to free
+};
+
+// The host's device-memory allocator (ContextCreateInfo::deviceMemory; docs/integration.md, "Memory").
+// Called on the thread of the postfx call that creates or frees a resource (create, record, prewarm,
+// destroy).
+struct DeviceMemoryCallbacks {
+    // At least requirements.size bytes at an offset aligned to requirements.alignment, of a memory type
+    // among requirements.memoryTypeBits with every `required` flag (DEVICE_LOCAL for images and storage;
+    // HOST_VISIBLE | HOST_COHERENT, and DEVICE_LOCAL when the device has such a type, for the uniform
+    // rings). VK_SUCCESS, or an error (VK_ERROR_OUT_OF_DEVICE_MEMORY): postfx then returns OutOfMemory
+    // naming the resource, and calls nothing else for it.
+    VkResult (*allocate)(void* userData, const VkMemoryRequirements& requirements,
+                         VkMemoryPropertyFlags required, DeviceAllocation& out) = nullptr;
+    // Gives back an allocation `allocate` returned, once postfx has destroyed what was bound to it.
+    void (*free)(void* userData, const DeviceAllocation& allocation) = nullptr;
+    void* userData = nullptr;
+};
+
 struct ContextCreateInfo {
     // Leave as is: the size of the struct as the host's compiler laid it out, which create() compares with
     // the library's (a host built with other packing or another postfx header gets an error, not garbage).
@@ -42,6 +68,16 @@ struct ContextCreateInfo {
     // Optional, used for every Vulkan object; when given, pfnAllocation, pfnReallocation and pfnFree are set
     // and pfnInternalAllocation / pfnInternalFree both or neither (as Vulkan requires).
     const VkAllocationCallbacks* allocator = nullptr;
+
+    // Pipelines and device memory from the host (both optional; docs/integration.md, "Pipelines" and
+    // "Memory").
+    // Borrowed; when given, every pipeline postfx creates goes through it (a host that saves its data
+    // between runs compiles nothing postfx needs twice). The host keeps it alive while the context lives
+    // and synchronizes it as Vulkan requires (postfx creates pipelines in create(), record() and prewarm()).
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
+    // The device memory of every image and buffer postfx creates: default (both null) its own
+    // vkAllocateMemory per resource; given, the host's allocate and free, both or neither.
+    DeviceMemoryCallbacks deviceMemory;
 
     // Largest color/depth extent that record() accepts [pixels]; each side in [1, the device's
     // maxImageDimension2D] (postfx creates images up to this size).
@@ -167,6 +203,25 @@ struct BudgetChoice {
     std::vector<EffectChoice> effects;  // in composite order
 };
 
+// Device memory postfx holds (Context::memoryUsage): what its images and buffers were bound to.
+struct MemoryUsage {
+    struct Owner {
+        std::string name;      // "postfx" (the context's own), then each effect ("fog") in composite order
+        uint64_t bytes = 0;    // Σ VkMemoryRequirements::size of its images and buffers [bytes]
+        uint32_t images = 0;   // images held
+        uint32_t buffers = 0;  // buffers held (uniform rings)
+    };
+    // Σ owners[i].bytes + retiringBytes: what postfx's own vkAllocateMemory calls (or the host's
+    // DeviceMemoryCallbacks::allocate) were asked for and not yet freed [bytes].
+    uint64_t totalBytes = 0;
+    // Released images and buffers that frames in flight may still read, freed by a later record() [bytes].
+    uint64_t retiringBytes = 0;
+    // The context's own first ("postfx": the shared depth, the volumetrics lookup, postfx.copy's), then
+    // every registered effect, in composite order, 0 for one that is off. An image two effects share (a
+    // noise texture of one size and seed) counts once, for the effect that declared it first.
+    std::vector<Owner> owners;
+};
+
 class POSTFX_API Context {
 public:
     // Creates a context; on failure `out` stays empty and the status names the problem.
@@ -239,6 +294,21 @@ public:
     // Writes it into the host's `set` (allocated from a layout with volumetricsLookupLayout's bindings) at
     // `bindings`. Call after each record() that asked for it, before the host's commands that read it.
     Status writeVolumetricsLookup(VkDescriptorSet set, const VolumetricsLookupBindings& bindings) const;
+
+    // Pipelines and memory (docs/integration.md, "Pipelines" and "Memory").
+    //
+    // Creates every compute pipeline (every specialization) that frames with `frame`'s settings may
+    // record, so that none of them compiles in record(): the builds of persistent images (noise, LUTs),
+    // the first frame's and a camera cut's as well as the temporal frames', each preset of an effect on
+    // quality Auto (and every combination under FrameInfo::budgetMs), the sun lit and dark, the froxel
+    // fog's light variants (none, a loop over the lights, light lists, local shadows when an atlas is
+    // given). Checks `frame` like plan() (its command buffer may be null); records nothing and creates no
+    // image. The pipelines stay until the context is destroyed, whether or not frames use them (an effect
+    // turned off and on again compiles nothing); calls add up, so a host prewarms each combination of
+    // effects and settings it will switch to. On error the pipelines created before it stay.
+    Status prewarm(const FrameInfo& frame);
+    // The device memory postfx holds now, in total and per owner (the context, each effect). Does not fail.
+    Status memoryUsage(MemoryUsage& out) const;
 
     const ContextCreateInfo& createInfo() const;
 

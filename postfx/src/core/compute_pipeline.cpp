@@ -81,7 +81,7 @@ Status ComputePipeline::create(const Gpu& gpu, const ComputePipelineDesc& desc, 
     info.layout = layout_;
     VkPipeline pipeline = VK_NULL_HANDLE;
     s = vulkanStatus(
-        gpu.fn.vkCreateComputePipelines(gpu.device, VK_NULL_HANDLE, 1, &info, gpu.allocator, &pipeline),
+        gpu.fn.vkCreateComputePipelines(gpu.device, gpu.pipelineCache, 1, &info, gpu.allocator, &pipeline),
         (name_ + ": vkCreateComputePipelines").c_str());
     gpu.fn.vkDestroyShaderModule(gpu.device, module, gpu.allocator);
     if (!s) return reset(), s;

@@ -37,6 +37,10 @@ Status validateCreateInfo(const ContextCreateInfo& info) {
                 "ContextCreateInfo.allocator->pfnInternalAllocation and pfnInternalFree: give both or "
                 "neither");
     }
+    if (!info.deviceMemory.allocate != !info.deviceMemory.free)
+        return invalid(std::string("ContextCreateInfo.deviceMemory.") +
+                       (info.deviceMemory.allocate ? "free" : "allocate") +
+                       " is null: give both allocate and free, or neither");
     if (info.maxExtent.width == 0 || info.maxExtent.height == 0)
         return invalid("ContextCreateInfo.maxExtent is " + core::extentText(info.maxExtent) +
                        ": both sides must be > 0");
@@ -344,6 +348,20 @@ Status Context::recordImageReadback(ResourceName name, VkCommandBuffer commandBu
     if (!commandBuffer) return core::invalid("recordImageReadback: commandBuffer is VK_NULL_HANDLE");
     if (!buffer) return core::invalid("recordImageReadback: buffer is VK_NULL_HANDLE");
     return impl_->graph.recordReadback(name.value, commandBuffer, buffer, offset, extent, bytes);
+}
+
+Status Context::memoryUsage(MemoryUsage& out) const {
+    out = {};
+    out.owners.resize(1 + impl_->effects.size());
+    out.owners[0].name = "postfx";
+    for (size_t e = 0; e < impl_->effects.size(); ++e)
+        out.owners[1 + e].name = impl_->effects[e]->name();
+    impl_->graph.memoryUsage(out.owners);
+    out.retiringBytes = impl_->retirement.pendingBytes();
+    out.totalBytes = out.retiringBytes;
+    for (const MemoryUsage::Owner& o : out.owners)
+        out.totalBytes += o.bytes;
+    return Status::success();
 }
 
 Status Context::readPassTimings(uint64_t frameIndex, std::vector<PassTiming>& out) const {

@@ -16,6 +16,13 @@ class FrameBuilder;
 class WorldScratch;
 class WorldTransform;
 
+// Frames an effect adds to Context::prewarm's (Effect::prewarmVariants): `frames`, whose pointers may
+// point into `lights` (each inner vector keeps its storage when `lights` grows).
+struct PrewarmVariants {
+    std::vector<FrameInfo> frames;
+    std::vector<std::vector<LocalLight>> lights;
+};
+
 // How the frame asks an effect's quality to be chosen.
 struct QualityRequest {
     enum class Kind { Custom, Preset, Auto };
@@ -63,6 +70,11 @@ public:
     // Declares the frame's resources and passes into `builder` (frame validated, preset applied, the
     // effect active). Must not create GPU objects or change the effect: plan() calls it too.
     virtual Status declare(FrameBuilder& builder) const = 0;
+
+    // Context::prewarm: frames with `frame`'s settings whose passes may use other pipelines than its own,
+    // through what changes between frames without a change of settings, besides what the context varies
+    // itself (presets on Auto, camera cuts, the sun lit or dark). Appends to `out`; none by default.
+    virtual void prewarmVariants(const FrameInfo& /*frame*/, PrewarmVariants& /*out*/) const {}
 
     // Called once record() has recorded `frame` (validated, presets applied), for every effect, whether
     // `active` or not: an effect with a temporal history moves its state on (core/temporal.h). plan()

@@ -156,6 +156,19 @@ void FrameGraph::plan(const Frame& f, FramePlan& out) const {
     }
 }
 
+void FrameGraph::memoryUsage(std::vector<MemoryUsage::Owner>& owners) const {
+    for (const OwnedImage& o : images_) {
+        MemoryUsage::Owner& owner = owners[size_t(o.effect + 1)];
+        owner.bytes += o.image->bytes();
+        ++owner.images;
+    }
+    for (const OwnedBuffer& b : buffers_) {
+        MemoryUsage::Owner& owner = owners[size_t(b.effect + 1)];
+        owner.bytes += b.buffer->bytes();
+        ++owner.buffers;
+    }
+}
+
 // Creates what the compiled frame holds and releases what it no longer does; no command is recorded.
 Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement) {
     for (OwnedImage& o : images_)
@@ -179,6 +192,7 @@ Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement
                 if (Status s = image->create(*gpu_, r.desc, r.name); !s) return s;
                 OwnedImage o;
                 o.id = r.id;
+                o.effect = r.effect;
                 o.image = std::move(image);
                 images_.push_back(std::move(o));
                 it = images_.end() - 1;
@@ -201,7 +215,7 @@ Status FrameGraph::prepare(Frame& f, uint64_t frameIndex, Retirement& retirement
                         r.name);
                     !s)
                     return s;
-                buffers_.push_back({r.id, std::move(buffer), slot, false});
+                buffers_.push_back({r.id, r.effect, std::move(buffer), slot, false});
                 it = buffers_.end() - 1;
             }
             it->used = true;

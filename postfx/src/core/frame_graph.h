@@ -74,6 +74,19 @@ public:
     // The sampler of `kind`, created on first use.
     Status sampler(SamplerKind kind, VkSampler& out);
 
+    // The pipelines of `uses` not held yet are created, and all of them are kept until release(): not
+    // retired with their effect's passes, nor by the variants' limit (Context::prewarm).
+    struct PipelineUse {
+        const ComputePipelineDesc* desc = nullptr;
+        PipelineConstants constants;
+        int effect = -1;
+        bool operator==(const PipelineUse&) const = default;
+    };
+    Status prewarm(const std::vector<PipelineUse>& uses);
+    // Device memory of the images and buffers held now, added per owner: index 0 the context's, 1 + e
+    // effect e's (Context::memoryUsage; `owners` has 1 + the effects' count entries).
+    void memoryUsage(std::vector<MemoryUsage::Owner>& owners) const;
+
     // Objects held now (for tests): owned images, uniform rings and pipelines.
     size_t heldObjects() const { return images_.size() + buffers_.size() + pipelines_.size(); }
     // Pipelines held now whose description is named `name` (for tests): its specializations, for every
@@ -84,6 +97,7 @@ private:
     friend class FrameBuilder;
     struct OwnedImage {
         const ResourceId* id = nullptr;
+        int effect = -1;  // the declaring effect; -1: the context
         std::unique_ptr<GpuImage> image;
         VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
         bool pendingWrite = false;    // written since its writes were last made visible
@@ -101,6 +115,7 @@ private:
     };
     struct OwnedBuffer {
         const ResourceId* id = nullptr;
+        int effect = -1;
         std::unique_ptr<GpuBuffer> buffer;
         VkDeviceSize slotBytes = 0;
         bool used = false;
@@ -109,11 +124,12 @@ private:
         const ComputePipelineDesc* desc = nullptr;
         PipelineConstants constants;
         int effect = -1;
-        uint64_t lastUsed = 0;  // frame index
+        uint64_t lastUsed = 0;   // frame index
+        bool prewarmed = false;  // kept until release() (prewarm)
         std::unique_ptr<ComputePipeline> pipeline;
     };
-    // Specializations of one pipeline kept at once (a host switching between a few settings keeps each
-    // compiled); the least recently used beyond these is released.
+    // Specializations of one pipeline kept at once besides the prewarmed ones (a host switching between a
+    // few settings keeps each compiled); the least recently used beyond these is released.
     static constexpr size_t kMaxVariantsPerPipeline = 4;
     const OwnedImage* findImage(const ResourceId* id) const;
     Status prepare(Frame& frame, uint64_t frameIndex, Retirement& retirement);
@@ -122,7 +138,7 @@ private:
     void recordTransfer(const Frame& frame, const PassDecl& pass, const ImageInput* const* hostImages,
                         VkCommandBuffer cmd, PassTimer& timer) const;
     // Before a new specialization of `desc` is cached: releases its least recently used one when
-    // kMaxVariantsPerPipeline are held (never one this frame uses).
+    // kMaxVariantsPerPipeline are held (never one this frame uses, nor a prewarmed one).
     void retireOldestVariant(const ComputePipelineDesc* desc, uint64_t frameIndex, Retirement& retirement);
 
     const Gpu* gpu_ = nullptr;

@@ -1,6 +1,6 @@
 // The frame graph's cache of pipeline objects: a compute pipeline per description and specialization
-// constants (at most kMaxVariantsPerPipeline per description, an effect's kept while it records passes),
-// and the samplers.
+// constants (at most kMaxVariantsPerPipeline per description, an effect's kept while it records passes;
+// prewarmed ones until release()), and the samplers.
 #include "core/frame_graph.h"
 
 #include "core/frame_graph_internal.h"
@@ -37,7 +37,7 @@ void FrameGraph::retireOldestVariant(const ComputePipelineDesc* desc, uint64_t f
     size_t variants = 0;
     auto oldest = pipelines_.end();
     for (auto it = pipelines_.begin(); it != pipelines_.end(); ++it) {
-        if (it->desc != desc) continue;
+        if (it->desc != desc || it->prewarmed) continue;
         ++variants;
         if (it->lastUsed != frameIndex && (oldest == pipelines_.end() || it->lastUsed < oldest->lastUsed))
             oldest = it;
@@ -45,6 +45,22 @@ void FrameGraph::retireOldestVariant(const ComputePipelineDesc* desc, uint64_t f
     if (variants < kMaxVariantsPerPipeline || oldest == pipelines_.end()) return;
     retirement.retire(frameIndex, std::move(oldest->pipeline));
     pipelines_.erase(oldest);
+}
+
+Status FrameGraph::prewarm(const std::vector<PipelineUse>& uses) {
+    for (const PipelineUse& use : uses) {
+        auto it = std::find_if(pipelines_.begin(), pipelines_.end(), [&](const CachedPipeline& c) {
+            return c.desc == use.desc && c.constants == use.constants;
+        });
+        if (it == pipelines_.end()) {
+            auto pipeline = std::make_unique<ComputePipeline>();
+            if (Status s = pipeline->create(*gpu_, *use.desc, 0, use.constants); !s) return s;
+            pipelines_.push_back({use.desc, use.constants, use.effect, 0, true, std::move(pipeline)});
+        } else {
+            it->prewarmed = true;
+        }
+    }
+    return Status::success();
 }
 
 size_t FrameGraph::heldPipelines(const char* name) const {
@@ -56,12 +72,13 @@ size_t FrameGraph::heldPipelines(const char* name) const {
 // The pipelines of the compiled frame's live passes: created when first recorded, an effect's released
 // when it records none; checks that every binding of a pass's pipeline has a resource.
 Status FrameGraph::preparePipelines(Frame& f, uint64_t frameIndex, Retirement& retirement) {
-    // Pipelines: an effect's live as long as it records a pass; the context's own (postfx.copy) always.
+    // Pipelines: an effect's live as long as it records a pass; the context's own (postfx.copy) and
+    // prewarmed ones always.
     for (auto it = pipelines_.begin(); it != pipelines_.end();) {
-        const bool effectLive =
-            it->effect < 0 || std::any_of(f.passes.begin(), f.passes.end(), [&](const PassDecl& p) {
-                return p.live && p.effect == it->effect;
-            });
+        const bool effectLive = it->effect < 0 || it->prewarmed ||
+                                std::any_of(f.passes.begin(), f.passes.end(), [&](const PassDecl& p) {
+                                    return p.live && p.effect == it->effect;
+                                });
         if (!effectLive) {
             retirement.retire(frameIndex, std::move(it->pipeline));
             it = pipelines_.erase(it);
@@ -80,7 +97,7 @@ Status FrameGraph::preparePipelines(Frame& f, uint64_t frameIndex, Retirement& r
             auto pipeline = std::make_unique<ComputePipeline>();
             if (Status s = pipeline->create(*gpu_, *p.pipeline, 0, p.constants); !s) return s;
             retireOldestVariant(p.pipeline, frameIndex, retirement);
-            pipelines_.push_back({p.pipeline, p.constants, p.effect, frameIndex, std::move(pipeline)});
+            pipelines_.push_back({p.pipeline, p.constants, p.effect, frameIndex, false, std::move(pipeline)});
             it = pipelines_.end() - 1;
         }
         it->lastUsed = frameIndex;

@@ -12,6 +12,8 @@ struct Gpu {
     VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
     VkDevice device = VK_NULL_HANDLE;
     const VkAllocationCallbacks* allocator = nullptr;
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;  // the host's, for every pipeline (or none)
+    DeviceMemoryCallbacks deviceMemory;              // the host's allocator (both null: postfx's own)
     DeviceFunctions fn;
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memory{};

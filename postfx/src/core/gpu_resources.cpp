@@ -12,6 +12,8 @@ Status Gpu::init(const ContextCreateInfo& info) {
     physicalDevice = info.physicalDevice;
     device = info.device;
     allocator = info.allocator;
+    pipelineCache = info.pipelineCache;
+    deviceMemory = info.deviceMemory;
     if (Status s = fn.load(info.instance, info.getInstanceProcAddr, info.device, info.getDeviceProcAddr); !s)
         return s;
     if (info.debugLabels)
@@ -32,33 +34,13 @@ Status Gpu::findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required, ui
                                      " among allowed types " + std::to_string(typeBits)};
 }
 
-namespace {
-
-Status allocate(const Gpu& gpu, const VkMemoryRequirements& req, VkMemoryPropertyFlags flags,
-                const char* name, VkDeviceMemory& memory) {
-    uint32_t type = 0;
-    Status s = gpu.findMemoryType(req.memoryTypeBits, flags, type);
-    if (!s) return {s.code, std::string(name) + ": " + s.message};
-    VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    info.allocationSize = req.size;
-    info.memoryTypeIndex = type;
-    VkDeviceMemory allocated = VK_NULL_HANDLE;
-    s = vulkanStatus(gpu.fn.vkAllocateMemory(gpu.device, &info, gpu.allocator, &allocated),
-                     (std::string("vkAllocateMemory for ") + name).c_str());
-    if (s) memory = allocated;  // a failed call's output is undefined
-    return s;
-}
-
-}  // namespace
-
 GpuBuffer& GpuBuffer::operator=(GpuBuffer&& other) noexcept {
     if (this != &other) {
         reset();
         gpu_ = std::exchange(other.gpu_, nullptr);
         buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
-        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+        memory_ = std::move(other.memory_);
         size_ = std::exchange(other.size_, 0);
-        mapped_ = std::exchange(other.mapped_, nullptr);
     }
     return *this;
 }
@@ -93,28 +75,19 @@ Status GpuBuffer::create(const Gpu& gpu, VkDeviceSize size, VkBufferUsageFlags u
                                    preferred)
                     ? kHostWrite | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT
                     : kHostWrite;
-    if (!(s = allocate(gpu, req, flags, name, memory_))) return reset(), s;
-    if (!(s = vulkanStatus(gpu.fn.vkBindBufferMemory(gpu.device, buffer_, memory_, 0),
+    if (!(s = memory_.allocate(gpu, req, flags, hostVisible, name))) return reset(), s;
+    if (!(s = vulkanStatus(gpu.fn.vkBindBufferMemory(gpu.device, buffer_, memory_.memory(), memory_.offset()),
                            (std::string("vkBindBufferMemory for ") + name).c_str())))
         return reset(), s;
-    void* mapped = nullptr;
-    if (hostVisible &&
-        !(s = vulkanStatus(gpu.fn.vkMapMemory(gpu.device, memory_, 0, VK_WHOLE_SIZE, 0, &mapped),
-                           (std::string("vkMapMemory for ") + name).c_str())))
-        return reset(), s;
-    mapped_ = mapped;
     return Status::success();
 }
 
 void GpuBuffer::reset() {
     if (!gpu_) return;
-    if (mapped_) gpu_->fn.vkUnmapMemory(gpu_->device, memory_);
     if (buffer_) gpu_->fn.vkDestroyBuffer(gpu_->device, buffer_, gpu_->allocator);
-    if (memory_) gpu_->fn.vkFreeMemory(gpu_->device, memory_, gpu_->allocator);
+    memory_.reset();  // after what is bound to it
     gpu_ = nullptr;
     buffer_ = VK_NULL_HANDLE;
-    memory_ = VK_NULL_HANDLE;
-    mapped_ = nullptr;
     size_ = 0;
 }
 
@@ -124,8 +97,7 @@ GpuImage& GpuImage::operator=(GpuImage&& other) noexcept {
         gpu_ = std::exchange(other.gpu_, nullptr);
         image_ = std::exchange(other.image_, VK_NULL_HANDLE);
         view_ = std::exchange(other.view_, VK_NULL_HANDLE);
-        memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
-        bytes_ = std::exchange(other.bytes_, 0);
+        memory_ = std::move(other.memory_);
         desc_ = other.desc_;
     }
     return *this;
@@ -154,9 +126,9 @@ Status GpuImage::create(const Gpu& gpu, const ImageDesc& desc, const char* name)
     image_ = image;
     VkMemoryRequirements req;
     gpu.fn.vkGetImageMemoryRequirements(gpu.device, image_, &req);
-    bytes_ = req.size;
-    if (!(s = allocate(gpu, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, name, memory_))) return reset(), s;
-    if (!(s = vulkanStatus(gpu.fn.vkBindImageMemory(gpu.device, image_, memory_, 0),
+    if (!(s = memory_.allocate(gpu, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, false, name)))
+        return reset(), s;
+    if (!(s = vulkanStatus(gpu.fn.vkBindImageMemory(gpu.device, image_, memory_.memory(), memory_.offset()),
                            (std::string("vkBindImageMemory for ") + name).c_str())))
         return reset(), s;
     VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
@@ -178,12 +150,10 @@ void GpuImage::reset() {
     if (!gpu_) return;
     if (view_) gpu_->fn.vkDestroyImageView(gpu_->device, view_, gpu_->allocator);
     if (image_) gpu_->fn.vkDestroyImage(gpu_->device, image_, gpu_->allocator);
-    if (memory_) gpu_->fn.vkFreeMemory(gpu_->device, memory_, gpu_->allocator);
+    memory_.reset();  // after what is bound to it
     gpu_ = nullptr;
     image_ = VK_NULL_HANDLE;
     view_ = VK_NULL_HANDLE;
-    memory_ = VK_NULL_HANDLE;
-    bytes_ = 0;
 }
 
 }  // namespace postfx::core

@@ -2,6 +2,7 @@
 // Move-only RAII wrappers: destroyed with the Gpu they were created on.
 #pragma once
 
+#include "core/device_memory.h"
 #include "core/gpu.h"
 
 namespace postfx::core {
@@ -20,14 +21,14 @@ public:
 
     VkBuffer handle() const { return buffer_; }
     VkDeviceSize size() const { return size_; }
-    void* mapped() const { return mapped_; }
+    void* mapped() const { return memory_.mapped(); }
+    VkDeviceSize bytes() const { return memory_.bytes(); }  // device memory it holds
 
 private:
     const Gpu* gpu_ = nullptr;
     VkBuffer buffer_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
+    DeviceMemory memory_;
     VkDeviceSize size_ = 0;
-    void* mapped_ = nullptr;
 };
 
 struct ImageDesc {
@@ -53,14 +54,13 @@ public:
     VkImage handle() const { return image_; }
     VkImageView view() const { return view_; }
     const ImageDesc& desc() const { return desc_; }
-    VkDeviceSize bytes() const { return bytes_; }  // device memory it holds
+    VkDeviceSize bytes() const { return memory_.bytes(); }  // device memory it holds
 
 private:
     const Gpu* gpu_ = nullptr;
     VkImage image_ = VK_NULL_HANDLE;
     VkImageView view_ = VK_NULL_HANDLE;
-    VkDeviceMemory memory_ = VK_NULL_HANDLE;
-    VkDeviceSize bytes_ = 0;
+    DeviceMemory memory_;
     ImageDesc desc_;
 };
 

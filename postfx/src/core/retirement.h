@@ -15,17 +15,27 @@ class Retirement {
 public:
     template <class T>
     void retire(uint64_t frameIndex, std::unique_ptr<T> object) {
-        if (object) entries_.push_back({frameIndex, std::shared_ptr<void>(std::move(object))});
+        if (!object) return;
+        uint64_t bytes = 0;  // device memory it holds (images and buffers), for Context::memoryUsage
+        if constexpr (requires(const T& t) { t.bytes(); }) bytes = object->bytes();
+        entries_.push_back({frameIndex, bytes, std::shared_ptr<void>(std::move(object))});
     }
     // Destroys what frames up to `frameIndex` - framesInFlight no longer need.
     void collect(uint64_t frameIndex, uint32_t framesInFlight) {
         std::erase_if(entries_, [&](const Entry& e) { return frameIndex + 1 >= e.frame + framesInFlight; });
     }
     size_t pending() const { return entries_.size(); }
+    uint64_t pendingBytes() const {
+        uint64_t sum = 0;
+        for (const Entry& e : entries_)
+            sum += e.bytes;
+        return sum;
+    }
 
 private:
     struct Entry {
         uint64_t frame;
+        uint64_t bytes;
         std::shared_ptr<void> object;  // its deleter destroys the object with its own type
     };
     std::vector<Entry> entries_;

@@ -9,6 +9,7 @@
 #include "froxel_fog/froxel_uniforms.h"
 #include "postfx_objects_spirv.h"
 
+#include <algorithm>
 #include <memory>
 
 namespace postfx::froxel_fog {
@@ -347,6 +348,28 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         core::bindLookup(b, lookup);
     }
     return Status::success();
+}
+
+void FroxelFogEffect::prewarmVariants(const FrameInfo& frame, core::PrewarmVariants& out) const {
+    // A lit light: the frame's first (any light counts alike here), else one at the camera.
+    LocalLight light;
+    light.position = frame.camera.position;
+    if (frame.lightCount > 0) light = frame.lights[0];
+    if (light.intensity == Vec3(0.0f))
+        light.intensity = Vec3(float(std::min(1.0, 1e8 / double(frame.preExposure))));
+    const bool shadows = frame.localShadows.image.present() && frame.localShadows.shadowCount > 0;
+    const uint32_t listed = std::max(frame.froxelFog.lightListMinLights, 2u);
+    for (const uint32_t count : {0u, 1u, listed}) {
+        if (count > kMaxLocalLights) continue;
+        for (const bool shadowed : {false, true}) {
+            if (shadowed && (!shadows || count == 0)) continue;
+            light.shadow = shadowed ? 0u : kNoLocalShadow;
+            const std::vector<LocalLight>& lights = out.lights.emplace_back(count, light);
+            FrameInfo& v = out.frames.emplace_back(frame);
+            v.lights = lights.data();
+            v.lightCount = count;
+        }
+    }
 }
 
 void FroxelFogEffect::recorded(const FrameInfo& frame, bool active) {

@@ -45,6 +45,9 @@ public:
     void toPostfxFrame(const core::WorldTransform& world, FrameInfo& frame,
                        core::WorldScratch& scratch) const override;
     Status declare(core::FrameBuilder& builder) const override;
+    // The scatter pass's variants the lights select frame by frame: none, a loop over them, light lists,
+    // each with the local lights' shadows when the frame has an atlas with shadows.
+    void prewarmVariants(const FrameInfo& frame, core::PrewarmVariants& out) const override;
     void recorded(const FrameInfo& frame, bool active) override;
 
 private:
