@@ -297,9 +297,8 @@ private:
         std::vector<const char*> extensions(glfwExtensions, glfwExtensions + glfwCount);
         std::vector<const char*> layers;
 
-        // --validate: the validation layer with synchronization validation; its messages go to
-        // onValidationMessage, which counts them (vkCreateInstance's and vkDestroyInstance's too, through
-        // pNext).
+        // --validate: the validation layer with synchronization validation; onValidationMessage counts
+        // its messages (through pNext, vkCreateInstance's and vkDestroyInstance's too).
         VkDebugUtilsMessengerCreateInfoEXT messengerInfo{};
         messengerInfo.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
         messengerInfo.messageSeverity =
