@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds tests/package/consumer/ as a project of its own against postfx, one way, and runs what it built
 # (the integration guide's program records fog on the Vulkan device, under the validation layer, and
-# checks a pixel against the closed form).
+# checks a pixel against the closed form; so does the tutorial-style host, in a window on Xvfb).
 #   run_consumer.sh package      SOURCE BUILD WORK  install BUILD into WORK/prefix, find_package it, and
 #                                                   compile version_check.cpp through pkg-config too
 #   run_consumer.sh subdirectory SOURCE BUILD WORK  add_subdirectory(SOURCE) as a shared library, and
@@ -22,6 +22,12 @@ build_and_run() {
     cmake --build "$work/consumer" -j"$jobs" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
     "$work/consumer/version_check"
     "$work/consumer/minimal_host/postfx_minimal_host" --validate
+    # Built where GLFW is installed; run where Xvfb is (77: it is not).
+    local tutorial=$work/consumer/tutorial_host/postfx_tutorial_host rc=0
+    if [[ -x $tutorial ]]; then
+        bash "$source/tests/package/run_windowed.sh" "$tutorial" --frames 3 --validate --check || rc=$?
+        [[ $rc == 0 || $rc == 77 ]] || exit "$rc"
+    fi
 }
 case $mode in
 package)
