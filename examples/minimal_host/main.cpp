@@ -395,7 +395,7 @@ bool createHost(bool validate, Host& host, Frames& frames) {
     VkApplicationInfo app{};
     app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
     app.pApplicationName = "postfx_minimal_host";
-    app.apiVersion = VK_API_VERSION_1_1;  // postfx needs a Vulkan 1.1 device
+    app.apiVersion = VK_API_VERSION_1_0;  // postfx needs Vulkan 1.0
     VkInstanceCreateInfo instanceInfo{};
     instanceInfo.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
     instanceInfo.pNext = validate ? &messenger : nullptr;
@@ -414,7 +414,7 @@ bool createHost(bool validate, Host& host, Frames& frames) {
             return false;
     }
 
-    // The first Vulkan 1.1 device (with POSTFX_DEVICE set: whose name contains it) that has a queue
+    // The first device (with POSTFX_DEVICE set: whose name contains it) that has a queue
     // family with graphics and compute.
     uint32_t count = 0;
     vkEnumeratePhysicalDevices(host.instance, &count, nullptr);
@@ -424,7 +424,6 @@ bool createHost(bool validate, Host& host, Frames& frames) {
     for (VkPhysicalDevice device : devices) {
         VkPhysicalDeviceProperties properties;
         vkGetPhysicalDeviceProperties(device, &properties);
-        if (properties.apiVersion < VK_API_VERSION_1_1) continue;
         if (wanted && *wanted && !std::strstr(properties.deviceName, wanted)) continue;
         uint32_t familyCount = 0;
         vkGetPhysicalDeviceQueueFamilyProperties(device, &familyCount, nullptr);
@@ -440,7 +439,7 @@ bool createHost(bool validate, Host& host, Frames& frames) {
         if (host.physicalDevice) break;
     }
     if (!host.physicalDevice) {
-        std::fprintf(stderr, "no Vulkan 1.1 device with a graphics+compute queue%s%s\n",
+        std::fprintf(stderr, "no Vulkan device with a graphics+compute queue%s%s\n",
                      wanted && *wanted ? " whose name contains POSTFX_DEVICE=" : "", wanted ? wanted : "");
         return false;
     }
