@@ -214,9 +214,9 @@ Status checkDepthConvention(const Mat4& projection, const DepthConvention& depth
     if (projection[0][3] == 0.0f && projection[1][3] == 0.0f && projection[2][3] == 0.0f)
         return Status::success();
     const ProjectedDepth p = projectedDepth(projection);
-    // A far plane beyond 1e5 near distances passes for infinite; one at infinity is never finite.
-    const bool mismatch = p.reversedZ != depth.reversedZ || (depth.infiniteFar && p.far < 1e5 * p.near) ||
-                          (!depth.infiniteFar && std::isinf(p.far));
+    // A far plane beyond 1e5 near distances passes for either: in float, one beyond about 1e7 reads as
+    // infinite (and postfx treats both alike: the far value means no geometry).
+    const bool mismatch = p.reversedZ != depth.reversedZ || (depth.infiniteFar && p.far < 1e5 * p.near);
     if (!mismatch) return Status::success();
     const std::string projected = conventionText(p.reversedZ, std::isinf(p.far)) + ": depth " +
                                   (p.reversedZ ? "1" : "0") + " at " + numberText(p.near) + ", depth " +

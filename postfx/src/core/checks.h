@@ -63,8 +63,10 @@ struct ProjectedDepth {
 };
 ProjectedDepth projectedDepth(const Mat4& projection);
 // InvalidArgument naming ContextCreateInfo.depth and FrameInfo.camera.projection when a perspective
-// projection maps depth another way than the context was created for (a far plane beyond 1e5 near
-// distances passes for infinite); an affine (orthographic) projection is not checked.
+// projection maps depth another way than the context was created for: the other of depths 0 and 1
+// nearer, or a finite far plane within 1e5 near distances where the context says infinite (one beyond
+// passes for either: float cannot tell one beyond about 1e7 from infinity); an affine (orthographic)
+// projection is not checked.
 Status checkDepthConvention(const Mat4& projection, const DepthConvention& depth);
 
 // Number as the messages print it (shortest round-trip form: "1e+07", "0.5").

@@ -105,6 +105,8 @@ std::string frameProblem(const Scene& scene, double timeSeconds, VkExtent2D exte
     }
     postfx::ContextCreateInfo info;
     info.maxExtent = {16384, 16384};
+    info.depth.reversedZ = reversedZ;  // the renderer creates its context with its projection's convention
+    info.depth.infiniteFar = infiniteFar;
     if (postfx::Status s = postfx::core::checkSharedInputs(frame, info); !s)
         return "postfx rejects the frame: " + s.message;
     return "";
