@@ -1,6 +1,6 @@
 #include "core/checks.h"
 
-#include "core/target.h"
+#include "core/target_formats.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

@@ -8,19 +8,13 @@
 #pragma once
 
 #include "core/frame_graph.h"
+#include "core/target_formats.h"
 
 #include <string>
 
 namespace postfx::core {
 
 inline constexpr ResourceId kTargetImage{"postfx.target"};
-
-// The host's color is composited in place (no postfx.target).
-bool compositesInPlace(const ImageInput& color);
-// A format postfx takes as a color target through postfx.target.
-bool isBlitTargetFormat(VkFormat format);
-// Their names, for messages.
-const char* blitTargetFormatNames();
 
 // How postfx.target goes back into the host's image: a blit, or (a device that cannot blit into the
 // format, as lavapipe for B10G11R11) a compute pass storing into it, which needs STORAGE usage and the
