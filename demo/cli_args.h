@@ -24,9 +24,10 @@ inline std::string optionValue(int argc, char** argv, int& i) {
     return argv[++i];
 }
 
-// A decimal integer in [lo, hi] and nothing else (no sign, no spaces).
+// A decimal integer in [lo, hi] and nothing else (no sign, no spaces, no leading zeros).
 inline bool parseUint(std::string_view text, uint32_t lo, uint32_t hi, uint32_t& out) {
     if (text.empty() || text.front() < '0' || text.front() > '9') return false;
+    if (text.size() > 1 && text.front() == '0') return false;  // "0064": a typo more likely than 64
     auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
     return ec == std::errc() && end == text.data() + text.size() && out >= lo && out <= hi;
 }

@@ -149,6 +149,7 @@ void readFields(const json& j, const std::string& path, std::span<const SettingF
 void readPresentFields(const json& j, const std::string& path, std::span<const SettingField> table,
                        void* settings) {
     std::vector<std::string> checked;  // nested objects whose keys are checked
+    std::vector<std::pair<const SettingField*, std::string>> present;  // fields given, and their paths
     for (const SettingField& f : table) {
         if (!f.key) continue;
         const json* object = &j;
@@ -173,13 +174,20 @@ void readPresentFields(const json& j, const std::string& path, std::span<const S
             key = dot + 1;
         }
         if (!object) continue;
-        if (const json* v = find(*object, key)) readField(*v, child(objectPath, key), f, settings);
+        if (const json* v = find(*object, key)) {
+            readField(*v, child(objectPath, key), f, settings);
+            present.emplace_back(&f, child(objectPath, key));
+        }
     }
+    // A key the chosen mode ignores (a box's size with shape "layer") is refused, once every mode is read.
+    for (const auto& [f, keyPath] : present)
+        if (const std::string reason = postfx::settingUnusedReason(table, *f, settings); !reason.empty())
+            fail(keyPath, "ignored " + reason);
 }
 
 void writeFields(std::span<const SettingField> table, const void* settings, json& out) {
     for (const SettingField& f : table) {
-        if (!f.key) continue;
+        if (!f.key || !postfx::settingUsed(table, f, settings)) continue;  // an unused key would be refused
         std::string p = "/" + std::string(f.key);
         std::replace(p.begin(), p.end(), '.', '/');
         out[json::json_pointer(p)] = writeField(f, settings);

@@ -23,7 +23,8 @@ std::vector<std::string> tableKeys(std::span<const postfx::SettingField> table, 
 // errors; `extra`: the effect object's keys read by hand) and reads every table field present into
 // `settings` (of the table's struct); absent keys keep their value. Types are checked here
 // (json_read::ReadError naming the key path), ranges by postfx (throwIfInvalid). Colours are read in
-// [0, 1]; an enum by its choices' names.
+// [0, 1]; an enum by its choices' names. A key that the chosen mode ignores (postfx::settingUsed: a box's
+// size with shape "layer") is an error naming it.
 void readFields(const nlohmann::json& j, const std::string& path, std::span<const postfx::SettingField> table,
                 void* settings, std::span<const char* const> extra = {});
 
@@ -31,7 +32,8 @@ void readFields(const nlohmann::json& j, const std::string& path, std::span<cons
 void readPresentFields(const nlohmann::json& j, const std::string& path,
                        std::span<const postfx::SettingField> table, void* settings);
 
-// Every table field with a key, in the form readFields reads back exactly, added to `out`.
+// Every table field with a key that the settings' modes use (postfx::settingUsed), in the form readFields
+// reads back exactly, added to `out`.
 void writeFields(std::span<const postfx::SettingField> table, const void* settings, nlohmann::json& out);
 
 // A failed postfx check as a ReadError at the file's key path: the message names the field as

@@ -165,6 +165,9 @@ bool settingControls(std::span<const SettingField> table, void* settings, const 
                         [&](const char* m) { return std::strcmp(m, f.member) == 0; }))
             continue;
         const SettingField* on = f.activeIf ? postfx::findSettingByMember(table, f.activeIf) : nullptr;
+        // Greyed while its switch is off; hidden while the chosen mode ignores it (a box's size with a
+        // layer).
+        if (!postfx::settingUsed(table, f, settings)) continue;
         const bool disabled = on && !postfx::settingValue<bool>(*on, static_cast<const void*>(settings));
         if (disabled) ImGui::BeginDisabled();
         changed |= settingControl(f, settings);

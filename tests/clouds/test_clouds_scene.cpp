@@ -29,7 +29,7 @@ TEST(CloudsScene, EveryKeyRoundTrips) {
       "multiple_scattering": {"model": "octaves", "octaves": 3, "attenuation": 0.6, "contribution": 0.4,
                               "eccentricity": 0.3},
       "steps": 96, "light_steps": 8, "light_distance": 5000, "max_distance": 80000, "wind": [5, 0, 2],
-      "jitter": false, "quality": "high", "resolution_scale": 0.25,
+      "jitter": false, "quality": "custom", "resolution_scale": 0.25,
       "temporal": {"enabled": false, "blend_weight": 0.2}, "cast_shadows": false,
       "shadow_map": {"size": 1024, "extent": 30000},
       "noise": {"base_size": 64, "detail_size": 16, "seed": 9, "tiling": 9000, "detail_strength": 0.5}
@@ -47,7 +47,7 @@ TEST(CloudsScene, EveryKeyRoundTrips) {
     EXPECT_FLOAT_EQ(s.multipleScattering.contribution, 0.4f);
     EXPECT_EQ(s.steps, 96u);
     EXPECT_FALSE(s.jitter);
-    EXPECT_EQ(s.quality, postfx::CloudQuality::High);
+    EXPECT_EQ(s.quality, postfx::CloudQuality::Custom);
     EXPECT_FLOAT_EQ(s.resolutionScale, 0.25f);
     EXPECT_FALSE(s.temporal.enabled);
     EXPECT_FLOAT_EQ(s.temporal.blendWeight, 0.2f);
@@ -80,6 +80,14 @@ TEST(CloudsScene, BadValuesNameTheirKeyPath) {
         {R"({"shadow_map": {"extent": -1}})", "effects.clouds.shadow_map.extent"},
         {R"({"resolution_scale": 0.1})", "effects.clouds.resolution_scale: 0.1 is outside [0.25, 1]"},
         {R"({"quality": "epic"})", "effects.clouds.quality: expected"},
+        // keys that the chosen shape, model or quality ignores
+        {R"({"box": {"center": [0, 2000, 0]}})",
+         "effects.clouds.box.center: ignored with shape \"layer\" (used with \"box\")"},
+        {R"({"multiple_scattering": {"octaves": 4}})",
+         "effects.clouds.multiple_scattering.octaves: ignored with multiple_scattering.model \"slab\" (used "
+         "with \"octaves\")"},
+        {R"({"quality": "high", "light_steps": 12})",
+         "effects.clouds.light_steps: ignored with quality \"high\" (used with \"custom\")"},
     };
     for (const auto& [clouds, message] : cases) {
         json j = base();

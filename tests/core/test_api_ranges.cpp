@@ -8,11 +8,17 @@
 #include "fog/fog_uniforms.h"
 #include "fog_harness.h"
 
+#include <postfx/settings_table.h>
+
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <functional>
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -542,6 +548,232 @@ TEST_F(CoreApiRanges, EveryFrameFieldOutsideItsRangeIsRefusedNamingIt) {
     const postfx::Status s = context->record(f);
     EXPECT_EQ(s.code, Result::InvalidArgument);
     EXPECT_NE(s.message.find("FrameInfo.commandBuffer"), std::string::npos) << s.message;
+}
+
+// Every setting of every registered effect (postfx::effectSettingsTables), from its table alone, so that an
+// effect added to the registry is covered without a row written here: the values just outside its range
+// (and NaN, ±Inf, an enum cast from another int) are refused naming "FrameInfo.<effect>.<member>"; the
+// ends themselves are accepted, the effect on, the field's switch on and its mode chosen.
+struct TableRow {
+    const postfx::EffectSettingsTable* effect;
+    const postfx::SettingField* field;
+    int component;  // of a vector field, else 0
+    double value;
+    std::string text;  // the value as a message shows it
+};
+
+// The nearest float at or inside [lo, hi] of `bound`: the table's bounds are doubles, the fields floats.
+float insideFloat(double bound, bool up) {
+    float f = float(bound);
+    if (up && double(f) < bound) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    if (!up && double(f) > bound) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+}
+
+void tableRows(std::vector<TableRow>& bad, std::vector<TableRow>& good) {
+    using postfx::SettingKind;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    for (const postfx::EffectSettingsTable& e : postfx::effectSettingsTables())
+        for (const postfx::SettingField& f : e.table()) {
+            auto add = [&](std::vector<TableRow>& rows, int c, double v) {
+                char text[64];
+                std::snprintf(text, sizeof text, "%.9g", v);
+                rows.push_back({&e, &f, c, v, text});
+            };
+            const int components = f.kind == SettingKind::Vec3 || f.kind == SettingKind::Color ||
+                                           f.kind == SettingKind::DVec3 || f.kind == SettingKind::UVec3
+                                       ? 3
+                                   : f.kind == SettingKind::UVec2 ? 2
+                                                                  : 1;
+            for (int c = 0; c < components; ++c)
+                switch (f.kind) {
+                    case SettingKind::Float:
+                    case SettingKind::Vec3:
+                    case SettingKind::Color: {
+                        add(bad, c, std::numeric_limits<double>::quiet_NaN());
+                        add(bad, c, inf);
+                        add(bad, c, -inf);
+                        if (std::isfinite(f.min)) {
+                            const float lo = insideFloat(f.min, true);
+                            add(bad, c,
+                                f.minOpen && double(lo) == f.min ? lo : std::nextafter(lo, -HUGE_VALF));
+                            add(good, c,
+                                f.minOpen && double(lo) == f.min ? std::nextafter(lo, HUGE_VALF) : lo);
+                        }
+                        if (std::isfinite(f.max)) {
+                            const float hi = insideFloat(f.max, false);
+                            add(bad, c,
+                                f.maxOpen && double(hi) == f.max ? hi : std::nextafter(hi, HUGE_VALF));
+                            add(good, c,
+                                f.maxOpen && double(hi) == f.max ? std::nextafter(hi, -HUGE_VALF) : hi);
+                        }
+                        break;
+                    }
+                    case SettingKind::Double:
+                    case SettingKind::DVec3:
+                        add(bad, c, std::numeric_limits<double>::quiet_NaN());
+                        if (std::isfinite(f.min)) {
+                            add(bad, c, std::nextafter(f.min, -inf));
+                            add(good, c, f.min);
+                        }
+                        if (std::isfinite(f.max)) {
+                            add(bad, c, std::nextafter(f.max, inf));
+                            add(good, c, f.max);
+                        }
+                        break;
+                    case SettingKind::Uint:
+                    case SettingKind::UVec2:
+                    case SettingKind::UVec3:
+                        if (f.min >= 1.0) add(bad, c, f.min - 1.0);
+                        if (f.max < 4294967295.0) add(bad, c, f.max + 1.0);
+                        add(good, c, f.min);
+                        add(good, c, f.max);
+                        break;
+                    case SettingKind::Enum: {
+                        uint32_t largest = 0;
+                        for (const postfx::SettingChoice& choice : f.choices)
+                            largest = std::max(largest, choice.value);
+                        add(bad, c, double(largest) + 1.0);
+                        for (const postfx::SettingChoice& choice : f.choices)
+                            add(good, c, double(choice.value));
+                        break;
+                    }
+                    case SettingKind::Bool:
+                    case SettingKind::Opaque:
+                        break;
+                }
+        }
+}
+
+// Every field of `table` in `s` at the table's default; host handles (Opaque) null.
+void resetToDefaults(std::span<const postfx::SettingField> table, void* s) {
+    using postfx::SettingKind;
+    for (const postfx::SettingField& f : table) {
+        const double* d = f.defaults;
+        switch (f.kind) {
+            case SettingKind::Bool:
+                postfx::settingValue<bool>(f, s) = d[0] != 0.0;
+                break;
+            case SettingKind::Uint:
+            case SettingKind::Enum:
+                postfx::settingValue<uint32_t>(f, s) = uint32_t(d[0]);
+                break;
+            case SettingKind::Float:
+                postfx::settingValue<float>(f, s) = float(d[0]);
+                break;
+            case SettingKind::Double:
+                postfx::settingValue<double>(f, s) = d[0];
+                break;
+            case SettingKind::Vec3:
+            case SettingKind::Color:
+                postfx::settingValue<postfx::Vec3>(f, s) = {float(d[0]), float(d[1]), float(d[2])};
+                break;
+            case SettingKind::DVec3:
+                postfx::settingValue<postfx::DVec3>(f, s) = {d[0], d[1], d[2]};
+                break;
+            case SettingKind::UVec2:
+                postfx::settingValue<postfx::UVec2>(f, s) = {uint32_t(d[0]), uint32_t(d[1])};
+                break;
+            case SettingKind::UVec3:
+                postfx::settingValue<postfx::UVec3>(f, s) = {uint32_t(d[0]), uint32_t(d[1]), uint32_t(d[2])};
+                break;
+            case SettingKind::Opaque:
+                std::memset(f.address(s), 0, f.size);
+                break;
+        }
+    }
+}
+
+// `row`'s value in `frame`'s settings, every other setting at its default, only its effect on, its switch
+// on and its mode chosen.
+void applyTableRow(const TableRow& row, FrameInfo& frame) {
+    using postfx::SettingKind;
+    for (const postfx::EffectSettingsTable& e : postfx::effectSettingsTables()) {
+        resetToDefaults(e.table(), e.address(&frame));
+        if (const postfx::SettingField* on = postfx::findSettingByMember(e.table(), "enabled"))
+            postfx::settingValue<bool>(*on, e.address(&frame)) = &e == row.effect;
+    }
+    const auto table = row.effect->table();
+    void* s = row.effect->address(&frame);
+    const postfx::SettingField& f = *row.field;
+    if (f.activeIf) postfx::settingValue<bool>(*postfx::findSettingByMember(table, f.activeIf), s) = true;
+    if (f.usedWith)
+        postfx::settingValue<uint32_t>(*postfx::findSettingByMember(table, f.usedWith), s) =
+            f.usedWithChoices[0];
+    const int c = row.component;
+    switch (f.kind) {
+        case SettingKind::Float:
+            postfx::settingValue<float>(f, s) = float(row.value);
+            break;
+        case SettingKind::Vec3:
+        case SettingKind::Color:
+            postfx::settingValue<postfx::Vec3>(f, s)[c] = float(row.value);
+            break;
+        case SettingKind::Double:
+            postfx::settingValue<double>(f, s) = row.value;
+            break;
+        case SettingKind::DVec3:
+            postfx::settingValue<postfx::DVec3>(f, s)[c] = row.value;
+            break;
+        case SettingKind::Uint:
+        case SettingKind::Enum:
+            postfx::settingValue<uint32_t>(f, s) = uint32_t(row.value);
+            break;
+        case SettingKind::UVec2:
+            postfx::settingValue<postfx::UVec2>(f, s)[c] = uint32_t(row.value);
+            break;
+        case SettingKind::UVec3:
+            postfx::settingValue<postfx::UVec3>(f, s)[c] = uint32_t(row.value);
+            break;
+        case SettingKind::Bool:
+        case SettingKind::Opaque:
+            break;
+    }
+}
+
+TEST_F(CoreApiRanges, EveryTableSettingJustOutsideItsRangeIsRefusedNamingIt) {
+    std::vector<TableRow> bad, good;
+    tableRows(bad, good);
+    ASSERT_GT(bad.size(), 300u);
+    auto planRow = [&](const TableRow& row) {
+        return plan({"", "", [&row](FrameInfo& f) { applyTableRow(row, f); }});
+    };
+    for (const TableRow& row : bad) {
+        const std::string name = std::string("FrameInfo.") + row.effect->member + "." + row.field->member;
+        const postfx::Status s = planRow(row);
+        SCOPED_TRACE(name + "[" + std::to_string(row.component) + "] = " + row.text);
+        EXPECT_EQ(s.code, Result::InvalidArgument) << s.message;
+        EXPECT_NE(s.message.find(name), std::string::npos) << s.message;
+        EXPECT_EQ(s.message.find('\n'), std::string::npos) << s.message;
+    }
+    // The ends that a rule across fields refuses with the other field at its default (documented beside
+    // the table, and named in the message): the atmosphere's top above its ground, the clouds' top above
+    // their bottom, the octaves' contribution at most their attenuation.
+    const std::pair<std::string, std::string> crossFieldRules[] = {
+        {"atmosphere.groundRadius", "greater than groundRadius"},
+        {"atmosphere.topRadius", "greater than groundRadius"},
+        {"clouds.bottomHeight", "greater than bottomHeight"},
+        {"clouds.topHeight", "greater than bottomHeight"},
+        {"clouds.multipleScattering.attenuation", "at most attenuation"},
+        {"clouds.multipleScattering.contribution", "at most attenuation"}};
+    for (const TableRow& row : good) {
+        const postfx::Status s = planRow(row);
+        const std::string field = std::string(row.effect->member) + "." + row.field->member;
+        if (!s.ok() &&
+            std::any_of(std::begin(crossFieldRules), std::end(crossFieldRules), [&](const auto& r) {
+                return r.first == field && s.message.find(r.second) != std::string::npos;
+            }))
+            continue;
+        // A vector whose components have ranges of their own (checked beside the table, the table's
+        // range holding them all) refuses an end of another component's range naming the component.
+        if (!s.ok() && row.field->customCheck &&
+            s.message.find("FrameInfo." + field + "[" + std::to_string(row.component) + "]") !=
+                std::string::npos)
+            continue;
+        EXPECT_TRUE(s.ok()) << "FrameInfo." << row.effect->member << "." << row.field->member << "["
+                            << row.component << "] = " << row.text
+                            << " (inside its range) refused: " << s.message;
+    }
 }
 
 TEST_F(CoreApiRanges, EveryCreateInfoFieldOutsideItsRangeIsRefusedNamingIt) {

@@ -219,12 +219,55 @@ TEST(CoreSettingsTables, MembersAndKeysAreUniqueAndSwitchesExist) {
                 ASSERT_NE(on, nullptr);
                 EXPECT_EQ(on->kind, SettingKind::Bool);
             }
+            if (f.usedWith) {  // a mode of this table, and values it has
+                const SettingField* mode = postfx::findSettingByMember(t.fields, f.usedWith);
+                ASSERT_NE(mode, nullptr);
+                EXPECT_EQ(mode->kind, SettingKind::Enum);
+                EXPECT_FALSE(f.usedWithChoices.empty());
+                for (uint32_t v : f.usedWithChoices)
+                    EXPECT_TRUE(std::any_of(mode->choices.begin(), mode->choices.end(),
+                                            [&](const postfx::SettingChoice& c) { return c.value == v; }));
+            }
             if (f.kind == SettingKind::Enum) {
                 EXPECT_FALSE(f.choices.empty());
             }
             EXPECT_LE(f.min, f.max);
         }
     }
+}
+
+// The registry lists every effect table once, and the address of each effect's settings in a FrameInfo.
+TEST(CoreSettingsTables, EveryEffectTableIsRegisteredWithItsFrameMember) {
+    postfx::FrameInfo frame;
+    const std::pair<std::string, const void*> expected[] = {{"atmosphere", &frame.atmosphere},
+                                                            {"clouds", &frame.clouds},
+                                                            {"fog", &frame.fog},
+                                                            {"froxelFog", &frame.froxelFog}};
+    const auto registered = postfx::effectSettingsTables();
+    ASSERT_EQ(registered.size(), std::size(expected));
+    for (size_t i = 0; i < registered.size(); ++i) {
+        EXPECT_EQ(registered[i].member, expected[i].first);
+        EXPECT_EQ(registered[i].address(&frame), expected[i].second);
+        EXPECT_FALSE(registered[i].table().empty());
+    }
+}
+
+// A mode's unused fields: settingUsed follows the Enum, and the reason names the mode and its value.
+TEST(CoreSettingsTables, FieldsOfAnotherModeAreUnused) {
+    postfx::CloudSettings c;
+    const auto table = postfx::cloudSettingsTable();
+    const SettingField& center = *postfx::findSettingByMember(table, "box.center");
+    EXPECT_FALSE(postfx::settingUsed(table, center, &c));
+    EXPECT_EQ(postfx::settingUnusedReason(table, center, &c), "with shape \"layer\" (used with \"box\")");
+    c.shape = postfx::CloudShape::Box;
+    EXPECT_TRUE(postfx::settingUsed(table, center, &c));
+    EXPECT_EQ(postfx::settingUnusedReason(table, center, &c), "");
+    const SettingField& steps = *postfx::findSettingByMember(table, "steps");
+    c.quality = postfx::CloudQuality::Medium;
+    EXPECT_EQ(postfx::settingUnusedReason(table, steps, &c),
+              "with quality \"medium\" (used with \"custom\")");
+    const SettingField& density = *postfx::findSettingByMember(table, "density");
+    EXPECT_TRUE(postfx::settingUsed(table, density, &c));  // no mode
 }
 
 TEST(CoreSettingsTables, DocsParameterTablesMatch) {

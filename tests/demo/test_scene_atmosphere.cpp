@@ -69,17 +69,28 @@ json everyKey() {
       "multiple_scattering_lut_size": [16, 24],
       "multiple_scattering_directions": 49,
       "multiple_scattering_steps": 10,
-      "scattering_orders_lut_size": [16, 24, 8],
-      "scattering_orders_azimuth_size": 4,
-      "scattering_orders_directions": 144,
-      "scattering_orders_steps": 24,
-      "scattering_orders": 5,
       "sky_view_lut_size": [96, 54],
       "sky_view_steps": 20,
       "aerial_perspective_lut_size": [16, 24, 48],
       "aerial_perspective_distance": 50000,
       "aerial_perspective_steps_per_slice": 3
     })");
+}
+
+// everyKey() with the orders' model: its keys instead of Hillaire's (a key of the model not chosen is an
+// error).
+json everyOrdersKey() {
+    json j = everyKey();
+    for (const char* k :
+         {"multiple_scattering_lut_size", "multiple_scattering_directions", "multiple_scattering_steps"})
+        j.erase(k);
+    j["multiple_scattering"] = "orders";
+    j["scattering_orders_lut_size"] = {16, 24, 8};
+    j["scattering_orders_azimuth_size"] = 4;
+    j["scattering_orders_directions"] = 144;
+    j["scattering_orders_steps"] = 24;
+    j["scattering_orders"] = 5;
+    return j;
 }
 
 void expectSameAtmosphere(const postfx::AtmosphereSettings& a, const postfx::AtmosphereSettings& b) {
@@ -151,11 +162,15 @@ TEST(DemoSceneAtmosphere, EveryKeyIsRead) {
     EXPECT_EQ(a.multipleScatteringLutSize, postfx::UVec2(16, 24));
     EXPECT_EQ(a.multipleScatteringDirections, 49u);
     EXPECT_EQ(a.multipleScatteringSteps, 10u);
-    EXPECT_EQ(a.scatteringOrdersLutSize, postfx::UVec3(16, 24, 8));
-    EXPECT_EQ(a.scatteringOrdersAzimuthSize, 4u);
-    EXPECT_EQ(a.scatteringOrdersDirections, 144u);
-    EXPECT_EQ(a.scatteringOrdersSteps, 24u);
-    EXPECT_EQ(a.scatteringOrders, 5u);
+    const Parsed orders = parse(withAtmosphere(everyOrdersKey()));
+    ASSERT_TRUE(orders.ok) << orders.error;
+    const postfx::AtmosphereSettings& o = orders.scene.atmosphere;
+    EXPECT_EQ(o.multipleScattering, postfx::AtmosphereMultipleScattering::Orders);
+    EXPECT_EQ(o.scatteringOrdersLutSize, postfx::UVec3(16, 24, 8));
+    EXPECT_EQ(o.scatteringOrdersAzimuthSize, 4u);
+    EXPECT_EQ(o.scatteringOrdersDirections, 144u);
+    EXPECT_EQ(o.scatteringOrdersSteps, 24u);
+    EXPECT_EQ(o.scatteringOrders, 5u);
     EXPECT_EQ(a.skyViewLutSize, postfx::UVec2(96, 54));
     EXPECT_EQ(a.skyViewSteps, 20u);
     EXPECT_EQ(a.aerialPerspectiveLutSize, postfx::UVec3(16, 24, 48));
@@ -164,32 +179,33 @@ TEST(DemoSceneAtmosphere, EveryKeyIsRead) {
 }
 
 TEST(DemoSceneAtmosphere, EveryKeyRoundTrips) {
-    const Parsed first = parse(withAtmosphere(everyKey()));
-    ASSERT_TRUE(first.ok) << first.error;
-    const json out = demo::sceneToJson(first.scene);
-    const json& written = out["effects"]["atmosphere"];
-    const json in = everyKey();
-    EXPECT_EQ(written.size(), in.size());
-    for (const auto& [key, value] : in.items()) {
-        if (value.is_number_float() || (value.is_array() && value[0].is_number_float())) {
-            // Floats are written in their shortest form as floats: compare as floats.
-            const json w = written[key];
-            if (value.is_array()) {
-                for (std::size_t i = 0; i < value.size(); ++i)
-                    EXPECT_EQ(float(w[i].get<double>()), float(value[i].get<double>())) << key;
+    for (const json& in : {everyKey(), everyOrdersKey()}) {
+        const Parsed first = parse(withAtmosphere(in));
+        ASSERT_TRUE(first.ok) << first.error;
+        const json out = demo::sceneToJson(first.scene);
+        const json& written = out["effects"]["atmosphere"];
+        EXPECT_EQ(written.size(), in.size());
+        for (const auto& [key, value] : in.items()) {
+            if (value.is_number_float() || (value.is_array() && value[0].is_number_float())) {
+                // Floats are written in their shortest form as floats: compare as floats.
+                const json w = written[key];
+                if (value.is_array()) {
+                    for (std::size_t i = 0; i < value.size(); ++i)
+                        EXPECT_EQ(float(w[i].get<double>()), float(value[i].get<double>())) << key;
+                } else {
+                    EXPECT_EQ(float(w.get<double>()), float(value.get<double>())) << key;
+                }
+            } else if (value.is_number()) {
+                EXPECT_EQ(written[key].get<double>(), value.get<double>()) << key;
             } else {
-                EXPECT_EQ(float(w.get<double>()), float(value.get<double>())) << key;
+                EXPECT_EQ(written[key], value) << key;
             }
-        } else if (value.is_number()) {
-            EXPECT_EQ(written[key].get<double>(), value.get<double>()) << key;
-        } else {
-            EXPECT_EQ(written[key], value) << key;
         }
+        const Parsed second = parse(json::parse(out.dump(2)));
+        ASSERT_TRUE(second.ok) << second.error;
+        expectSameAtmosphere(second.scene.atmosphere, first.scene.atmosphere);
+        EXPECT_EQ(demo::sceneToJson(second.scene), out);
     }
-    const Parsed second = parse(json::parse(out.dump(2)));
-    ASSERT_TRUE(second.ok) << second.error;
-    expectSameAtmosphere(second.scene.atmosphere, first.scene.atmosphere);
-    EXPECT_EQ(demo::sceneToJson(second.scene), out);
 }
 
 TEST(DemoSceneAtmosphere, DefaultsRoundTrip) {
@@ -253,6 +269,8 @@ TEST(DemoSceneAtmosphere, EachKeyRoundTripsAtItsBounds) {
         json atmosphere = json::object();
         atmosphere[json::json_pointer(pointer)] = value;
         if (pointer == "/ground_radius") atmosphere["top_radius"] = 2;
+        if (pointer.rfind("/scattering_orders", 0) == 0) atmosphere["multiple_scattering"] = "orders";
+        if (pointer.rfind("/multiple_scattering_", 0) == 0) atmosphere["multiple_scattering"] = "hillaire";
         const Parsed first = parse(withAtmosphere(atmosphere));
         ASSERT_TRUE(first.ok) << pointer << " = " << value << ": " << first.error;
         const json out = demo::sceneToJson(first.scene);
@@ -311,6 +329,10 @@ TEST(DemoSceneAtmosphere, ErrorsNameTheKeyPath) {
         {"OrdersZero",
          {{"scattering_orders", 0}},
          "effects.atmosphere.scattering_orders: 0 is outside [1, 32]"},
+        {"OrdersKeyWithHillaire",
+         {{"multiple_scattering", "hillaire"}, {"multiple_scattering_steps", 8}, {"scattering_orders", 4}},
+         "effects.atmosphere.scattering_orders: ignored with multiple_scattering \"hillaire\" (used with "
+         "\"orders\")"},
         {"SunRadiusOver", {{"sun_angular_radius_deg", 46}}, "effects.atmosphere.sun_angular_radius_deg: "},
         {"AmbientNumber",
          {{"ambient_from_sky", 0}},
@@ -353,7 +375,15 @@ TEST(DemoSceneAtmosphere, ErrorsNameTheKeyPath) {
          "effects.atmosphere.mie_anisotropy: "},
     };
     for (const ErrorCase& c : cases) {
-        const Parsed p = parse(withAtmosphere(c.atmosphere));
+        json atmosphere = c.atmosphere;
+        // A model's own keys with their model, unless the case chooses one.
+        if (atmosphere.is_object() && !atmosphere.contains("multiple_scattering")) {
+            for (const auto& [key, value] : c.atmosphere.items()) {
+                if (key.rfind("scattering_orders", 0) == 0) atmosphere["multiple_scattering"] = "orders";
+                if (key.rfind("multiple_scattering_", 0) == 0) atmosphere["multiple_scattering"] = "hillaire";
+            }
+        }
+        const Parsed p = parse(withAtmosphere(atmosphere));
         EXPECT_FALSE(p.ok) << c.name;
         EXPECT_EQ(p.error.rfind(c.expected, 0), 0u) << c.name << ": " << p.error;
         EXPECT_EQ(p.error.find('\n'), std::string::npos) << c.name;

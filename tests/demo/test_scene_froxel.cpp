@@ -84,7 +84,7 @@ json everyKey() {
     j["enabled"] = false;
     j["grid"] = {64, 32, 200};
     j["tile_size_px"] = 16;
-    j["depth_distribution"] = "log";
+    j["depth_distribution"] = "power";
     j["depth_exponent"] = 3.5;
     j["tricubic"] = true;
     j["jitter"] = false;
@@ -218,7 +218,7 @@ TEST(DemoSceneFroxel, EveryKeyIsRead) {
     EXPECT_EQ(f.noise.wind, glm::vec3(1.0f, -2.0f, 0.5f));
     EXPECT_EQ(f.grid, postfx::UVec3(64, 32, 200));
     EXPECT_EQ(f.tileSizePx, 16u);
-    EXPECT_EQ(f.depthDistribution, postfx::FroxelDepthDistribution::Log);
+    EXPECT_EQ(f.depthDistribution, postfx::FroxelDepthDistribution::Power);
     EXPECT_EQ(f.depthExponent, 3.5f);
     EXPECT_TRUE(f.tricubic);
     EXPECT_FALSE(f.jitter);

@@ -63,8 +63,7 @@ json everyKey() {
       "analytic_tail": false,
       "skip_empty_space": false,
       "shadow_kernel": 5,
-      "quality": "auto",
-      "auto_budget_ms": 1.25,
+      "quality": "custom",
       "temporal": {"enabled": true, "blend_weight": 0.25},
       "noise": {
         "enabled": true,
@@ -165,8 +164,7 @@ TEST(FogScene, EveryKeyIsRead) {
     EXPECT_FALSE(f.analyticTail);
     EXPECT_FALSE(f.skipEmptySpace);
     EXPECT_EQ(f.shadowKernel, 5u);
-    EXPECT_EQ(f.quality, postfx::FogQuality::Auto);
-    EXPECT_EQ(f.autoBudgetMs, 1.25f);
+    EXPECT_EQ(f.quality, postfx::FogQuality::Custom);  // auto_budget_ms: QualityDefaultsToCustom...
     EXPECT_TRUE(f.noise.enabled);
     EXPECT_EQ(f.noise.textureSize, 64u);
     EXPECT_EQ(f.noise.seed, 4000000000u);
@@ -187,10 +185,12 @@ TEST(FogScene, QualityDefaultsToCustomAndReadsEveryName) {
         {"ultra", postfx::FogQuality::Ultra},   {"auto", postfx::FogQuality::Auto},
     };
     for (const auto& [name, quality] : names) {
-        const Parsed p = parse(withFog({{"quality", name}, {"auto_budget_ms", 2}}));
+        const bool isAuto = quality == postfx::FogQuality::Auto;
+        const Parsed p =
+            parse(withFog(isAuto ? json{{"quality", name}, {"auto_budget_ms", 2}} : json{{"quality", name}}));
         ASSERT_TRUE(p.ok) << name << ": " << p.error;
         EXPECT_EQ(p.scene.fog.quality, quality) << name;
-        EXPECT_EQ(p.scene.fog.autoBudgetMs, 2.0f) << name;
+        EXPECT_EQ(p.scene.fog.autoBudgetMs, isAuto ? 2.0f : 0.5f) << name;
         EXPECT_EQ(p.scene.fog.steps, postfx::FogSettings{}.steps)
             << name << ": the preset is applied by postfx, not the loader";
         EXPECT_EQ(demo::sceneToJson(p.scene)["effects"]["fog"]["quality"], name);
@@ -290,6 +290,7 @@ TEST(FogScene, EachKeyRoundTripsAtItsBounds) {
     for (const auto& [pointer, value] : cases) {
         json fog = json::object();
         fog[json::json_pointer(pointer)] = value;
+        if (pointer == "/auto_budget_ms") fog["quality"] = "auto";  // Auto's own key
         const Parsed first = parse(withFog(fog));
         ASSERT_TRUE(first.ok) << pointer << " = " << value << ": " << first.error;
         const json out = demo::sceneToJson(first.scene);
@@ -364,8 +365,18 @@ std::vector<FogRejection> fogRejections() {
         {"AnisotropyTwo", fog("/anisotropy", 2), "effects.fog.anisotropy: 2 is outside [-1, 1]"},
         {"HeightFalloffNegative", fog("/height_falloff", -0.1), "effects.fog.height_falloff: "},
         {"MaxDistanceZero", fog("/max_distance", 0), "effects.fog.max_distance: "},
-        {"AutoBudgetZero", fog("/auto_budget_ms", 0), "effects.fog.auto_budget_ms: 0 must be > 0"},
-        {"AutoBudgetNegative", fog("/auto_budget_ms", -1), "effects.fog.auto_budget_ms: -1 must be > 0"},
+        {"AutoBudgetZero",
+         {{"fog", {{"quality", "auto"}, {"auto_budget_ms", 0}}}},
+         "effects.fog.auto_budget_ms: 0 must be > 0"},
+        {"AutoBudgetNegative",
+         {{"fog", {{"quality", "auto"}, {"auto_budget_ms", -1}}}},
+         "effects.fog.auto_budget_ms: -1 must be > 0"},
+        // a key that the chosen mode ignores
+        {"AutoBudgetWithoutAuto", fog("/auto_budget_ms", 1),
+         "effects.fog.auto_budget_ms: ignored with quality \"custom\" (used with \"auto\")"},
+        {"StepsWithAPreset",
+         {{"fog", {{"quality", "medium"}, {"steps", 64}}}},
+         "effects.fog.steps: ignored with quality \"medium\" (used with \"custom\")"},
         {"StepsZero", fog("/steps", 0), "effects.fog.steps: 0 is outside [1, 4096]"},
         {"StepsTooMany", fog("/steps", 4097), "effects.fog.steps: 4097 is outside [1, 4096]"},
         {"ResolutionScaleTooSmall", fog("/resolution_scale", 0.2),

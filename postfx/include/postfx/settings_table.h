@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
 
 namespace postfx {
 
@@ -60,6 +61,12 @@ struct SettingField {
     // Member of a Bool field of the same table: while it is false this field is neither checked nor
     // hashed ("noise.enabled" for the noise's fields).
     const char* activeIf = nullptr;
+    // Enum member of the same table whose value selects a mode: the field takes effect only while that
+    // field holds one of `usedWithChoices` (a box's size with shape Box, the octave model's constants with
+    // model Octaves, the steps a quality preset sets with quality Custom); other values ignore it. postfx
+    // still checks and hashes it; a scene reader refuses the key then, naming it (settingUsed).
+    const char* usedWith = nullptr;
+    std::span<const uint32_t> usedWithChoices = {};
     // The range is documented here but checked by code beside the table (a power of two, odd sizes, a
     // rule across fields), which names the field by `member` too.
     bool customCheck = false;
@@ -94,6 +101,14 @@ POSTFX_API const SettingField* findSettingByMember(std::span<const SettingField>
 // The field whose `key` is `key`, nullptr when none.
 POSTFX_API const SettingField* findSettingByKey(std::span<const SettingField> table, const char* key);
 
+// Whether `field` takes effect in `settings` (of the table's struct): its usedWith mode, if any, holds one
+// of its usedWithChoices. A reader or editor of settings refuses or hides an unused field.
+POSTFX_API bool settingUsed(std::span<const SettingField> table, const SettingField& field,
+                            const void* settings);
+// "with shape \"layer\"": the mode that leaves `field` unused in `settings`, for a message ("" when used).
+POSTFX_API std::string settingUnusedReason(std::span<const SettingField> table, const SettingField& field,
+                                           const void* settings);
+
 // The tables, one per settings struct; their fields' address functions take a pointer to that struct.
 POSTFX_API std::span<const SettingField> fogSettingsTable();  // FogSettings (the medium's fields included)
 POSTFX_API std::span<const SettingField> atmosphereSettingsTable();  // AtmosphereSettings
@@ -104,5 +119,18 @@ POSTFX_API std::span<const SettingField> fogVolumeSettingsTable();
 // FogMedium: the rows both fogs' tables share (the medium, its noise included), for code that edits a
 // FogMedium of either fog.
 POSTFX_API std::span<const SettingField> fogMediumSettingsTable();
+
+// One effect's settings in a FrameInfo: its scene-file key ("froxel_fog"), its FrameInfo member
+// ("froxelFog": messages name "FrameInfo.froxelFog.<member>"), its table, and the settings struct inside a
+// FrameInfo (passed as void*). Code that goes over every setting of every effect (a generic editor, a
+// fuzzer, the tests that put every key at the ends of its range) starts here.
+struct EffectSettingsTable {
+    const char* key;
+    const char* member;
+    std::span<const SettingField> (*table)();
+    void* (*address)(void* frameInfo);
+};
+// Every effect's, in composite order.
+POSTFX_API std::span<const EffectSettingsTable> effectSettingsTables();
 
 }  // namespace postfx

@@ -275,7 +275,18 @@ constexpr std::array<SettingField, 31> atmosphereFields() {
     }};
 }
 
-constexpr auto kAtmosphereTable = atmosphereFields();
+constexpr uint32_t kHillaire[] = {uint32_t(AtmosphereMultipleScattering::Hillaire)};
+constexpr uint32_t kOrders[] = {uint32_t(AtmosphereMultipleScattering::Orders)};
+
+// Each multiple-scattering model's own LUT settings.
+constexpr auto kAtmosphereTable = common::usedOnlyWith(
+    common::usedOnlyWith(
+        atmosphereFields(),
+        {"multipleScatteringLutSize", "multipleScatteringDirections", "multipleScatteringSteps"},
+        "multipleScattering", kHillaire),
+    {"scatteringOrdersLutSize", "scatteringOrdersAzimuthSize", "scatteringOrdersDirections",
+     "scatteringOrdersSteps", "scatteringOrders"},
+    "multipleScattering", kOrders);
 
 }  // namespace
 

@@ -328,7 +328,23 @@ constexpr std::array<SettingField, 48> cloudFields() {
     }};
 }
 
-constexpr auto kCloudTable = cloudFields();
+constexpr uint32_t kBoxShape[] = {uint32_t(CloudShape::Box)};
+constexpr uint32_t kOctavesModel[] = {uint32_t(CloudScatteringModel::Octaves)};
+constexpr uint32_t kCustomQuality[] = {uint32_t(CloudQuality::Custom)};
+constexpr uint32_t kAutoQuality[] = {uint32_t(CloudQuality::Auto)};
+
+// The box's fields with shape Box; the octave model's constants with model Octaves; what a quality preset
+// replaces (applyCloudQuality) with quality Custom; the budget with Auto.
+constexpr auto kCloudTable = common::usedOnlyWith(
+    common::usedOnlyWith(
+        common::usedOnlyWith(
+            common::usedOnlyWith(cloudFields(), {"box.center", "box.halfSize", "box.yawDeg", "box.pitchDeg"},
+                                 "shape", kBoxShape),
+            {"multipleScattering.octaves", "multipleScattering.attenuation",
+             "multipleScattering.contribution", "multipleScattering.eccentricity"},
+            "multipleScattering.model", kOctavesModel),
+        {"steps", "lightSteps", "resolutionScale", "temporal.enabled"}, "quality", kCustomQuality),
+    {"autoBudgetMs"}, "quality", kAutoQuality);
 
 }  // namespace
 

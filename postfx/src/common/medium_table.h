@@ -10,6 +10,9 @@
 
 #include <array>
 #include <cstddef>
+#include <initializer_list>
+#include <span>
+#include <string_view>
 
 // The address function of member path `m` of struct `S` (SettingField::address).
 #define POSTFX_SETTING_ADDRESS(S, m) [](void* p) -> void* { return &static_cast<S*>(p)->m; }
@@ -27,6 +30,21 @@ constexpr auto concatFields(const std::array<SettingField, N>&... parts) {
      }()),
      ...);
     return out;
+}
+
+// `fields` with the rows whose member is one of `members` used only while Enum member `mode` holds one of
+// `choices` (SettingField::usedWith): the fields a quality preset replaces, a shape's own fields.
+template <size_t N>
+constexpr std::array<SettingField, N> usedOnlyWith(std::array<SettingField, N> fields,
+                                                   std::initializer_list<std::string_view> members,
+                                                   const char* mode, std::span<const uint32_t> choices) {
+    for (SettingField& f : fields)
+        for (std::string_view m : members)
+            if (m == f.member) {
+                f.usedWith = mode;
+                f.usedWithChoices = choices;
+            }
+    return fields;
 }
 
 // FogMedium's rows. noise.textureSize and noise.hostTextureLayout have checks of their own

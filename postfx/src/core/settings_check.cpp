@@ -22,6 +22,36 @@ const SettingField* findSettingByKey(std::span<const SettingField> table, const 
     return nullptr;
 }
 
+bool settingUsed(std::span<const SettingField> table, const SettingField& field, const void* settings) {
+    if (!field.usedWith) return true;
+    const SettingField* mode = findSettingByMember(table, field.usedWith);
+    if (!mode || mode->kind != SettingKind::Enum) return true;
+    const uint32_t v = settingValue<uint32_t>(*mode, settings);
+    for (uint32_t c : field.usedWithChoices)
+        if (c == v) return true;
+    return false;
+}
+
+std::string settingUnusedReason(std::span<const SettingField> table, const SettingField& field,
+                                const void* settings) {
+    if (settingUsed(table, field, settings)) return "";
+    const SettingField& mode = *findSettingByMember(table, field.usedWith);
+    const uint32_t v = settingValue<uint32_t>(mode, settings);
+    std::string value = std::to_string(v);
+    for (const SettingChoice& c : mode.choices)
+        if (c.value == v) value = std::string("\"") + c.key + "\"";
+    std::string uses;
+    for (size_t i = 0; i < field.usedWithChoices.size(); ++i)
+        for (const SettingChoice& c : mode.choices)
+            if (c.value == field.usedWithChoices[i])
+                uses += std::string(i == 0                                  ? ""
+                                    : i + 1 == field.usedWithChoices.size() ? " or "
+                                                                            : ", ") +
+                        "\"" + c.key + "\"";
+    return std::string("with ") + (mode.key ? mode.key : mode.member) + " " + value + " (used with " + uses +
+           ")";
+}
+
 namespace core {
 namespace {
 

@@ -111,8 +111,17 @@ constexpr std::array<SettingField, 8> fogOwnFields() {
     }};
 }
 
-constexpr auto kFogTable = common::concatFields(fogEnabledField(), common::mediumFields<S>(), fogOwnFields(),
-                                                common::temporalFields<S>(FogSettings{}.temporal));
+constexpr uint32_t kCustomQuality[] = {uint32_t(FogQuality::Custom)};
+constexpr uint32_t kAutoQuality[] = {uint32_t(FogQuality::Auto)};
+
+// A quality preset replaces steps, jitter, shadow kernel, resolution scale and temporal.enabled
+// (applyFogQuality); the budget is Auto's.
+constexpr auto kFogTable = common::usedOnlyWith(
+    common::usedOnlyWith(common::concatFields(fogEnabledField(), common::mediumFields<S>(), fogOwnFields(),
+                                              common::temporalFields<S>(FogSettings{}.temporal)),
+                         {"steps", "jitter", "shadowKernel", "resolutionScale", "temporal.enabled"},
+                         "quality", kCustomQuality),
+    {"autoBudgetMs"}, "quality", kAutoQuality);
 constexpr auto kMediumTable = common::mediumFields<FogMedium>();
 
 }  // namespace

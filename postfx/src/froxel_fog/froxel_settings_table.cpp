@@ -108,9 +108,12 @@ constexpr std::array<SettingField, 8> froxelOwnFields() {
     }};
 }
 
-constexpr auto kFroxelTable =
+constexpr uint32_t kPowerDistribution[] = {uint32_t(FroxelDepthDistribution::Power)};
+// The exponent is the power distribution's only (and still checked with Log).
+constexpr auto kFroxelTable = common::usedOnlyWith(
     common::concatFields(froxelEnabledField(), common::mediumFields<S>(), froxelOwnFields(),
-                         common::temporalFields<S>(FroxelFogSettings{}.temporal));
+                         common::temporalFields<S>(FroxelFogSettings{}.temporal)),
+    {"depthExponent"}, "depthDistribution", kPowerDistribution);
 
 using V = FogVolume;
 constexpr double kMaxCoordinate = 1e9;  // volume centres, as local lights' positions [m]
@@ -193,7 +196,11 @@ constexpr std::array<SettingField, 6> volumeFields() {
     }};
 }
 
-constexpr auto kVolumeTable = volumeFields();
+constexpr uint32_t kBoxVolume[] = {uint32_t(FogVolumeShape::Box)};
+constexpr uint32_t kSphereVolume[] = {uint32_t(FogVolumeShape::Sphere)};
+constexpr auto kVolumeTable =
+    common::usedOnlyWith(common::usedOnlyWith(volumeFields(), {"halfSize"}, "shape", kBoxVolume), {"radius"},
+                         "shape", kSphereVolume);
 
 }  // namespace
 
