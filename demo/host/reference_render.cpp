@@ -81,7 +81,13 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         in.localShadows.shadows, in.localShadows.shadows + in.localShadows.shadowCount);
     const bool fog = in.fog.enabled || froxel;  // a fog reference to evaluate
     const postfx::FogNoiseSettings& noiseSettings = froxel ? in.froxelFog.noise : in.fog.noise;
-    const bool noise = fog && noiseSettings.enabled && !noiseSettings.hostTexture;
+    // postfx builds no noise for a medium the noise empties (threshold >= 1, multiplier 0), and then marches
+    // none of it (the froxel fog's volumes have no noise); the references leave such a medium out too.
+    const postfx::FogMedium& medium = froxel ? static_cast<const postfx::FogMedium&>(in.froxelFog)
+                                             : static_cast<const postfx::FogMedium&>(in.fog);
+    const bool noiseEmpties = noiseSettings.multiplier <= 0.0f || noiseSettings.threshold >= 1.0f;
+    const bool noise = fog && noiseSettings.enabled && !noiseSettings.hostTexture &&
+                       (froxel || medium.density > 0.0f) && !noiseEmpties;
     const uint32_t noiseEdge = noiseSettings.textureSize;
     // The clouds' shadow map, made by postfx after the lighting: the GPU's surfaces read the one held from
     // the frame before (one frame late). A frame of the same state recorded first holds this frame's, so
@@ -341,7 +347,11 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     if (froxel) {
         postfx::reference::FroxelFogInputs fi;
         fill(fi);
-        fi.settings = in.froxelFog;  // its volumes point into gpuScene.froxelVolumes
+        fi.settings = in.froxelFog;                   // its volumes point into gpuScene.froxelVolumes
+        if (noiseSettings.enabled && noiseEmpties) {  // the medium the noise empties, said without the noise
+            fi.settings.noise.enabled = false;
+            fi.settings.density = 0.0f;
+        }
         fi.lights = lights;
         if (localShadowAtlas) {  // the atlas the frame drew, read by the GPU's rules (postfx::LocalShadow)
             fi.localShadowDepth = atlasDepth;
@@ -358,6 +368,10 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     postfx::reference::FogInputs fi;
     fill(fi);
     fi.settings = in.fog;
+    if (noiseSettings.enabled && noiseEmpties) {
+        fi.settings.noise.enabled = false;
+        fi.settings.density = 0.0f;
+    }
     if (const postfx::Status s = postfx::reference::renderFog(fi, out.rgba); !s.ok()) {
         error = "fog reference: " + s.message;
         return false;
