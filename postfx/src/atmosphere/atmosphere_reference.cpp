@@ -2,6 +2,7 @@
 #include "atmosphere/atmosphere_reference.h"
 
 #include "atmosphere/atmosphere_orders.h"
+#include "atmosphere/atmosphere_shared.h"
 #include "common/parallel.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@ namespace postfx::atmosphere {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+static_assert(float(kMaxPsi) == gpu::kAtmosphereMaxPsi, "the reference's bound is the GPU's");
 
 double altitudeOf(const Model& m, const glm::dvec3& p) {
     return glm::length(p) - m.groundRadius;

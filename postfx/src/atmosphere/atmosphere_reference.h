@@ -5,7 +5,6 @@
 #pragma once
 
 #include "atmosphere/atmosphere_model.h"
-#include "atmosphere/atmosphere_shared.h"
 
 #include <glm/glm.hpp>
 
@@ -46,8 +45,8 @@ glm::dvec3 sunTransmittance(const Model& m, const glm::dvec3& position, const gl
 //          (eq. 5–6: second-order luminance with an isotropic phase p_u = 1/4π, the ground bounce at p),
 //   f_ms = (1/N) Σ ∫ T(x, x_t)·σs(x_t) dt  (eq. 7–8: the transfer of a unit isotropic luminance),
 // both integrated with the energy-conserving step form (T·S·(1 - e^{-σtΔ})/σt).
-// Ψ's bound [1/sr] (atmosphere_shared.h, kAtmosphereMaxPsi: the GPU's too).
-inline constexpr double kMaxPsi = gpu::kAtmosphereMaxPsi;
+// Ψ's bound [1/sr]: 2/π, the GPU's kAtmosphereMaxPsi (atmosphere_shared.h, which says why).
+inline constexpr double kMaxPsi = 0.6366197723675814;
 
 struct PsiOptions {
     uint32_t directions = 64;          // a perfect square
