@@ -347,8 +347,8 @@ double verticalOpticalDepth(const postfx::AtmosphereSettings& s) {
 // Each case: the GPU frame (16×8, small LUTs) finite, >= 0, within RGBA16F; the CPU reference finite and
 // >= 0; the demo's sky ambient (AtmosphereLightingCache: atmosphereSkyIrradiance / π at the ground, in the
 // cases that ask for it) finite and within FrameInfo::ambient's [0, 1e7]. Where the air's vertical optical
-// depth is at most 1 the GPU's LUTs resolve it: the image's mean within 35 % of the reference's (29 %
-// measured: Mie's forward peak in the sweep's 16×8 sky-view LUT). Thicker air is checked for finiteness only:
+// depth is at most 1 the GPU's LUTs resolve it: the image's mean within 20 % of the reference's (12 %
+// measured, a planet of 1 m under 100 km of air). Thicker air is checked for finiteness only:
 // its light lies in the top few kilometres, between the small LUTs' height nodes (docs/effects/atmosphere.md,
 // "Stability").
 TEST_F(AtmosphereStability, EveryNumberAcrossItsRange) {
@@ -380,7 +380,7 @@ TEST_F(AtmosphereStability, EveryNumberAcrossItsRange) {
         const double tau = verticalOpticalDepth(c.settings);
         const double gpuMean = meanRgb(gpuOut), refMean = meanRgb(ref);
         if (tau <= 1.0) {
-            EXPECT_NEAR(gpuMean, refMean, 0.35 * refMean) << "vertical optical depth " << tau;
+            EXPECT_NEAR(gpuMean, refMean, 0.2 * refMean) << "vertical optical depth " << tau;
             ++compared;
         }
         std::printf("[ sweep ] %-72s tau %-9.3g gpu mean %-9.4g reference %-9.4g ambient %.4g\n",
