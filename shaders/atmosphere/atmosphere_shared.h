@@ -21,6 +21,14 @@ PFX_CONST(uint, kAtmosphereApGroupSize, 32);
 PFX_CONST(uint, kAtmosphereSkyViewSplit, 4);
 // The multiple-scattering LUT: one workgroup per texel, one invocation per direction (at most 1024).
 PFX_CONST(uint, kAtmosphereMsGroupSize, 64);
+// Hillaire's Ψ's bound per unit sun illuminance [1/sr]: 2/π. The diffuse radiance in a plane-parallel
+// atmosphere over a ground of albedo <= 1 is largest where nothing is absorbed (conservative air over a
+// white ground): no net flux, so the diffusion approximation's K = J/3 is the same at every depth as at the
+// top, where a sun at cosine μs gives K = E·(μs/6 + μs²/4)/π (its reflected flux E·μs leaving as a
+// Lambertian field, and the beam): J <= 1.25·E/π. 2/π leaves margin for the approximation. The series
+// L2/(1 - f_ms) exceeds it where it diverges (f_ms -> 1: thick air that barely absorbs, whose light leaves by
+// diffusion, not in the single flight f_ms assumes).
+PFX_CONST(float, kAtmosphereMaxPsi, 0.63661977f);
 // The scattering-orders LUT: one workgroup per (sun, height) node, its invocations sharing the directions.
 PFX_CONST(uint, kAtmosphereOrdersGroupSize, 64);
 PFX_CONST(uint, kAtmosphereOrdersMaxDirections, 576);  // 24×24: the shared memory of lavapipe

@@ -4,6 +4,8 @@
 // stratified directions from radius r, each marched `msLut.w` steps to the top or the ground,
 //   L2   = mean of ∫ T·σs·Tsun·p_u dt + T·Tsun·max(0, n·s)·albedo/π   (eq. 5–6, p_u = 1/4π),
 //   f_ms = mean of ∫ T·σs·p_u dt · 4π                                     (eq. 7–8),
+// 1 - f_ms summed as what does not scatter again (T at the ray's end plus ∫ T·σa dt: the march telescopes
+// to 1 - T_end, so no cancellation as f_ms -> 1), Ψ bounded by kAtmosphereMaxPsi (atmosphere_shared.h),
 // one workgroup per texel, its invocations sharing the directions, summed in shared memory.
 #extension GL_GOOGLE_include_directive : require
 
@@ -20,7 +22,7 @@ layout(binding = kAtmosphereBindingMultiScattering, rgba16f) uniform writeonly i
 #include "common/air/march.glsl"
 
 shared vec3 sharedL2[kAtmosphereMsGroupSize];
-shared vec3 sharedFms[kAtmosphereMsGroupSize];
+shared vec3 sharedLeaves[kAtmosphereMsGroupSize];
 
 void main() {
     uvec2 texel = gl_WorkGroupID.xy;
@@ -34,7 +36,7 @@ void main() {
     vec3 toSun = vec3(sqrt(max(0.0, 1.0 - muS * muS)), muS, 0.0);
 
     uint n = atmo.msLut.z, steps = atmo.msLut.w;
-    vec3 l2 = vec3(0.0), fms = vec3(0.0);
+    vec3 l2 = vec3(0.0), leaves = vec3(0.0);  // leaves: Σ (1 - the direction's f_ms)
     for (uint k = lane; k < n * n; k += kAtmosphereMsGroupSize) {
         // Stratified uniform directions: azimuth 2π·a, cos(polar) = 1 - 2b.
         float a = (float(k / n) + 0.5) / float(n), b = (float(k % n) + 0.5) / float(n);
@@ -42,17 +44,21 @@ void main() {
         float sinPolar = sqrt(max(0.0, 1.0 - cosPolar * cosPolar));
         vec3 dir = vec3(cos(phi) * sinPolar, cosPolar, sin(phi) * sinPolar);
         vec3 seg = atmosphereSegment(origin, dir);
-        if (!(seg.y > seg.x) && seg.z == 0.0) continue;
+        if (!(seg.y > seg.x) && seg.z == 0.0) {
+            leaves += vec3(1.0);  // misses the atmosphere
+            continue;
+        }
         float dt = max(0.0, seg.y - seg.x) / float(steps);
-        vec3 T = vec3(1.0);
+        vec3 T = vec3(1.0), absorbed = vec3(0.0);
         for (uint s = 0u; s < steps; ++s) {
             vec3 p = origin + (seg.x + (float(s) + 0.5) * dt) * dir;
             AtmosphereMedium m = atmosphereMedium(length(p) - atmo.radii.x);
-            vec3 w = T * atmosphereStepIntegral(m.extinction, dt) * m.scattering;  // ∫ T·σs dt
-            l2 += w * sunTransmittanceAt(p, toSun) * (1.0 / (4.0 * kAtmospherePi));
-            fms += w;
+            vec3 t = T * atmosphereStepIntegral(m.extinction, dt);  // ∫ T dt
+            l2 += t * m.scattering * sunTransmittanceAt(p, toSun) * (1.0 / (4.0 * kAtmospherePi));
+            absorbed += t * (m.extinction - m.scattering);
             T *= exp(-m.extinction * dt);
         }
+        leaves += T + absorbed;
         if (seg.z != 0.0) {
             vec3 p = origin + seg.y * dir;
             float nDotL = max(0.0, dot(normalize(p), toSun));
@@ -60,20 +66,25 @@ void main() {
         }
     }
     sharedL2[lane] = l2;
-    sharedFms[lane] = fms;
+    sharedLeaves[lane] = leaves;
     barrier();
     for (uint stride = kAtmosphereMsGroupSize / 2u; stride > 0u; stride /= 2u) {
         if (lane < stride) {
             sharedL2[lane] += sharedL2[lane + stride];
-            sharedFms[lane] += sharedFms[lane + stride];
+            sharedLeaves[lane] += sharedLeaves[lane + stride];
         }
         barrier();
     }
     if (lane == 0u) {
         float count = float(n * n);
-        vec3 meanL2 = sharedL2[0] / count, meanFms = sharedFms[0] / count;
-        // Σ_k f_ms^k = 1 / (1 - f_ms) (eq. 9); f_ms < 1 in any medium that absorbs or lets light escape.
-        vec3 psi = meanL2 / max(vec3(1.0) - meanFms, vec3(1e-6));
+        vec3 meanL2 = sharedL2[0] / count, meanLeaves = sharedLeaves[0] / count;
+        // Σ_k f_ms^k = 1 / (1 - f_ms) (eq. 9), bounded: kAtmosphereMaxPsi where the series diverges (nothing
+        // leaves within float's range), 0 where no light arrives.
+        vec3 psi = vec3(0.0);
+        for (int c = 0; c < 3; ++c)
+            if (meanL2[c] > 0.0)
+                psi[c] = meanL2[c] >= kAtmosphereMaxPsi * meanLeaves[c] ? kAtmosphereMaxPsi
+                                                                        : meanL2[c] / meanLeaves[c];
         imageStore(multiScatteringOut, ivec3(texel, 0), vec4(min(psi * atmo.skyView.w, vec3(65504.0)), 1.0));
     }
 }

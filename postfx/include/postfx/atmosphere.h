@@ -32,7 +32,7 @@ enum class AtmosphereMultipleScattering : uint32_t {
 struct AtmosphereSettings {
     bool enabled = false;
 
-    // Planet. Radii of the ground sphere and of the atmosphere's top [m]: ground in [1, 1e8]; top greater
+    // Planet. Radii of the ground sphere and of the atmosphere's top [m]: ground in [1, 1e8); top greater
     // than ground and at most 1e8.
     float groundRadius = 6360e3f;
     float topRadius = 6460e3f;

@@ -13,6 +13,7 @@
 #include "atmosphere/atmosphere_shared.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace postfx::atmosphere {
@@ -184,10 +185,14 @@ gpu::AtmosphereUniforms buildUniforms(const FrameInfo& frame, const DepthConvent
     // The sky-view LUT's radius (clamped onto the ground).
     const double skyRadius = std::max(glm::length(v.skyView.camera), g);
     u.radii = glm::vec4(float(g), float(t), float((t - g) * (t + g)), float(ordersStorageScale(s)));
-    u.rayleigh = glm::vec4(s.rayleighScattering, float(1.0 / s.rayleighScaleHeight));
-    u.mie = glm::vec4(s.mieScattering, s.mieAbsorption, float(1.0 / s.mieScaleHeight), s.mieAnisotropy);
+    // A scale height below 1/FLT_MAX m (a denormal float) would give an infinite 1/H, and 0·Inf = NaN at
+    // the ground: FLT_MAX instead (the density falls to 0 within 1e-38 m either way). A denormal half width
+    // may be flushed to 0 on the device (0/0 at the tent's peak): the smallest normal float instead.
+    const auto reciprocal = [](double h) { return float(std::min(1.0 / h, double(FLT_MAX))); };
+    u.rayleigh = glm::vec4(s.rayleighScattering, reciprocal(s.rayleighScaleHeight));
+    u.mie = glm::vec4(s.mieScattering, s.mieAbsorption, reciprocal(s.mieScaleHeight), s.mieAnisotropy);
     u.ozone = glm::vec4(s.ozoneAbsorption, s.ozoneCenterHeight);
-    u.albedo = glm::vec4(s.groundAlbedo, s.ozoneHalfWidth);
+    u.albedo = glm::vec4(s.groundAlbedo, std::max(s.ozoneHalfWidth, FLT_MIN));
     u.camera = glm::vec4(glm::vec3(camera), float(glm::length(camera)));
     u.apCamera = glm::vec4(glm::vec3(v.aerial.camera), s.aerialPerspectiveDistance);
     u.apOffset =

@@ -2,6 +2,7 @@
 #include "atmosphere/atmosphere_reference.h"
 
 #include "atmosphere/atmosphere_orders.h"
+#include "atmosphere/atmosphere_shared.h"
 #include "common/parallel.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@ namespace postfx::atmosphere {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+static_assert(float(kMaxPsi) == gpu::kAtmosphereMaxPsi, "the reference's bound is the GPU's");
 
 double altitudeOf(const Model& m, const glm::dvec3& p) {
     return glm::length(p) - m.groundRadius;
@@ -65,6 +67,19 @@ namespace {
 // sun transmittance from `sunT(position, toSun)`. Each direction is marched once; its samples serve every
 // sun. The stratified pattern is symmetric about the sun's vertical plane (azimuth φ_i and φ_{n-1-i} =
 // 2π - φ_i give the same terms): half of it is marched, each column counted twice.
+// Ψ = L2 / (1 - f_ms) (eq. 9, Σ_k f_ms^k), per channel, from `leaves` = 1 - f_ms computed as what does not
+// scatter again: the mean over directions of T at the ray's end plus ∫ T·σa dt (a march telescopes: Σ T·(1 -
+// e^{-σtΔ}) = 1 - T_end, so this is exactly 1 minus the marched f_ms, without its cancellation as f_ms -> 1
+// in thick media that barely absorb). Bounded by kMaxPsi (atmosphere_reference.h): where the series diverges
+// (nothing leaves within double's range) or exceeds what energy conservation allows. 0 where no light
+// arrives (L2 = 0).
+glm::dvec3 seriesPsi(const glm::dvec3& l2, const glm::dvec3& leaves) {
+    glm::dvec3 psi;
+    for (int c = 0; c < 3; ++c)
+        psi[c] = l2[c] <= 0.0 ? 0.0 : l2[c] >= kMaxPsi * leaves[c] ? kMaxPsi : l2[c] / leaves[c];
+    return psi;
+}
+
 template <class SunT>
 void psiForSuns(const Model& m, double r, std::span<const double> muS, const PsiOptions& o, const SunT& sunT,
                 std::span<glm::dvec3> out) {
@@ -77,7 +92,7 @@ void psiForSuns(const Model& m, double r, std::span<const double> muS, const Psi
     }
     const auto n = uint32_t(std::lround(std::sqrt(double(o.directions))));
     std::vector<glm::dvec3> points(o.steps), weights(o.steps);
-    glm::dvec3 fms(0.0);
+    glm::dvec3 leaves(0.0);  // Σ (1 - the direction's f_ms term): see seriesPsi
     for (uint32_t i = 0; i < n; ++i) {
         const uint32_t mirror = n - 1 - i;
         if (mirror < i) break;
@@ -90,20 +105,24 @@ void psiForSuns(const Model& m, double r, std::span<const double> muS, const Psi
             const glm::dvec3 dir(std::cos(phi) * sinPolar, cosPolar, std::sin(phi) * sinPolar);
 
             const AtmosphereSegment seg = atmosphereSegment(m, x, dir);
-            // A ray that starts on the ground ends there at once: its ground bounce still counts.
-            if (seg.tEnd <= seg.tBegin && !seg.hitsGround) continue;
+            // A ray that misses the atmosphere leaves at once; one that starts on the ground ends there at
+            // once: its ground bounce still counts.
+            if (seg.tEnd <= seg.tBegin && !seg.hitsGround) {
+                leaves += columnWeight;
+                continue;
+            }
             const double dt = std::max(0.0, seg.tEnd - seg.tBegin) / o.steps;
-            glm::dvec3 T(1.0), F(0.0);
+            glm::dvec3 T(1.0), absorbed(0.0);
             for (uint32_t s = 0; s < o.steps; ++s) {
                 const glm::dvec3 p = x + (seg.tBegin + (s + 0.5) * dt) * dir;
                 const Medium md = mediumAt(m, altitudeOf(m, p));
                 const glm::dvec3 w = T * stepIntegral(md.extinction, dt);  // ∫ T dt over the step
                 points[s] = p;
                 weights[s] = w * md.scattering * columnWeight;
-                F += w * md.scattering;
+                absorbed += w * (md.extinction - md.scattering);
                 T *= expNeg(md.extinction * dt);
             }
-            fms += F * columnWeight;
+            leaves += (T + absorbed) * columnWeight;
             const glm::dvec3 ground = seg.hitsGround ? x + seg.tEnd * dir : glm::dvec3(0.0);
             const glm::dvec3 normal = seg.hitsGround ? glm::normalize(ground) : glm::dvec3(0.0);
             for (size_t k = 0; k < suns; ++k) {
@@ -121,9 +140,8 @@ void psiForSuns(const Model& m, double r, std::span<const double> muS, const Psi
         }
     }
     const double count = double(n) * n;
-    fms /= count;
     for (size_t k = 0; k < suns; ++k)
-        out[k] = (l2[k] / count) / (glm::dvec3(1.0) - fms);  // Σ_k f_ms^k = 1/(1 - f_ms), f_ms < 1 (eq. 9)
+        out[k] = seriesPsi(l2[k] / count, leaves / count);
 }
 
 double clamp01(double x) {

@@ -37,13 +37,17 @@ glm::dvec3 sunTransmittance(const Model& m, const glm::dvec3& position, const gl
                             uint32_t steps);
 
 // Ψ at radius r for the sun at cosine muS from the zenith, per unit sun illuminance (Hillaire eq. 10,
-// what the multiple-scattering LUT stores) [1/sr]: Ψ = L2 / (1 - f_ms), where over `directions` (n×n,
-// stratified uniformly over the sphere) with `steps` midpoint steps each to the atmosphere's edge or ground:
+// what the multiple-scattering LUT stores) [1/sr]: Ψ = min(L2 / (1 - f_ms), kMaxPsi), where over `directions`
+// (n×n, stratified uniformly over the sphere) with `steps` midpoint steps each to the atmosphere's edge or
+// ground:
 //   L2   = (1/N) Σ L'(ω),  L'(ω) = ∫ T(x, x_t)·σs(x_t)·Tsun(x_t)·p_u dt + T(x, p)·Tsun(p)·max(0,
 //   n·s)·albedo/π
 //          (eq. 5–6: second-order luminance with an isotropic phase p_u = 1/4π, the ground bounce at p),
 //   f_ms = (1/N) Σ ∫ T(x, x_t)·σs(x_t) dt  (eq. 7–8: the transfer of a unit isotropic luminance),
 // both integrated with the energy-conserving step form (T·S·(1 - e^{-σtΔ})/σt).
+// Ψ's bound [1/sr]: 2/π, the GPU's kAtmosphereMaxPsi (atmosphere_shared.h, which says why).
+inline constexpr double kMaxPsi = 0.6366197723675814;
+
 struct PsiOptions {
     uint32_t directions = 64;          // a perfect square
     uint32_t steps = 20;               // per direction

@@ -53,8 +53,9 @@ constexpr std::array<SettingField, 31> atmosphereFields() {
          .defaults = {double(s.enabled)},
          .meaning = "draw the sky and the aerial perspective",
          .address = POSTFX_SETTING_ADDRESS(S, enabled)},
+        // Open at kMaxRadius: the top, at most kMaxRadius, must be greater.
         ui(number("ground_radius", "groundRadius", "m", kMinGroundRadius, kMaxRadius, s.groundRadius,
-                  POSTFX_SETTING_ADDRESS(S, groundRadius), "radius of the planet's ground"),
+                  POSTFX_SETTING_ADDRESS(S, groundRadius), "radius of the planet's ground", false, true),
            1e5, 1e8, true),
         // Greater than groundRadius: checked beside the table.
         ui(number("top_radius", "topRadius", "m", 0.0, kMaxRadius, s.topRadius,
