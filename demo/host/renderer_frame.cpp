@@ -151,9 +151,11 @@ glm::mat4 Renderer::Impl::projection(const Scene& scene) const {
 FrameLight Renderer::Impl::frameLight(const Scene& scene) const {
     FrameLight light;
     light.surfaces = atmosphereLighting.update(scene);
-    light.preExposure = options.preExpose && meteredExposure > 0.0
-                            ? float(meteredExposure)
-                            : scenePreExposure(scene, light.surfaces.ambient, options);
+    light.preExposure = scenePreExposure(scene, light.surfaces.ambient, options);
+    // The metered pre-exposure, within this frame's limits (a light switched on later may lower them).
+    if (options.preExpose && meteredExposure > 0.0)
+        light.preExposure =
+            float(std::min(meteredExposure, preExposureRange(scene, light.surfaces.ambient).highest));
     return light;
 }
 
