@@ -69,6 +69,8 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const Scene gpuScene = sceneAtFrame(scene, frameIndex);
     if (!setScene(gpuScene, error)) return false;               // also waits for the device to be idle
     if (!r.reserveLocalShadows(gpuScene, error)) return false;  // before postfx is asked about the frame
+    // The pre-exposure render() chooses for what this frame shows (host/metering.h).
+    if (!r.meterFirstFrame(gpuScene, error)) return false;
 
     const bool froxel = gpuScene.froxelFog.enabled;
     const ShadowFit fit = r.shadowFit(gpuScene);

@@ -3,7 +3,9 @@
 
 #include "demo_host_spirv.h"
 #include "demo_shared.h"
+#include "host/metering.h"
 #include "host/renderer_impl.h"
+#include "scene/scene.h"
 
 #include <glm/gtc/packing.hpp>
 
@@ -240,6 +242,37 @@ bool Renderer::setScene(const Scene& scene, std::string& error) {
     return true;
 }
 
+bool Renderer::Impl::meterFirstFrame(const Scene& state, std::string& error) {
+    meteredExposure = 0.0;  // the first pass: the camera's exposure (scenePreExposure)
+    if (!options.preExpose) return true;
+    const double wanted = exposureFromEv100(state.camera.ev100);
+    for (uint32_t pass = 0; pass < kMeteringPasses; ++pass) {
+        const size_t slot = 0;  // frame 0's
+        VkCommandBuffer cmd = commandBuffers[slot];
+        if (!vkCheck(vkWaitForFences(host.device, 1, &fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences",
+                     error))
+            return false;
+        vkResetCommandBuffer(cmd, 0);
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        vkBeginCommandBuffer(cmd, &bi);
+        const bool recorded = recordFrame(cmd, state, 0, postfx::ImageInput{}, error);
+        if (recorded) recordReadback(cmd);
+        if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
+        if (!submit(cmd, slot, error) ||
+            !vkCheck(vkWaitForFences(host.device, 1, &fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences",
+                     error))
+            return false;
+        const Metering m = meterHalfImage(static_cast<const uint16_t*>(readback.mapped),
+                                          size_t(extent.width) * extent.height);
+        const PreExposureRange range = preExposureRange(state, frameLight(state).surfaces.ambient);
+        const double next = meteredPreExposure(m, preExposure, wanted, range.lowest, range.highest);
+        if (next == double(preExposure) || pass + 1 == kMeteringPasses) break;  // frame 0 stands
+        meteredExposure = next;
+    }
+    return true;
+}
+
 bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
     Impl& r = *impl_;
     const VkDevice device = r.host.device;
@@ -255,7 +288,11 @@ bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
     if (!setScene(scene, error)) return false;
     glm::vec3 meshCentre = scene.camera.position;
     const float replanDistance = 0.25f * std::min(scene.camera.farPlane, 1e4f);
-    for (uint32_t f = 0; f < r.options.frames; ++f) {
+    // Frame 0, rendered until its pre-exposure fits what it shows (host/metering.h), stands as the first.
+    if (motion) moveToFrame(scene, 0, moving);
+    if (!r.meterFirstFrame(state, error)) return false;
+    const uint32_t first = r.options.preExpose ? 1 : 0;
+    for (uint32_t f = first; f < r.options.frames; ++f) {
         // Every call renders frames 0..frames-1 (renderReference() shows frame frames-1). The previous
         // call waited for all its frames, so restarting the indices reuses nothing still in flight.
         const uint64_t frameIndex = f;

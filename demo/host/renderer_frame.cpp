@@ -115,9 +115,8 @@ std::vector<ShadowFaceDraw> makeShadowFaceDraws(const LocalShadowLayout& shadows
 
 }  // namespace
 
-float scenePreExposure(const Scene& scene, const glm::vec3& ambient, const RenderOptions& options) {
-    if (!options.preExpose) return 1.0f;
-    double p = exposureFromEv100(scene.camera.ev100);
+PreExposureRange preExposureRange(const Scene& scene, const glm::vec3& ambient) {
+    double p = 0x1p33;  // 2^-33 ≈ 1.2e-10 and 2^33 ≈ 8.6e9: within postfx's [1e-10, 1e10]
     double light = 0.0, intensity = 0.0;
     for (int c = 0; c < 3; ++c)
         light = std::max({light, double(scene.sun.illuminance[c]), double(ambient[c])});
@@ -127,8 +126,15 @@ float scenePreExposure(const Scene& scene, const glm::vec3& ambient, const Rende
     // A margin under postfx's limits for the float rounding of p and of the products.
     if (light > 0.0) p = std::min(p, 1e7 / light);
     if (intensity > 0.0) p = std::min(p, 1e9 / intensity);
-    // 2^-33 ≈ 1.2e-10 and 2^33 ≈ 8.6e9: within postfx's [1e-10, 1e10]; rounding down keeps the limits.
-    return float(std::exp2(std::clamp(std::floor(std::log2(p)), -33.0, 33.0)));
+    // Rounding down keeps the limits.
+    return {0x1p-33, std::exp2(std::clamp(std::floor(std::log2(p)), -33.0, 33.0))};
+}
+
+float scenePreExposure(const Scene& scene, const glm::vec3& ambient, const RenderOptions& options) {
+    if (!options.preExpose) return 1.0f;
+    const PreExposureRange range = preExposureRange(scene, ambient);
+    const double p = std::exp2(std::floor(std::log2(double(exposureFromEv100(scene.camera.ev100)))));
+    return float(std::clamp(p, range.lowest, range.highest));
 }
 
 ShadowFit Renderer::Impl::shadowFit(const Scene& scene) const {
@@ -146,6 +152,10 @@ FrameLight Renderer::Impl::frameLight(const Scene& scene) const {
     FrameLight light;
     light.surfaces = atmosphereLighting.update(scene);
     light.preExposure = scenePreExposure(scene, light.surfaces.ambient, options);
+    // The metered pre-exposure, within this frame's limits (a light switched on later may lower them).
+    if (options.preExpose && meteredExposure > 0.0)
+        light.preExposure =
+            float(std::min(meteredExposure, preExposureRange(scene, light.surfaces.ambient).highest));
     return light;
 }
 

@@ -41,6 +41,13 @@ struct FrameLight {
 // ≤ 1e9). 1 when options.preExpose is off. `ambient`: the surfaces' (and postfx's) ambient.
 float scenePreExposure(const Scene& scene, const glm::vec3& ambient, const RenderOptions& options);
 
+// The pre-exposures postfx accepts for the scene (FrameInfo::preExposure's range and the light limits
+// above), powers of two.
+struct PreExposureRange {
+    double lowest = 1.0, highest = 1.0;
+};
+PreExposureRange preExposureRange(const Scene& scene, const glm::vec3& ambient);
+
 struct Renderer::Impl {
     explicit Impl(VulkanHost& h) : host(h) {}
     ~Impl();
@@ -95,6 +102,9 @@ struct Renderer::Impl {
     bool cameraCutRequested = false;
     // The pre-exposure of the last recorded frame (its HDR image holds radiance × this).
     float preExposure = 1.0f;
+    // The pre-exposure render() and renderReference() metered from what the camera sees (0:
+    // none, frameLight takes scenePreExposure's).
+    double meteredExposure = 0.0;
 
     // renderReference(): where postfx writes the fogged frame so that the HDR image keeps the
     // un-fogged scene (FrameInfo::output); created on first use.
@@ -114,6 +124,13 @@ struct Renderer::Impl {
     bool createFrameSet(std::string& error);
     bool createPostfx(std::string& error);
     void recordReadback(VkCommandBuffer cmd) const;
+    // Records frame 0 of `state` (a camera cut), reads it back and meters it (host/metering.h); again
+    // with the metered pre-exposure (meteredExposure) while that changes, at most kMeteringPasses times.
+    // The HDR image and the readback then hold frame 0 as rendered with meteredExposure (or the camera's
+    // scenePreExposure when that fit). Nothing to do (meteredExposure 0) without options.preExpose.
+    bool meterFirstFrame(const Scene& state, std::string& error);
+    // 2^33 to 2^-33 in steps of 2^-16 and the pass that measures exactly.
+    static constexpr uint32_t kMeteringPasses = 6;
 
     // The scene's light for a frame: the surfaces' lighting through the atmosphere and the pre-exposure.
     FrameLight frameLight(const Scene& scene) const;

@@ -39,6 +39,7 @@ layout(binding = kCloudBindingDistanceIn, r32ui) uniform restrict readonly uimag
 layout(binding = kCloudBindingTemporal, std140) uniform Temporal {
     TemporalUniforms temporal;
 };
+#include "common/history_rescale.glsl"
 #include "clouds/distances.glsl"
 
 bool finite(vec4 v) {
@@ -94,6 +95,9 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvTexel, float expectedSur
         ivec2 q = clamp(p0 + o - 1, ivec2(0), size - 1);
         vec4 h = imageLoad(historyIn, q);
         vec2 d = unpackCloudDistances(imageLoad(distanceIn, q).r);
+        // The march's estimates are stored in the color format (images.glsl): clipped or underflowed
+        // history is not rescaled to this frame's pre-exposure.
+        if (finite(h) && !rescalableHistory(h.rgb, kColorMax, kColorMin)) return false;
         if (finite(h) && d.x >= 0.0 && sameSurface(d.y, expectedSurface)) {
             sum += w * h;
             weight += w;

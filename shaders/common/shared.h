@@ -57,6 +57,9 @@ struct ViewDistancePush {  // push constants of core/view_distance.comp
 
 // ---- temporal accumulation: the fogs, the clouds (docs/temporal.md; postfx/src/core/temporal.h) ----
 PFX_CONST(uint, kTemporalMaxSpheres, 64u);  // postfx::kTemporalMaxRejectedSpheres
+// A history texel at or above this fraction of its format's largest value clipped: it is not rescaled
+// after a pre-exposure drop (common/history_rescale.glsl).
+PFX_CONST(float, kTemporalClipFraction, 0.5f);
 
 struct TemporalUniforms {
     mat4 previousClip;  // current camera-relative position -> the previous frame's clip space

@@ -33,6 +33,7 @@ layout(local_size_x = kFogGroupSize, local_size_y = kFogGroupSize) in;
 
 #include "fog/bindings.glsl"
 #include "fog/scatter_image.glsl"
+#include "common/color_format.glsl"
 
 layout(binding = kFogBindingHistoryIn, rgba32f) uniform readonly image2D historyIn;
 layout(binding = kFogBindingHistoryOut, rgba32f) uniform writeonly image2D historyOut;
@@ -41,6 +42,7 @@ layout(binding = kFogBindingDistance, r32f) uniform readonly image2D distanceCur
 layout(binding = kFogBindingTemporal, std140) uniform Temporal {
     TemporalUniforms temporal;
 };
+#include "common/history_rescale.glsl"
 
 #include "common/medium/ray.glsl"
 #ifdef COMPOSITE
@@ -85,6 +87,9 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvSource, float maxDistanc
         if (!(w > 0.0)) continue;  // not loaded
         vec4 h = imageLoad(historyIn, q);
         float d = min(imageLoad(distanceIn, q).r, maxDistance);  // where that texel's ray ended
+        // The march's estimates are stored in the color format (scatterImage): clipped or underflowed
+        // history is not rescaled to this frame's pre-exposure.
+        if (finite(h) && !rescalableHistory(h.rgb, kColorMax, kColorMin)) return false;
         if (finite(h) && abs(d - expected) <= kFogTemporalDistanceTolerance * expected) {
             sum += w * h;
             weight += w;

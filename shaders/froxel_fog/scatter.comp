@@ -58,6 +58,7 @@ layout(binding = kFroxelBindingHistory) uniform sampler3D historyVolume;
 layout(binding = kFroxelBindingTemporal, std140) uniform Temporal {
     TemporalUniforms temporal;
 };
+#include "common/history_rescale.glsl"
 
 // Where the previous frame's grid held camera-relative `x`, as texture coordinates of its volume
 // (x, y: the previous view's uv; z: the slice coordinate of the distance from the previous camera with
@@ -134,7 +135,11 @@ vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 centre, float start, float 
     for (int k = 0; k < 8; ++k) {
         ivec3 o = ivec3(k & 1, (k >> 1) & 1, k >> 2);
         vec3 w = mix(1.0 - f, f, vec3(o));
-        history += w.x * w.y * w.z * texelFetch(historyVolume, clamp(p0 + o, ivec3(0), last), 0);
+        if (!(w.x * w.y * w.z > 0.0)) continue;  // not read
+        vec4 h = texelFetch(historyVolume, clamp(p0 + o, ivec3(0), last), 0);
+        // Stored clamped to kFroxelHalfMax, in RGBA32F (no underflow): a clipped froxel is not rescaled.
+        if (!rescalableHistory(h.rgb, kFroxelHalfMax, 0.0)) return current;
+        history += w.x * w.y * w.z * h;
     }
     // The previous frame's storage scale and pre-exposure -> this one's.
     history.rgb *= temporal.previous.y;

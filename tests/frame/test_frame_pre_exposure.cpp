@@ -2,7 +2,8 @@
 // host's color stored × p, every effect writes its radiance × p: the frame equals p × the frame in physical
 // units (the atmosphere, the clouds and either fog together, p a power of two and not, RGBA32F so that
 // nothing clips), and a temporal history accumulated at one pre-exposure carries on at another (rescaled,
-// not reset: the frame after the change equals a sequence at the new pre-exposure throughout).
+// not reset: the frame after the change equals a sequence at the new pre-exposure throughout), except
+// where it clipped: after a 512× drop the clipped history is rejected, not rescaled into a ghost.
 #include "fog_harness.h"
 
 #include <gtest/gtest.h>
@@ -76,18 +77,25 @@ protected:
 
     // Frames 0..frames-1 of `f` in `c` (still camera), frame k at pre-exposure exposures[k]; the last one's
     // output divided by its pre-exposure.
-    std::vector<float> run(postfx::Context& c, postfx::FrameInfo f, const std::vector<float>& exposures) {
+    // `colorFormat`: the color image's (RGBA32F: nothing clips); `each`: every frame's output, divided by
+    // its pre-exposure; `cut`: a frame besides 0 that is a camera cut.
+    std::vector<float> run(postfx::Context& c, postfx::FrameInfo f, const std::vector<float>& exposures,
+                           VkFormat colorFormat = VK_FORMAT_R32G32B32A32_SFLOAT,
+                           std::vector<std::vector<float>>* each = nullptr, size_t cut = 0) {
         FogHarness harness(*host, gpu);
         std::vector<float> out;
         for (size_t k = 0; k < exposures.size(); ++k) {
             f.frameIndex = k;
-            f.cameraCut = k == 0;
+            f.cameraCut = k == 0 || k == cut;
             f.preExposure = exposures[k];
-            const postfx::Status s = harness.run(c, images(f, exposures[k]), f, out);
+            FogHarnessImages im = images(f, exposures[k]);
+            im.colorFormat = colorFormat;
+            const postfx::Status s = harness.run(c, im, f, out);
             EXPECT_TRUE(s.ok()) << s.message;
+            for (size_t i = 0; i < out.size(); ++i)
+                if (i % 4 != 3) out[i] /= exposures[k];
+            if (each) each->push_back(out);
         }
-        for (size_t i = 0; i < out.size(); ++i)
-            if (i % 4 != 3) out[i] /= exposures.back();
         return out;
     }
 };
@@ -106,6 +114,23 @@ double worstRelative(const std::vector<float>& a, const std::vector<float>& b) {
             std::max(worst, std::abs(double(a[i]) - b[i]) / std::max(std::abs(double(b[i])), 1e-3 * mean));
     }
     return worst;
+}
+
+// Mean over RGB of |a - b| / max(|b|, 1e-3 · the image's mean).
+double meanRelative(const std::vector<float>& a, const std::vector<float>& b) {
+    double mean = 0.0;
+    for (float v : b)
+        mean += std::abs(v);
+    mean /= double(std::max<size_t>(b.size(), 1));
+    double sum = 0.0;
+    size_t count = 0;
+    for (size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        if (i % 4 == 3) continue;
+        if (!std::isfinite(a[i])) return 1e30;
+        sum += std::abs(double(a[i]) - b[i]) / std::max(std::abs(double(b[i])), 1e-3 * mean);
+        ++count;
+    }
+    return a.size() == b.size() && count > 0 ? sum / double(count) : 1e30;
 }
 
 }  // namespace
@@ -142,5 +167,52 @@ TEST_F(FramePreExposureTest, HistoriesAreRescaledWhenThePreExposureChanges) {
             froxel ? "froxel fog" : "ray-marched fog", worst, fromReset);
         EXPECT_LT(worst, 2e-5);
         EXPECT_GT(fromReset, 1e-3);  // the history matters in this sequence
+    }
+}
+
+TEST_F(FramePreExposureTest, ClippedHistoryIsNotRescaledIntoAGhost) {
+    // At pre-exposure 4096 the fog's in-scattering of a 1,000 lux sun, the clouds and the froxels near a
+    // 2e5 cd light clip at RGBA16F's 65,504; at frame 4 the pre-exposure drops 512× to 8, where none
+    // does. Rescaled, the clipped history would be 512× too dark and fade over ~30 frames.
+    constexpr float kHigh = 4096.0f, kLow = 8.0f;
+    constexpr size_t kBefore = 4, kAfter = 3;
+    for (bool froxel : {false, true}) {
+        postfx::FrameInfo f = frame(froxel);
+        f.sun.illuminance = {1e3f, 1e3f, 1e3f};
+        f.ambient = {3.0f, 4.0f, 6.0f};
+        postfx::LocalLight light;
+        light.position = {0.6, 2.3, -2.0};
+        light.intensity = {2e5f, 2e5f, 2e5f};
+        light.range = 30.0f;
+        if (froxel) {
+            f.froxelFog.anisotropy = 0.0f;  // its storage scale follows the sun's peak: keep it low
+            f.lights = &light;
+            f.lightCount = 1;
+        }
+        std::vector<float> exposures(kBefore, kHigh);
+        exposures.resize(kBefore + kAfter, kLow);
+        std::vector<std::vector<float>> changed, throughout, cut, high;
+        const std::vector<float> low(kBefore + kAfter, kLow);
+        run(*newContext(), f, exposures, VK_FORMAT_R16G16B16A16_SFLOAT, &changed);
+        run(*newContext(), f, low, VK_FORMAT_R16G16B16A16_SFLOAT, &throughout);
+        // What texels that reject their history show: the run at the new exposure, reset at the drop.
+        run(*newContext(), f, low, VK_FORMAT_R16G16B16A16_SFLOAT, &cut, kBefore);
+        run(*newContext(), f, {kHigh}, VK_FORMAT_R16G16B16A16_SFLOAT, &high);
+        // The scene clips at the high pre-exposure (what the history held), not at the low one.
+        size_t clipped = 0;
+        for (size_t i = 0; i < high[0].size(); ++i)
+            clipped += i % 4 != 3 && high[0][i] * kHigh >= 0.5f * 65504.0f;
+        EXPECT_GT(clipped, high[0].size() / 8) << (froxel ? "froxel fog" : "ray-marched fog");
+        for (size_t k = kBefore; k < kBefore + kAfter; ++k) {
+            // The temporal tolerance: what the frame after a reset at the drop differs by (its texels hold
+            // that frame alone, as rejected texels do; they then blend on at the history's weight).
+            const double difference = meanRelative(changed[k], throughout[k]);
+            const double reset = meanRelative(cut[kBefore], throughout[kBefore]);
+            std::printf(
+                "[ frame ] %s, frame %zu after a 512x drop at frame %zu: mean relative difference from "
+                "the run at the new pre-exposure %.3g (reset at the drop: %.3g)\n",
+                froxel ? "froxel fog" : "ray-marched fog", k, kBefore, difference, reset);
+            EXPECT_LE(difference, std::max(reset, 1e-4)) << "frame " << k;
+        }
     }
 }

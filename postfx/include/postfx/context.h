@@ -120,7 +120,9 @@ struct FrameInfo {
     // as radiance × preExposure and writes every radiance it adds the same way (the light it is given,
     // below, stays in physical units; docs/integration.md, "Pre-exposure"). In [1e-10, 1e10], and the
     // pre-exposed light within the ranges below (sun.illuminance and ambient × preExposure ≤ 1e7, each
-    // light's intensity × preExposure ≤ 1e9). May change every frame: histories are rescaled.
+    // light's intensity × preExposure ≤ 1e9). May change every frame: histories are rescaled, except
+    // texels that clipped before a drop or underflowed before a rise, which are rejected
+    // (docs/temporal.md). Choose it from what the camera sees, so that the visible radiance fits RGBA16F.
     float preExposure = 1.0f;
     // Scene depth, D32_SFLOAT / D16_UNORM / D24_UNORM_S8_UINT / X8_D24_UNORM_PACK32 / D32_SFLOAT_S8_UINT
     // (its view must select the depth aspect only), usage SAMPLED,
