@@ -167,13 +167,13 @@ TEST_F(FroxelFogPlanTest, GridOverTheLimitsIsRefusedNotClamped) {
         if (r.name == "froxel_fog.integrated") EXPECT_EQ(r.sizedBy, "froxel_fog.tile_size_px");
     EXPECT_EQ(plans[2].first.message,
               "FrameInfo.froxelFog.tileSizePx: 2 px at 1024x600 gives 512x300x512 = 78643200 froxels, more "
-              "than kMaxFroxels (16777216)");
+              "than kMaxFroxels (8388608)");
     for (const postfx::PlannedResource& r : plans[3].second.resources)
         if (r.name == "froxel_fog.integrated") EXPECT_EQ(r.sizedBy, "froxel_fog.grid");
     postfx::FroxelFogSettings s;
-    s.grid = {512, 512, 65};
+    s.grid = {512, 512, 33};
     EXPECT_EQ(postfx::validateFroxelFogSettings(s).message,
-              "FrameInfo.froxelFog.grid: 512x512x65 = 17039360 froxels, more than kMaxFroxels (16777216)");
+              "FrameInfo.froxelFog.grid: 512x512x33 = 8650752 froxels, more than kMaxFroxels (8388608)");
 }
 
 // Below light_list_min_lights (its default) the lights' buffer only (zero-intensity lights do not count);

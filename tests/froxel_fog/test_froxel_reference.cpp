@@ -399,11 +399,11 @@ TEST(FroxelFogSettings, DefaultsAreValidAndEveryFieldIsChecked) {
     FroxelFogSettings s;
     s.grid = {1, 1, 1};
     EXPECT_TRUE(postfx::validateFroxelFogSettings(s).ok());
-    s.grid = {512, 512, 65};
+    s.grid = {512, 512, 33};
     EXPECT_EQ(postfx::validateFroxelFogSettings(s).code, postfx::Result::InvalidArgument);
-    s.grid = {64, 512, 512};
+    s.grid = {32, 512, 512};
     EXPECT_TRUE(postfx::validateFroxelFogSettings(s).ok());
-    s.grid = {512, 512, 64};
+    s.grid = {512, 512, 32};
     std::vector<FogVolume> many(postfx::kMaxFogVolumes);
     s.volumes = many.data();
     s.volumeCount = uint32_t(many.size());

@@ -45,10 +45,10 @@ enum class FroxelDepthDistribution : uint32_t {
 
 // Largest grid size along each axis: the stability cases need 1×1×1 and 512 slices.
 inline constexpr uint32_t kMaxFroxelGridSize = 512;
-// Most froxels in the grid (x·y·z, as set or from tileSizePx): 480×270×128 (a 4-px tile at 1920×1080)
-// fits; with temporal 40 bytes each, 640 MiB at most, and about 6 s per frame on lavapipe
-// (docs/reliability.md, "Memory and cost budget").
-inline constexpr uint64_t kMaxFroxels = uint64_t(1) << 24;
+// Most froxels in the grid (x·y·z, as set or from tileSizePx): 240×135×256 (an 8-px tile at 1920×1080,
+// twice the default's slices) and 480×270×64 fit; with temporal 40 bytes each, 320 MiB at most, and about
+// 10 s per frame on lavapipe with lights (docs/reliability.md, "Memory and cost budget").
+inline constexpr uint64_t kMaxFroxels = uint64_t(1) << 23;
 
 // The froxel fog: the shared medium (FogMedium, the same keys and ranges as the ray-marched fog, named
 // "FrameInfo.froxelFog.*") and its grid. max_distance is the grid's far end.
