@@ -25,6 +25,13 @@ uint64_t resourceBytes(const postfx::FramePlan& plan, const std::string& name) {
     return 0;
 }
 
+std::string sizedBy(const postfx::FramePlan& plan, const std::string& name) {
+    for (const postfx::PlannedResource& r : plan.resources)
+        if (r.name == name) return r.sizedBy;
+    ADD_FAILURE() << "no resource " << name;
+    return {};
+}
+
 constexpr uint64_t kUniformSlot = 2560;  // sizeof(FogUniforms) + sizeof(FroxelUniforms) = 2448, to 256
 constexpr uint64_t kLightSlot = 20480;   // 256 lights × 80 bytes
 
@@ -163,13 +170,11 @@ TEST_F(FroxelFogPlanTest, GridOverTheLimitsIsRefusedNotClamped) {
         "down (kMaxFroxelGridSize): at least 2 px at this extent");
     ASSERT_TRUE(plans[1].first.ok()) << plans[1].first.message;
     EXPECT_EQ(resourceBytes(plans[1].second, "froxel_fog.integrated"), 512u * 300 * 40 * 8);
-    for (const postfx::PlannedResource& r : plans[1].second.resources)
-        if (r.name == "froxel_fog.integrated") EXPECT_EQ(r.sizedBy, "froxel_fog.tile_size_px");
+    EXPECT_EQ(sizedBy(plans[1].second, "froxel_fog.integrated"), "froxel_fog.tile_size_px");
     EXPECT_EQ(plans[2].first.message,
               "FrameInfo.froxelFog.tileSizePx: 2 px at 1024x600 gives 512x300x512 = 78643200 froxels, more "
               "than kMaxFroxels (8388608)");
-    for (const postfx::PlannedResource& r : plans[3].second.resources)
-        if (r.name == "froxel_fog.integrated") EXPECT_EQ(r.sizedBy, "froxel_fog.grid");
+    EXPECT_EQ(sizedBy(plans[3].second, "froxel_fog.integrated"), "froxel_fog.grid");
     postfx::FroxelFogSettings s;
     s.grid = {512, 512, 33};
     EXPECT_EQ(postfx::validateFroxelFogSettings(s).message,
