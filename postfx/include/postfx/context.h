@@ -103,7 +103,7 @@ struct ContextCreateInfo {
     // The most device memory one frame's images and buffers may take [bytes] (the frame plan's
     // totalBytes, checked by record(), plan() and prewarm() before anything is created); default 2 GiB,
     // 0: no budget. A frame over it is refused with InvalidArgument naming the settings that size its
-    // largest images ("froxel_fog.grid: 256x256x256 needs 640 MiB of images; ..."; docs/reliability.md,
+    // largest images ("froxel_fog.grid: 256x256x128 needs 320 MiB of images; ..."; docs/reliability.md,
     // "Memory and cost budget").
     uint64_t memoryBudgetBytes = uint64_t(2) << 30;
 };
