@@ -11,6 +11,7 @@
 //   --frame       every effect together in the showcase scene, per preset and size (bench/frame_run.h)
 //   --first-frame the CPU time of a new context's first record(), prewarmed or not, with a pipeline cache
 //                 or not (bench/first_frame.h)
+//   --worst-case  each effect alone at its largest allowed sizes and step counts (bench/worst_case.h)
 // CPU only: --atmosphere-truth (the sky's path-traced table, bench/atmosphere_truth.h) and --clouds-slabs
 // (the clouds' multiple scattering against the path tracer, bench/clouds_slabs.h). --pipeline-stats prints
 // what the driver compiled the fog's march pipelines into (bench/pipeline_stats.h).
@@ -30,6 +31,7 @@
 #include "report.h"
 #include "runner.h"
 #include "stats.h"
+#include "worst_case.h"
 
 #include "cli_args.h"
 #include "scene/scene.h"
@@ -221,6 +223,13 @@ const char* kUsage =
     "  --driver-cache         leave the drivers' disk caches as the environment has them\n"
     "  --first-frame-scenes LIST  of froxel (the showcase), raymarched (its ray-marched fog version), auto\n"
     "                         (that one with the clouds and the fog on quality Auto) [all]\n"
+    "worst case (--worst-case; docs/reliability.md, \"Memory and cost budget\"): each effect alone at its\n"
+    "largest allowed sizes and step counts on the showcase's frame: the first and a later frame's time\n"
+    "(record to idle), the GPU passes, the plan's bytes, or the library's refusal. Prints a table.\n"
+    "--size [64x36], --frames [3], --validation apply.\n"
+    "  --worst-case           this mode\n"
+    "  --worst-case-rows LIST of atmosphere_hillaire, atmosphere_orders, clouds, fog, froxel_fog, lookup "
+    "[all]\n"
     "pipeline statistics (--pipeline-stats): on a device of its own with "
     "VK_KHR_pipeline_executable_properties,\n"
     "compiles the fog's march pipelines (fog.raymarch at full size, reduced, reduced with temporal) and "
@@ -277,9 +286,11 @@ struct Args {
     uint32_t cloudsTruthStride = 0;  // 0: 4 × the error stride
     // --frame
     bool frame = false;
-    bool pipelineStats = false;  // --pipeline-stats: the fog march pipelines' driver statistics
-    bool firstFrame = false;     // --first-frame
-    bool driverCache = false;    // --driver-cache
+    bool pipelineStats = false;              // --pipeline-stats: the fog march pipelines' driver statistics
+    bool firstFrame = false;                 // --first-frame
+    bool worstCase = false;                  // --worst-case
+    std::vector<std::string> worstCaseRows;  // --worst-case-rows; empty: all
+    bool driverCache = false;                // --driver-cache
     std::vector<std::string> firstFrameScenes;              // --first-frame-scenes; empty: all
     std::vector<std::pair<uint32_t, uint32_t>> frameSizes;  // empty: the default
     std::vector<std::string> framePresets;                  // empty: the default
@@ -430,6 +441,11 @@ Args parseArgs(int argc, char** argv) {
             args.pipelineStats = true;
         } else if (a == "--first-frame") {
             args.firstFrame = true;
+        } else if (a == "--worst-case") {
+            args.worstCase = true;
+        } else if (a == "--worst-case-rows") {
+            args.worstCaseRows = cli::splitList(value());
+            if (args.worstCaseRows.empty()) throw cli::UsageError{"--worst-case-rows is empty"};
         } else if (a == "--driver-cache") {
             args.driverCache = true;
         } else if (a == "--first-frame-scenes") {
@@ -607,12 +623,17 @@ Args parseArgs(int argc, char** argv) {
                                   "' is not in --scenes"};
     }
     if (int(args.froxel) + int(args.atmosphere) + int(args.clouds) + int(args.frame) + int(args.cloudsSlabs) +
-            int(args.atmosphereTruth) + int(args.firstFrame) >
+            int(args.atmosphereTruth) + int(args.firstFrame) + int(args.worstCase) >
         1)
         throw cli::UsageError{
             "--froxel, --atmosphere, --atmosphere-truth, --clouds, --clouds-slabs, --frame and "
-            "--first-frame: "
+            "--first-frame, --worst-case: "
             "one mode at a time"};
+    if (args.worstCase) {
+        if (!sizeGiven) args.runner.width = 64, args.runner.height = 36;
+        if (!framesGiven) args.runner.frames = 3;
+        sizeGiven = framesGiven = true;
+    }
     if (args.firstFrame) {
         if (!sizeGiven) args.runner.width = quick ? 160 : 1920, args.runner.height = quick ? 90 : 1080;
         if (!framesGiven) args.runner.frames = quick ? 4 : 12;
@@ -851,8 +872,20 @@ int runFirstFrame(const Args& args, const std::string& command) {
     return bench::runFirstFrame(a, command);
 }
 
+int runWorstCase(const Args& args, const std::string& command) {
+    bench::WorstCaseArgs a;
+    a.width = args.runner.width;
+    a.height = args.runner.height;
+    a.frames = std::max(args.runner.frames, 1u);
+    a.sceneDir = args.sceneDir;
+    a.validation = args.runner.validation;
+    a.rows = args.worstCaseRows;
+    return bench::runWorstCase(a, command);
+}
+
 int run(const Args& args, const std::string& command) {
     if (args.pipelineStats) return bench::runPipelineStats();
+    if (args.worstCase) return runWorstCase(args, command);
     if (args.firstFrame) return runFirstFrame(args, command);
     if (args.frame) return runFrame(args, command);
     if (args.froxel) return runFroxel(args, command);

@@ -133,8 +133,8 @@ int fail(const std::string& message) {
     return kProgram.fail(message);
 }
 
-// {"passes":[{"name", "effect", "reads", "writes", "groups"}], "resources":[{"name", "effect", "bytes"}],
-// "total_bytes"}: postfx's own passes and memory only.
+// {"passes":[{"name", "effect", "reads", "writes", "groups"}], "resources":[{"name", "effect", "bytes",
+// "sized_by" (when a setting sizes it)}], "total_bytes"}: postfx's own passes and memory only.
 nlohmann::ordered_json planJson(const postfx::FramePlan& plan) {
     nlohmann::ordered_json passes = nlohmann::ordered_json::array(),
                            resources = nlohmann::ordered_json::array();
@@ -144,8 +144,10 @@ nlohmann::ordered_json planJson(const postfx::FramePlan& plan) {
                           {"reads", p.reads},
                           {"writes", p.writes},
                           {"groups", {p.groups[0], p.groups[1], p.groups[2]}}});
-    for (const postfx::PlannedResource& r : plan.resources)
+    for (const postfx::PlannedResource& r : plan.resources) {
         resources.push_back({{"name", r.name}, {"effect", r.effect}, {"bytes", r.bytes}});
+        if (!r.sizedBy.empty()) resources.back()["sized_by"] = r.sizedBy;
+    }
     return {{"passes", passes}, {"resources", resources}, {"total_bytes", plan.totalBytes()}};
 }
 

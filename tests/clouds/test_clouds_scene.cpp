@@ -76,7 +76,7 @@ TEST(CloudsScene, BadValuesNameTheirKeyPath) {
         {R"({"box": {"yaw": 3}})", "effects.clouds.box.yaw: unknown key"},
         {R"({"coverage": 2})", "effects.clouds.coverage: 2 is outside [0, 1]"},
         {R"({"cast": true})", "effects.clouds.cast: unknown key"},
-        {R"({"shadow_map": {"size": 8}})", "effects.clouds.shadow_map.size: 8 is outside [16, 4096]"},
+        {R"({"shadow_map": {"size": 8}})", "effects.clouds.shadow_map.size: 8 is outside [16, 2048]"},
         {R"({"shadow_map": {"extent": -1}})", "effects.clouds.shadow_map.extent"},
         {R"({"resolution_scale": 0.1})", "effects.clouds.resolution_scale: 0.1 is outside [0.25, 1]"},
         {R"({"quality": "epic"})", "effects.clouds.quality: expected"},

@@ -446,8 +446,14 @@ void froxelRows(std::vector<Row>& bad, std::vector<Row>& good) {
         addBad(b, key, "0", [a](FrameInfo& f) { f.froxelFog.grid[a] = 0; });
         addBad(b, key, "513", [a](FrameInfo& f) { f.froxelFog.grid[a] = 513; });
         g.push_back({key, "1", [a](FrameInfo& f) { f.froxelFog.grid[a] = 1; }});
-        g.push_back({key, "512", [a](FrameInfo& f) { f.froxelFog.grid[a] = 512; }});
+        g.push_back({key, "512", [a](FrameInfo& f) {
+                         f.froxelFog.grid = {64, 64, 64};  // within kMaxFroxels
+                         f.froxelFog.grid[a] = 512;
+                     }});
     }
+    addBad(b, "FrameInfo.froxelFog.grid", "512x512x33 (over kMaxFroxels)", [](FrameInfo& f) {
+        f.froxelFog.grid = {512, 512, 33};
+    });
     addBad(b, "FrameInfo.froxelFog.tileSizePx", "4097", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4097; });
     g.push_back(
         {"FrameInfo.froxelFog.tileSizePx", "4096", [](FrameInfo& f) { f.froxelFog.tileSizePx = 4096; }});

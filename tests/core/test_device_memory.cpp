@@ -3,11 +3,13 @@
 // to the host's callbacks (a counting allocator that binds postfx at an offset of its blocks and maps the
 // host-visible ones itself): postfx then allocates and maps nothing itself, renders the same image, and
 // frees every block by the time the context is destroyed; a failing or unusable allocation returns a
-// status naming the resource, with nothing left allocated.
+// status naming the resource, with nothing left allocated; a frame over ContextCreateInfo's memory budget
+// is refused naming the setting that sizes its largest image, before anything is allocated.
 #include "fault_scene.h"
 #include "vulkan_interposer.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -116,8 +118,9 @@ protected:
         GpuTest::TearDown();
     }
 
-    std::unique_ptr<postfx::Context> create(bool hostMemory) {
+    std::unique_ptr<postfx::Context> create(bool hostMemory, uint64_t memoryBudget = uint64_t(2) << 30) {
         postfx::ContextCreateInfo info;
+        info.memoryBudgetBytes = memoryBudget;
         info.depth.reversedZ = true;
         info.maxExtent = {64, 64};
         if (hostMemory)
@@ -256,6 +259,53 @@ TEST_F(CoreDeviceMemoryTest, FailingAllocationNamesTheResourceAndLeaksNothing) {
         EXPECT_EQ(allocator.live, 0u) << "N=" << n << ": blocks left after the context was destroyed";
         EXPECT_EQ(interposer->liveTotal(), 0u) << "N=" << n << ": " << interposer->liveSummary();
         if (HasFailure()) break;
+    }
+}
+
+TEST_F(CoreDeviceMemoryTest, FrameOverTheMemoryBudgetIsRefusedNamingTheKey) {
+    // The frame's plan, without a budget: the fog's 16³ noise (4 KiB) is its largest image.
+    uint64_t planned = 0;
+    {
+        auto context = create(false, 0);
+        ASSERT_TRUE(record(*context, 0, nullptr, &planned).ok());
+    }
+    ASSERT_GT(planned, 4096u);
+    // bytesText's form: KiB with one decimal at most.
+    auto kib = [](uint64_t bytes) {
+        char text[32];
+        const double tenths = double(uint64_t(double(bytes) / 1024.0 * 10.0 + 0.5)) / 10.0;
+        std::snprintf(text, sizeof text, tenths == double(uint64_t(tenths)) ? "%.0f KiB" : "%.1f KiB",
+                      tenths);
+        return std::string(text);
+    };
+    {
+        auto context = create(true, planned - 1);
+        const uint64_t commands = interposer->commands();
+        postfx::FramePlan plan;
+        postfx::Status planStatus = postfx::Status::success(), prewarmStatus = postfx::Status::success();
+        FogHarness harness(*host, gpu);
+        harness.onBeforeRecord = [&](const postfx::FrameInfo& f) {
+            planStatus = context->plan(f, plan);
+            prewarmStatus = context->prewarm(f);
+        };
+        std::vector<float> color, out;
+        const postfx::Status s = harness.run(*context, faultSceneImages(sceneAt(0)), frameAt(0), color, &out);
+        const std::string expected = "fog.noise.texture_size: 16x16x16 needs 4 KiB of images (the frame " +
+                                     kib(planned) + "); the memory budget is " + kib(planned - 1) +
+                                     " (ContextCreateInfo.memoryBudgetBytes)";
+        EXPECT_EQ(s.code, postfx::Result::InvalidArgument);
+        EXPECT_EQ(s.message, expected);
+        EXPECT_EQ(planStatus.message, expected) << "plan() checks the budget as record() does";
+        EXPECT_EQ(prewarmStatus.message, expected) << "prewarm() checks the budget as record() does";
+        EXPECT_EQ(allocator.calls, 0u) << "a refused frame allocated";
+        EXPECT_EQ(interposer->commands(), commands) << "a refused frame recorded";
+        EXPECT_EQ(usage(*context).totalBytes, 0u);
+    }
+    // At the budget, the same frame records.
+    {
+        auto context = create(true, planned);
+        EXPECT_TRUE(record(*context, 0).ok());
+        EXPECT_GT(allocator.calls, 0u);
     }
 }
 

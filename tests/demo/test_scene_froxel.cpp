@@ -354,7 +354,8 @@ TEST(DemoSceneFroxel, EachKeyRoundTripsAtItsBounds) {
         {"/noise/multiplier", 1000},
         {"/noise/wind", {-1000, 0, 1000}},
         {"/grid", {1, 1, 1}},
-        {"/grid", {512, 512, 512}},
+        {"/grid", {512, 512, 32}},  // 512 along each axis, x·y·z within kMaxFroxels
+        {"/grid", {32, 512, 512}},
         {"/tile_size_px", 0},
         {"/tile_size_px", 4096},
         {"/depth_distribution", "power"},

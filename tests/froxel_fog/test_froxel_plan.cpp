@@ -1,7 +1,7 @@
 // The froxel fog's frame plan (docs/frame-plan.md, docs/effects/froxel-fog.md#frame-plan): off or empty
 // records nothing; without local lights no light buffer and no light lists; few lights a buffer, many
 // also the light lists; every pass's workgroups and every resource's bytes exactly; the recorded passes
-// are the plan's.
+// are the plan's; a grid over the limits is refused, not clamped.
 #include "froxel_case.h"
 
 #include <algorithm>
@@ -23,6 +23,13 @@ uint64_t resourceBytes(const postfx::FramePlan& plan, const std::string& name) {
         if (r.name == name) return r.bytes;
     ADD_FAILURE() << "no resource " << name;
     return 0;
+}
+
+std::string sizedBy(const postfx::FramePlan& plan, const std::string& name) {
+    for (const postfx::PlannedResource& r : plan.resources)
+        if (r.name == name) return r.sizedBy;
+    ADD_FAILURE() << "no resource " << name;
+    return {};
 }
 
 constexpr uint64_t kUniformSlot = 2560;  // sizeof(FogUniforms) + sizeof(FroxelUniforms) = 2448, to 256
@@ -129,6 +136,49 @@ TEST_F(FroxelFogPlanTest, WithoutLightsNoLightWork) {
     EXPECT_EQ(apply->reads, (std::vector<std::string>{"host.color", "host.depth", "froxel_fog.uniforms",
                                                       "froxel_fog.integrated"}));
     EXPECT_FALSE(plan.reads("host.shadow_map"));  // no sun
+}
+
+// A tile size whose grid would exceed the limits is refused naming tileSizePx and the extent, not
+// clamped (a 1-px tile at 1024×600 would be 1024×600 froxels); a grid over kMaxFroxels likewise; each
+// setting names the key that sizes the volumes in the plan.
+TEST_F(FroxelFogPlanTest, GridOverTheLimitsIsRefusedNotClamped) {
+    const postfx::FrameInfo frame = c.prepared();
+    FogHarness harness(*host, gpu);
+    std::vector<std::pair<postfx::Status, postfx::FramePlan>> plans;
+    harness.onBeforeRecord = [&](const postfx::FrameInfo& f) {
+        // Only the plan: the extents are not the images' (plan() creates and records nothing).
+        auto plan = [&](uint32_t tile, uint32_t slices, uint32_t width, uint32_t height) {
+            postfx::FrameInfo g = f;
+            g.froxelFog.tileSizePx = tile;
+            g.froxelFog.grid.z = slices;
+            g.color.extent = g.depth.extent = {width, height};
+            postfx::FramePlan p;
+            const postfx::Status s = context->plan(g, p);
+            plans.emplace_back(s, p);
+        };
+        plan(1, 40, 1024, 600);
+        plan(2, 40, 1024, 600);
+        plan(2, 512, 1024, 600);
+        plan(0, 40, 40, 24);
+    };
+    std::vector<float> out;
+    ASSERT_TRUE(harness.run(*context, c.images, frame, out).ok());
+    ASSERT_EQ(plans.size(), 4u);
+    EXPECT_EQ(
+        plans[0].first.message,
+        "FrameInfo.froxelFog.tileSizePx: 1 px at 1024x600 gives 1024x600 froxels, more than 512 across or "
+        "down (kMaxFroxelGridSize): at least 2 px at this extent");
+    ASSERT_TRUE(plans[1].first.ok()) << plans[1].first.message;
+    EXPECT_EQ(resourceBytes(plans[1].second, "froxel_fog.integrated"), 512u * 300 * 40 * 8);
+    EXPECT_EQ(sizedBy(plans[1].second, "froxel_fog.integrated"), "froxel_fog.tile_size_px");
+    EXPECT_EQ(plans[2].first.message,
+              "FrameInfo.froxelFog.tileSizePx: 2 px at 1024x600 gives 512x300x512 = 78643200 froxels, more "
+              "than kMaxFroxels (8388608)");
+    EXPECT_EQ(sizedBy(plans[3].second, "froxel_fog.integrated"), "froxel_fog.grid");
+    postfx::FroxelFogSettings s;
+    s.grid = {512, 512, 33};
+    EXPECT_EQ(postfx::validateFroxelFogSettings(s).message,
+              "FrameInfo.froxelFog.grid: 512x512x33 = 8650752 froxels, more than kMaxFroxels (8388608)");
 }
 
 // Below light_list_min_lights (its default) the lights' buffer only (zero-intensity lights do not count);

@@ -394,11 +394,16 @@ TEST(FroxelFogSettings, DefaultsAreValidAndEveryFieldIsChecked) {
         EXPECT_EQ(status.code, postfx::Result::InvalidArgument) << row.field;
         EXPECT_EQ(status.message.rfind(row.field + ":", 0), 0u) << status.message;
     }
-    // The limits themselves are valid: grid 1×1×1 and 512 slices, 64 volumes.
+    // The limits themselves are valid: grid 1×1×1, 512 along each axis, kMaxFroxels in all, 64 volumes;
+    // one froxel more is not.
     FroxelFogSettings s;
     s.grid = {1, 1, 1};
     EXPECT_TRUE(postfx::validateFroxelFogSettings(s).ok());
-    s.grid = {512, 512, 512};
+    s.grid = {512, 512, 33};
+    EXPECT_EQ(postfx::validateFroxelFogSettings(s).code, postfx::Result::InvalidArgument);
+    s.grid = {32, 512, 512};
+    EXPECT_TRUE(postfx::validateFroxelFogSettings(s).ok());
+    s.grid = {512, 512, 32};
     std::vector<FogVolume> many(postfx::kMaxFogVolumes);
     s.volumes = many.data();
     s.volumeCount = uint32_t(many.size());

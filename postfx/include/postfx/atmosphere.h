@@ -69,14 +69,14 @@ struct AtmosphereSettings {
 
     // LUTs: sizes [texels] and march steps (the transmittance's finer than the paper's 256×64 and 40 steps:
     // within 0.5 % of the exact T to the horizon).
-    // Transmittance LUT: (view height, cos view zenith), Bruneton's horizon mapping. Each side in [4, 4096].
+    // Transmittance LUT: (view height, cos view zenith), Bruneton's horizon mapping. Each side in [4, 512].
     UVec2 transmittanceLutSize{512, 128};
-    uint32_t transmittanceSteps = 80;  // in [1, 1024]
-    // Multiple-scattering LUT: (cos sun zenith, height). Each side in [4, 1024].
+    uint32_t transmittanceSteps = 80;  // in [1, 128]
+    // Multiple-scattering LUT: (cos sun zenith, height). Each side in [4, 64].
     UVec2 multipleScatteringLutSize{32, 32};
-    // Directions integrated per texel: a perfect square (stratified n×n over the sphere) in [4, 1024].
+    // Directions integrated per texel: a perfect square (stratified n×n over the sphere) in [4, 256].
     uint32_t multipleScatteringDirections = 64;
-    uint32_t multipleScatteringSteps = 20;  // per direction; in [1, 1024]
+    uint32_t multipleScatteringSteps = 20;  // per direction; in [1, 128]
     // Scattering-orders LUT ("orders"): the source of orders >= 2 at nodes of (cos view zenith, cos sun
     // zenith, height) [nodes], each in [4, 64] (the sun's in [4, 128]), times this many azimuths from the
     // sun's side to the opposite one, in [2, 16].
@@ -84,21 +84,21 @@ struct AtmosphereSettings {
     uint32_t scatteringOrdersAzimuthSize = 8;
     // Directions integrated at each (sun, height) node: a perfect square (stratified n×n) in [4, 576].
     uint32_t scatteringOrdersDirections = 256;
-    uint32_t scatteringOrdersSteps = 24;  // per direction; in [1, 1024]
-    // Orders computed after the first, in [1, 32]; the rest is a geometric tail from the last two.
+    uint32_t scatteringOrdersSteps = 24;  // per direction; in [1, 128]
+    // Orders computed after the first, in [1, 16]; the rest is a geometric tail from the last two.
     uint32_t scatteringOrders = 4;
     // Sky-view LUT: (azimuth relative to the sun, view zenith), non-linear around the horizon. Each side in
-    // [4, 4096].
+    // [4, 512].
     UVec2 skyViewLutSize{192, 108};
-    uint32_t skyViewSteps = 30;  // in [1, 1024]
+    uint32_t skyViewSteps = 30;  // in [1, 128]
     // Aerial-perspective LUT: froxels over the camera frustum (x, y across the view; z slices of equal
-    // depth). Each side in [4, 256].
+    // depth). Each side in [4, 64].
     UVec3 aerialPerspectiveLutSize{32, 32, 32};
     // Depth the slices cover from the camera [m]; > 0 and <= 1e7. 32 km: 1 km a slice as in the paper (the
     // reference code uses 4 km a slice).
     float aerialPerspectiveDistance = 32000.0f;
     // March steps per slice of depth: slice k (0-based) is marched with (k + 1) · this steps from the camera,
-    // as the reference code's 2 per slice; in [1, 64].
+    // as the reference code's 2 per slice; in [1, 8].
     uint32_t aerialPerspectiveStepsPerSlice = 2;
 };
 

@@ -128,7 +128,7 @@ struct CloudMultipleScattering {
 // The clouds' shadow map (docs/effects/clouds.md, "Shadows"): the transmittance toward the sun through the
 // clouds over a square around the camera, which both fogs' sunlight and a host's surface lighting read.
 struct CloudShadowMapSettings {
-    uint32_t size = 512;      // edge [texels]; in [16, 4096]
+    uint32_t size = 512;      // edge [texels]; in [16, 2048]
     float extent = 20000.0f;  // edge [m], centred on the camera; in [100, 1e6]. Beyond it: no cloud shadow.
 };
 

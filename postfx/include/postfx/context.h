@@ -99,6 +99,13 @@ struct ContextCreateInfo {
     // units); media properties stay in metres. Checked by create(): up Y or Z, handedness Right or Left,
     // unitsPerMetre in [1e-3, 1e3].
     WorldFrame world;
+
+    // The most device memory one frame's images and buffers may take [bytes] (the frame plan's
+    // totalBytes, checked by record(), plan() and prewarm() before anything is created); default 2 GiB,
+    // 0: no budget. A frame over it is refused with InvalidArgument naming the settings that size its
+    // largest images ("froxel_fog.grid: 256x256x128 needs 320 MiB of images; ..."; docs/reliability.md,
+    // "Memory and cost budget").
+    uint64_t memoryBudgetBytes = uint64_t(2) << 30;
 };
 
 // Everything postfx needs for one frame.

@@ -35,6 +35,9 @@ struct PlannedResource {
     // A persistent image (a LUT, a noise texture) built in an earlier frame whose inputs did not change:
     // no pass of this frame writes it, the frame only reads it (docs/frame-plan.md).
     bool cached = false;
+    // The setting that sizes it, as a settings-table key with the effect's prefix ("froxel_fog.grid",
+    // "atmosphere.sky_view_lut_size"); empty for one sized by the color extent or fixed.
+    std::string sizedBy;
 };
 
 struct POSTFX_API FramePlan {

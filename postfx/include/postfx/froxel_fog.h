@@ -45,15 +45,21 @@ enum class FroxelDepthDistribution : uint32_t {
 
 // Largest grid size along each axis: the stability cases need 1×1×1 and 512 slices.
 inline constexpr uint32_t kMaxFroxelGridSize = 512;
+// Most froxels in the grid (x·y·z, as set or from tileSizePx): 240×135×256 (an 8-px tile at 1920×1080,
+// twice the default's slices) and 480×270×64 fit; with temporal 40 bytes each, 320 MiB at most, and about
+// 10 s per frame on lavapipe with lights (docs/reliability.md, "Memory and cost budget").
+inline constexpr uint64_t kMaxFroxels = uint64_t(1) << 23;
 
 // The froxel fog: the shared medium (FogMedium, the same keys and ranges as the ray-marched fog, named
 // "FrameInfo.froxelFog.*") and its grid. max_distance is the grid's far end.
 struct FroxelFogSettings : FogMedium {
     bool enabled = false;
-    // Froxels along the view's x, y and depth [1]; each in [1, 512]. x and y are replaced by tileSizePx.
+    // Froxels along the view's x, y and depth [1]; each in [1, 512], x·y·z at most kMaxFroxels. x and y
+    // are replaced by tileSizePx.
     UVec3 grid{160, 90, 128};
     // 0: grid.x, grid.y as set; otherwise grid.x, grid.y = ceil(extent / tileSizePx) of the color image
-    // [px]; in [0, 4096].
+    // [px]; in [0, 4096]. A tile that gives more than 512 froxels across or down, or more than
+    // kMaxFroxels in all, is an error (record() names tileSizePx with the extent), not clamped.
     uint32_t tileSizePx = 0;
     FroxelDepthDistribution depthDistribution = FroxelDepthDistribution::Power;
     float depthExponent = 2.0f;  // k of the power distribution [1]; in [1, 8] (checked for Log too)
@@ -90,8 +96,8 @@ POSTFX_API double froxelSliceDepth(const FroxelFogSettings& settings, double nea
 // Its inverse: z01 ∈ [0, 1] of distance `depth` along the ray, clamped to [near, far].
 POSTFX_API double froxelSliceCoordinate(const FroxelFogSettings& settings, double nearPlane, double depth);
 // The grid's froxels along x, y and depth for a color image of width × height [px]: settings.grid, or
-// with tileSizePx > 0, x and y = ceil(extent / tileSizePx) (each at most 512). The froxels always span
-// the image exactly.
+// with tileSizePx > 0, x and y = ceil(extent / tileSizePx) (each clamped to 512, which record() refuses
+// rather than use). The froxels always span the image exactly.
 POSTFX_API UVec3 froxelGridSize(const FroxelFogSettings& settings, uint32_t width, uint32_t height);
 
 // The froxel fog's generated noise texture (as kFogNoiseTexture, the shared medium's noise), for

@@ -262,8 +262,10 @@ glm::dvec3 planetCamera(const FrameInfo& frame) {
     return r > 0.0 ? p * (g / r) : glm::dvec3(0.0, g, 0.0);
 }
 
-core::ImageDesc lutDesc(VkImageType type, uint32_t x, uint32_t y, uint32_t z = 1) {
+// A LUT's image; `sizedBy`: the key of its size (ImageDesc::sizedBy).
+core::ImageDesc lutDesc(const char* sizedBy, VkImageType type, uint32_t x, uint32_t y, uint32_t z = 1) {
     core::ImageDesc d;
+    d.sizedBy = sizedBy;
     d.type = type;
     d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     d.extent = {x, y, z};
@@ -346,9 +348,11 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     if (depth.distance) u.flags.x |= gpu::kAtmosphereFlagViewDistance;
     const core::BufferRef uniforms = b.uniforms(common::kAirUniforms.id, &u, sizeof u);
 
-    const core::ImageRef transmittance = b.persistentImage(
-        common::kSunTransmittanceLut.id,
-        lutDesc(VK_IMAGE_TYPE_2D, s.transmittanceLutSize.x, s.transmittanceLutSize.y), transmittanceKey(s));
+    const core::ImageRef transmittance =
+        b.persistentImage(common::kSunTransmittanceLut.id,
+                          lutDesc("atmosphere.transmittance_lut_size", VK_IMAGE_TYPE_2D,
+                                  s.transmittanceLutSize.x, s.transmittanceLutSize.y),
+                          transmittanceKey(s));
     b.pass(kTransmittancePass, groupsFor(s.transmittanceLutSize.x), groupsFor(s.transmittanceLutSize.y), 1)
         .bind(gpu::kAtmosphereBindingUniforms, uniforms)
         .bind(gpu::kAtmosphereBindingTransmittance, transmittance, Use::StorageWrite);
@@ -357,13 +361,14 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     core::ImageRef multiScattering;
     Use multiScatteringUse = Use::BoundOnly;
     if (s.multipleScattering == AtmosphereMultipleScattering::Off) {
-        multiScattering =
-            b.transientImage(common::kAirMultipleScatteringStandIn.id, lutDesc(VK_IMAGE_TYPE_3D, 1, 1, 1));
+        multiScattering = b.transientImage(common::kAirMultipleScatteringStandIn.id,
+                                           lutDesc(nullptr, VK_IMAGE_TYPE_3D, 1, 1, 1));
     } else if (s.multipleScattering == AtmosphereMultipleScattering::Hillaire) {
-        multiScattering = b.persistentImage(
-            common::kAirMultipleScatteringLut.id,
-            lutDesc(VK_IMAGE_TYPE_3D, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y),
-            multipleScatteringKey(s));
+        multiScattering =
+            b.persistentImage(common::kAirMultipleScatteringLut.id,
+                              lutDesc("atmosphere.multiple_scattering_lut_size", VK_IMAGE_TYPE_3D,
+                                      s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y),
+                              multipleScatteringKey(s));
         multiScatteringUse = Use::Sampled;
         b.pass(kMultiScatteringPass, s.multipleScatteringLutSize.x, s.multipleScatteringLutSize.y, 1)
             .bind(gpu::kAtmosphereBindingUniforms, uniforms)
@@ -373,8 +378,8 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
         // One pass per order, each reading the order before from one working image and writing its own
         // to the other, and adding it to the LUT (scattering_orders.comp).
         const UVec3 n = s.scatteringOrdersLutSize;
-        const core::ImageDesc desc =
-            lutDesc(VK_IMAGE_TYPE_3D, n.x * s.scatteringOrdersAzimuthSize, n.y, 2 * n.z + 1);
+        const core::ImageDesc desc = lutDesc("atmosphere.scattering_orders_lut_size", VK_IMAGE_TYPE_3D,
+                                             n.x * s.scatteringOrdersAzimuthSize, n.y, 2 * n.z + 1);
         multiScattering =
             b.persistentImage(common::kAirMultipleScatteringLut.id, desc, multipleScatteringKey(s));
         multiScatteringUse = Use::Sampled;
@@ -403,7 +408,9 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
 
     // The sky-view LUT: its mapping follows the camera's radius (skyViewSkySpan), which its key holds.
     const core::ImageRef skyView = b.persistentImage(
-        kSkyViewLut, lutDesc(VK_IMAGE_TYPE_2D, s.skyViewLutSize.x, s.skyViewLutSize.y), viewKey(v.skyView));
+        kSkyViewLut,
+        lutDesc("atmosphere.sky_view_lut_size", VK_IMAGE_TYPE_2D, s.skyViewLutSize.x, s.skyViewLutSize.y),
+        viewKey(v.skyView));
     b.pass(kSkyViewPass, groupsFor(s.skyViewLutSize.x), groupsFor(s.skyViewLutSize.y), 1);
     bindLuts();
     b.bind(gpu::kAtmosphereBindingSkyView, skyView, Use::StorageWrite);
@@ -411,11 +418,13 @@ Status AtmosphereEffect::declare(core::FrameBuilder& b) const {
     const UVec3 ap = s.aerialPerspectiveLutSize;
     // The in-scattering is filtered across slices (a 3D image); the transmittance is read at one slice's end
     // and extended analytically (apply.comp, aerialPerspective), so it is a 2D array of a layer per slice.
-    core::ImageDesc apTransmittanceDesc = lutDesc(VK_IMAGE_TYPE_2D, ap.x, ap.y);
+    core::ImageDesc apTransmittanceDesc =
+        lutDesc("atmosphere.aerial_perspective_lut_size", VK_IMAGE_TYPE_2D, ap.x, ap.y);
     apTransmittanceDesc.layers = ap.z;
     const uint64_t apKey = viewKey(v.aerial);
-    const core::ImageRef apScattering = b.persistentImage(common::kAerialPerspectiveLut.id,
-                                                          lutDesc(VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z), apKey);
+    const core::ImageRef apScattering = b.persistentImage(
+        common::kAerialPerspectiveLut.id,
+        lutDesc("atmosphere.aerial_perspective_lut_size", VK_IMAGE_TYPE_3D, ap.x, ap.y, ap.z), apKey);
     const core::ImageRef apTransmittance =
         b.persistentImage(common::kAerialTransmittanceLut.id, apTransmittanceDesc, apKey);
     b.pass(kApPass, ap.x, ap.y, 1);

@@ -15,16 +15,19 @@ constexpr double kMaxCoefficient = 1.0;   // scattering and absorption [1/m]
 constexpr double kMaxHeight = 1e7;        // scale heights, ozone centre and half width, AP distance [m]
 constexpr double kMaxSunAngularRadiusDeg = 45.0;
 constexpr uint32_t kMinLutSide = 4;
-constexpr uint32_t kMaxLut2dSide = 4096;  // transmittance and sky-view
-constexpr uint32_t kMaxMultipleScatteringSide = 1024;
-constexpr uint32_t kMaxAerialPerspectiveSide = 256;
-constexpr uint32_t kMaxSteps = 1024;                           // any LUT's march
-constexpr uint32_t kMinDirections = 4, kMaxDirections = 1024;  // multiple scattering, a perfect square
-constexpr uint32_t kMaxStepsPerSlice = 64;                     // aerial perspective
+// The LUTs' maxima: a few times beyond the sizes and counts where the benchmark's error stops falling
+// (docs/effects/atmosphere.md, "Benchmark"), so that the largest frame finishes on a CPU device
+// (docs/reliability.md, "Memory and cost budget").
+constexpr uint32_t kMaxLut2dSide = 512;  // transmittance and sky-view
+constexpr uint32_t kMaxMultipleScatteringSide = 64;
+constexpr uint32_t kMaxAerialPerspectiveSide = 64;
+constexpr uint32_t kMaxSteps = 128;                           // any LUT's march
+constexpr uint32_t kMinDirections = 4, kMaxDirections = 256;  // multiple scattering, a perfect square
+constexpr uint32_t kMaxStepsPerSlice = 8;                     // aerial perspective
 // The scattering-orders LUT: a 3D image of (view·azimuth, sun, 2·height + 1) texels.
 constexpr uint32_t kMaxOrdersViewSide = 64, kMaxOrdersSunSide = 128, kMaxOrdersHeightSide = 64;
 constexpr uint32_t kMinOrdersAzimuths = 2, kMaxOrdersAzimuths = 16;
-constexpr uint32_t kMaxScatteringOrders = 32;
+constexpr uint32_t kMaxScatteringOrders = 16;
 constexpr uint32_t kMaxOrdersDirections = gpu::kAtmosphereOrdersMaxDirections;  // the pass's shared memory
 
 // InvalidArgument naming the field by its key under effects.atmosphere ("atmosphere.mie_anisotropy: 1 is

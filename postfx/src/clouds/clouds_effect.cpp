@@ -291,14 +291,15 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         base = detail = b.transientImage(kNoNoise, one);
     } else {
         const VkImageLayout layout = s.noise.hostTextureLayout;
-        base = s.noise.hostBaseTexture
-                   ? b.external("host.clouds_base_noise", s.noise.hostBaseTexture, layout)
-                   : common::declareGeneratedNoise(b, kBaseNoise, kBaseNoisePass, s.noise.baseSize,
-                                                   s.noise.seed, gpu::kNoisePerlinWorley);
+        base = s.noise.hostBaseTexture ? b.external("host.clouds_base_noise", s.noise.hostBaseTexture, layout)
+                                       : common::declareGeneratedNoise(
+                                             b, kBaseNoise, kBaseNoisePass, s.noise.baseSize, s.noise.seed,
+                                             gpu::kNoisePerlinWorley, "clouds.noise.base_size");
         detail = s.noise.hostDetailTexture
                      ? b.external("host.clouds_detail_noise", s.noise.hostDetailTexture, layout)
                      : common::declareGeneratedNoise(b, kDetailNoise, kDetailNoisePass, s.noise.detailSize,
-                                                     detailSeed(s.noise.seed), gpu::kNoiseWorley);
+                                                     detailSeed(s.noise.seed), gpu::kNoiseWorley,
+                                                     "clouds.noise.detail_size");
     }
     // The host's coverage map, or a stand-in.
     const bool withMap = s.coverageMap.texture != VK_NULL_HANDLE;
@@ -339,6 +340,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         core::ImageDesc shadowDesc;
         shadowDesc.format = VK_FORMAT_R32_SFLOAT;
         shadowDesc.extent = {s.shadowMap.size, s.shadowMap.size, 1};
+        shadowDesc.sizedBy = "clouds.shadow_map.size";
         shadowDesc.usage =
             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
         // Persistent: rebuilt only when what its texels depend on changes (shadowBuildKey).
@@ -419,6 +421,7 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     marchDesc.format = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT ? VK_FORMAT_R32G32B32A32_SFLOAT
                                                                            : VK_FORMAT_R16G16B16A16_SFLOAT;
     marchDesc.extent = {march.x, march.y, 1};
+    marchDesc.sizedBy = "clouds.resolution_scale";  // and the color extent
     marchDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
     const core::ImageRef scatterImage = b.transientImage(kScatter, marchDesc);
     // The march's image stands in for the color it does not composite.

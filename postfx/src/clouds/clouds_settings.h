@@ -18,7 +18,7 @@ inline constexpr uint32_t kMaxSteps = 1024, kMaxLightSteps = 64, kMaxOctaves = 8
 inline constexpr uint32_t kMinBaseSize = 16, kMaxBaseSize = 256, kMinDetailSize = 8, kMaxDetailSize = 128;
 inline constexpr float kMaxAnisotropy = 0.999f;
 inline constexpr float kMinResolutionScale = 0.25f;
-inline constexpr uint32_t kMinShadowSize = 16, kMaxShadowSize = 4096;      // [texels]
+inline constexpr uint32_t kMinShadowSize = 16, kMaxShadowSize = 2048;      // [texels]
 inline constexpr double kMinShadowExtent = 100.0, kMaxShadowExtent = 1e6;  // [m]
 
 // A quality preset's values (postfx/clouds.h, CloudQuality; docs/effects/clouds.md, "Quality presets").

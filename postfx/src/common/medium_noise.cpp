@@ -24,8 +24,9 @@ Status checkNoiseSupported(const FogNoiseSettings& noise, bool formatSupported, 
 
 core::ImageRef declareGeneratedNoise(core::FrameBuilder& b, const core::ResourceId& id,
                                      const core::ComputePipelineDesc& pass, uint32_t size, uint32_t seed,
-                                     uint32_t kind) {
+                                     uint32_t kind, const char* sizedBy) {
     core::ImageDesc desc;
+    desc.sizedBy = sizedBy;
     desc.type = VK_IMAGE_TYPE_3D;
     desc.format = kNoiseFormat;
     desc.extent = {size, size, size};
@@ -46,7 +47,7 @@ core::ImageRef declareGeneratedNoise(core::FrameBuilder& b, const core::Resource
 core::ImageRef declareNoise(core::FrameBuilder& b, const FogNoiseSettings& noise, const NoiseDeclaration& d) {
     if (noise.enabled && !noise.hostTexture)
         return declareGeneratedNoise(b, d.generated, d.generatePass, noise.textureSize, noise.seed,
-                                     gpu::kNoisePerlinWorley);
+                                     gpu::kNoisePerlinWorley, d.sizedBy);
     if (noise.enabled) return b.external("host.noise", noise.hostTexture, noise.hostTextureLayout);
     core::ImageDesc one;
     one.type = VK_IMAGE_TYPE_3D;

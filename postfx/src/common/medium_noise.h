@@ -26,6 +26,7 @@ struct NoiseDeclaration {
     const core::ResourceId& generated;              // the generated texture (persistent)
     const core::ResourceId& none;                   // the 1-texel stand-in
     const core::ComputePipelineDesc& generatePass;  // fog/noise_generate.comp under the effect's name
+    const char* sizedBy;                            // its size's key: "fog.noise.texture_size"
 };
 
 // A generated noise texture of size³ R8 texels (persistent: `pass`, shaders/common/noise_generate.comp,
@@ -33,10 +34,10 @@ struct NoiseDeclaration {
 // or the Worley fBm alone (kNoiseWorley). `size` is a power of two >= kNoiseGroupSize. When an effect
 // declared the same texture (formula, size, seed) earlier this frame, that one is returned: one image and
 // one build for all of them, named by the first and found by every sharer's name too
-// (FrameBuilder::findPersistent).
+// (FrameBuilder::findPersistent). `sizedBy`: the key of `size` (ImageDesc::sizedBy).
 core::ImageRef declareGeneratedNoise(core::FrameBuilder& builder, const core::ResourceId& id,
                                      const core::ComputePipelineDesc& pass, uint32_t size, uint32_t seed,
-                                     uint32_t kind);
+                                     uint32_t kind, const char* sizedBy);
 
 // Declares the noise image (and its generation pass when it must be built) and returns it.
 core::ImageRef declareNoise(core::FrameBuilder& builder, const FogNoiseSettings& noise,

@@ -3,6 +3,7 @@
 #include "core/checks.h"
 #include "core/context_impl.h"
 #include "core/lookup_volume.h"
+#include "core/memory_budget.h"
 #include "core/target.h"
 #include "core/world_frame.h"
 #include "effects.h"
@@ -230,7 +231,8 @@ Status Context::Impl::prepareFrame(const FrameInfo& frame, core::AutoQuality& au
     core::declareTargetStore(graph, out, targetStore);
     core::declareLookupClear(graph, out);
     graph.compile(out);
-    return Status::success();
+    // Before anything of the frame is created: its images and buffers within the budget.
+    return core::checkMemoryBudget(out, info.framesInFlight, info.memoryBudgetBytes);
 }
 
 Status Context::plan(const FrameInfo& frame, FramePlan& out) const {

@@ -4,6 +4,7 @@
 #include "core/frame_graph.h"
 
 #include "core/frame_graph_internal.h"
+#include "core/memory_budget.h"
 
 #include <algorithm>
 #include <string>
@@ -147,12 +148,11 @@ void FrameGraph::plan(const Frame& f, FramePlan& out) const {
     }
     for (const ResourceDecl& r : f.resources) {
         if (!r.held || !(owned(r) || r.kind == ResourceDecl::Kind::Uniform)) continue;
-        const uint64_t bytes = r.kind == ResourceDecl::Kind::Uniform
-                                   ? slotBytes(r.uniformBytes) * framesInFlight_
-                                   : uint64_t(r.desc.extent.width) * r.desc.extent.height *
-                                         r.desc.extent.depth * r.desc.layers * texelBytes(r.desc.format);
-        out.resources.push_back({r.name, effectName(r.effect), bytes, r.kind == ResourceDecl::Kind::History,
-                                 r.kind == ResourceDecl::Kind::Persistent && !out.writes(r.name)});
+        const bool image = r.kind != ResourceDecl::Kind::Uniform;
+        out.resources.push_back({r.name, effectName(r.effect), resourceBytes(r, framesInFlight_),
+                                 r.kind == ResourceDecl::Kind::History,
+                                 r.kind == ResourceDecl::Kind::Persistent && !out.writes(r.name),
+                                 image && r.desc.sizedBy ? r.desc.sizedBy : ""});
     }
 }
 

@@ -37,6 +37,10 @@ struct ImageDesc {
     VkExtent3D extent = {1, 1, 1};
     uint32_t layers = 1;  // array layers (2D only); more than one: a 2D-array view
     VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    // The setting that sizes it, as its settings-table key with the effect's prefix
+    // ("froxel_fog.grid"): what the memory budget's error names (core/memory_budget.h). Null: the
+    // resource's own name. Not part of the image: images of two keys with the same fields are alike.
+    const char* sizedBy = nullptr;
 };
 
 class GpuImage {

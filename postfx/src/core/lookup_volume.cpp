@@ -44,6 +44,7 @@ LookupTarget FrameBuilder::lookupTarget() {
         desc.type = VK_IMAGE_TYPE_3D;
         desc.format = VK_FORMAT_R16G16B16A16_SFLOAT;
         desc.extent = {s.extent.x, s.extent.y, s.extent.z};
+        desc.sizedBy = "FrameInfo.volumetricsLookup.extent";
         desc.usage =
             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
         const ImageRef scattering = context.transientImage(kLookupScattering, desc);

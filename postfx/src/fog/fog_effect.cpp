@@ -178,12 +178,14 @@ Status FogEffect::declare(core::FrameBuilder& b) const {
     const bool temporal = frame.fog.temporal.enabled;
 
     const core::DepthInput depthInput = b.depthInput();
-    const core::ImageRef noiseImage = common::declareNoise(b, noise, {kNoise, kNoNoise, kNoiseGenerate});
+    const core::ImageRef noiseImage =
+        common::declareNoise(b, noise, {kNoise, kNoNoise, kNoiseGenerate, "fog.noise.texture_size"});
     core::ImageDesc marchDesc;
     // The composite's format (postfx.target's when the host's color is another: core/target.h).
     marchDesc.format = frame.color.format == VK_FORMAT_R32G32B32A32_SFLOAT ? VK_FORMAT_R32G32B32A32_SFLOAT
                                                                            : VK_FORMAT_R16G16B16A16_SFLOAT;
     marchDesc.extent = {march.x, march.y, 1};
+    marchDesc.sizedBy = "fog.resolution_scale";  // and the color extent
     marchDesc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
     gpu::FogUniforms u = buildUniforms(frame, b.depthConvention(), noise.enabled, shadowRead);
     if (depthInput.distance) u.flags.x |= gpu::kFogFlagViewDistance;

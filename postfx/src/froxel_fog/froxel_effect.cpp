@@ -6,6 +6,7 @@
 #include "common/shared_resources.h"
 #include "core/lookup_volume.h"
 #include "core/settings_check.h"
+#include "froxel_fog/froxel_settings.h"
 #include "froxel_fog/froxel_uniforms.h"
 #include "postfx_objects_spirv.h"
 
@@ -185,6 +186,7 @@ Status FroxelFogEffect::validate(const FrameInfo& frame) const {
                 "model the same "
                 "medium, so enable one of them (docs/effects/froxel-fog.md)"};
     if (Status r = validateFroxelFogSettings(s); !r) return r;
+    if (Status r = checkFroxelTiles(s, frame.color.extent.width, frame.color.extent.height); !r) return r;
     return common::checkNoiseSupported(s.noise, noiseFormatSupported_, "FrameInfo.froxelFog");
 }
 
@@ -219,7 +221,8 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     const UVec3 grid = froxelGridSize(s, frame.color.extent.width, frame.color.extent.height);
 
     const core::DepthInput depthInput = b.depthInput();
-    const core::ImageRef noise = common::declareNoise(b, s.noise, {kNoise, kNoNoise, kNoiseGenerate});
+    const core::ImageRef noise =
+        common::declareNoise(b, s.noise, {kNoise, kNoNoise, kNoiseGenerate, "froxel_fog.noise.texture_size"});
 
     // Local lights: their buffer, and the light lists when there are many.
     gpu::FroxelLights lights;
@@ -235,6 +238,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     volume.type = VK_IMAGE_TYPE_3D;
     volume.format = VK_FORMAT_R16G16B16A16_SFLOAT;
     volume.extent = {grid.x, grid.y, grid.z};
+    volume.sizedBy = s.tileSizePx > 0 ? "froxel_fog.tile_size_px" : "froxel_fog.grid";
     volume.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     // The scatter volume: this frame's alone, or (temporal) the accumulated one of two histories.
     const bool temporal = s.temporal.enabled;
@@ -292,6 +296,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         desc.format = VK_FORMAT_R32_UINT;
         desc.extent = {clusters.x, clusters.y, clusters.z * words};
         desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
+        desc.sizedBy = volume.sizedBy;
         lightLists = b.transientImage(kLightLists, desc);
         b.pass(kLightListPass, groupsFor(clusters.x), groupsFor(clusters.y), clusters.z * words)
             .bind(gpu::kFroxelBindingUniforms, uniforms)

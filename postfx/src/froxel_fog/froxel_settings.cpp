@@ -1,5 +1,6 @@
 // FroxelFogSettings' checks (its settings table's ranges, the medium's rules, the volumes') and the grid's
 // slice distribution (docs/effects/froxel-fog.md).
+#include "froxel_fog/froxel_settings.h"
 #include "common/medium.h"
 #include "common/medium_table.h"
 #include "core/checks.h"
@@ -29,7 +30,33 @@ Status validateFroxelFogSettings(const FroxelFogSettings& s) {
                                            p + ".volumes[" + std::to_string(i) + "]");
             !r)
             return r;
+    if (s.tileSizePx == 0) return checkFroxelCount(s.grid, p + ".grid", "");
     return Status::success();
+}
+
+Status checkFroxelCount(const UVec3& grid, const std::string& field, const std::string& from) {
+    const uint64_t froxels = uint64_t(grid.x) * grid.y * grid.z;
+    if (froxels <= kMaxFroxels) return Status::success();
+    return core::invalid(field + ": " + from + std::to_string(grid.x) + "x" + std::to_string(grid.y) + "x" +
+                         std::to_string(grid.z) + " = " + std::to_string(froxels) +
+                         " froxels, more than kMaxFroxels (" + std::to_string(kMaxFroxels) + ")");
+}
+
+Status checkFroxelTiles(const FroxelFogSettings& s, uint32_t width, uint32_t height) {
+    if (s.tileSizePx == 0) return Status::success();
+    const std::string field = "FrameInfo.froxelFog.tileSizePx";
+    const uint32_t tile = s.tileSizePx;
+    const UVec3 grid{(width + tile - 1) / tile, (height + tile - 1) / tile, s.grid.z};
+    const std::string from =
+        std::to_string(tile) + " px at " + std::to_string(width) + "x" + std::to_string(height) + " gives ";
+    if (grid.x > kMaxFroxelGridSize || grid.y > kMaxFroxelGridSize) {
+        const uint32_t least = (std::max(width, height) + kMaxFroxelGridSize - 1) / kMaxFroxelGridSize;
+        return core::invalid(field + ": " + from + std::to_string(grid.x) + "x" + std::to_string(grid.y) +
+                             " froxels, more than " + std::to_string(kMaxFroxelGridSize) +
+                             " across or down (kMaxFroxelGridSize): at least " + std::to_string(least) +
+                             " px at this extent");
+    }
+    return checkFroxelCount(grid, field, from);
 }
 
 double froxelSliceDepth(const FroxelFogSettings& s, double nearPlane, double z01) {
