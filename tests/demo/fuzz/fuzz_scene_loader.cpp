@@ -7,14 +7,18 @@
 // Anything else aborts, which libFuzzer reports as a crash and saves the input.
 //
 // Half of the mutations are JSON-aware (LLVMFuzzerCustomMutator): a number of a parseable input is
-// replaced by a value at an edge (the limits, float's extremes, a power-of-ten rescale) or an array
-// element is repeated, so that the values of valid scenes are searched, not only the syntax.
+// replaced by a value at an edge (the limits, float's extremes, a power-of-ten rescale), an array
+// element is repeated, or a registered effect's setting is put at an end of its table's range or just
+// outside it, so that the values of valid scenes are searched, not only the syntax.
 #include "scene_oracle.h"
 
 #include "scene/scene.h"
 
+#include <postfx/settings_table.h>
+
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -45,10 +49,63 @@ void collect(json& j, std::vector<json*>& numbers, std::vector<json*>& arrays) {
             collect(child, numbers, arrays);
 }
 
+// A value of `f` at an end of its range or just outside it (the red team's cases), from its table.
+json tableEdge(const postfx::SettingField& f, std::minstd_rand& rng) {
+    const bool upper = rng() % 2 == 0;
+    const double bound = upper ? f.max : f.min;
+    if (!std::isfinite(bound)) return upper ? 3.4e38 : -3.4e38;
+    const bool outside = rng() % 3 == 0;
+    const bool integer = f.kind == postfx::SettingKind::Uint || f.kind == postfx::SettingKind::UVec2 ||
+                         f.kind == postfx::SettingKind::UVec3;
+    double v = bound;
+    if (outside)
+        v = integer ? bound + (upper ? 1.0 : -1.0)
+                    : std::nextafter(float(bound), upper ? HUGE_VALF : -HUGE_VALF);
+    const json number = integer ? json(std::max(0.0, v)) : json(v);
+    const int components = f.kind == postfx::SettingKind::UVec2 ? 2
+                           : f.kind == postfx::SettingKind::Vec3 || f.kind == postfx::SettingKind::Color ||
+                                   f.kind == postfx::SettingKind::UVec3 ||
+                                   f.kind == postfx::SettingKind::DVec3
+                               ? 3
+                               : 1;
+    if (components == 1) return number;
+    json a = json::array();
+    for (int c = 0; c < components; ++c)
+        a.push_back(number);
+    return a;
+}
+
+// Puts a registered effect's setting (postfx::effectSettingsTables) at an end of its range, or just
+// outside, into `j`'s effects: the ranges the tables document are searched, whatever the seeds hold.
+bool mutateSetting(json& j, std::minstd_rand& rng) {
+    if (!j.is_object()) return false;
+    const auto effects = postfx::effectSettingsTables();
+    const postfx::EffectSettingsTable& e = effects[rng() % effects.size()];
+    const auto table = e.table();
+    const postfx::SettingField& f = table[rng() % table.size()];
+    if (!f.key || f.kind == postfx::SettingKind::Bool || f.kind == postfx::SettingKind::Enum ||
+        f.kind == postfx::SettingKind::Opaque)
+        return false;
+    std::string pointer = std::string("/effects/") + e.key + "/" + f.key;
+    std::replace(pointer.begin(), pointer.end(), '.', '/');
+    try {
+        j[json::json_pointer(pointer)] = tableEdge(f, rng);
+        if (rng() % 2 == 0) j["effects"][e.key]["enabled"] = true;
+    } catch (const json::exception&) {
+        return false;  // a seed whose effects are not objects
+    }
+    return true;
+}
+
 // One JSON-aware mutation of `text`; false when it does not parse or has nothing to mutate.
 bool mutateJson(std::string& text, std::minstd_rand& rng) {
     json j = json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (j.is_discarded()) return false;
+    if (rng() % 4 == 0) {
+        if (!mutateSetting(j, rng)) return false;
+        text = j.dump();
+        return true;
+    }
     std::vector<json*> numbers, arrays;
     collect(j, numbers, arrays);
     const auto pick = [&](std::size_t n) { return std::size_t(rng() % n); };
