@@ -1,4 +1,5 @@
 #include "worst_case.h"
+#include "atmosphere/atmosphere_settings.h"
 
 #include "frame_run.h"
 
@@ -118,6 +119,21 @@ std::vector<Spec> specs() {
              // Each axis has its own maximum (view, sun, height: atmosphere/atmosphere_settings.h).
              s.atmosphere.scatteringOrdersLutSize = {64, 128, 64};
              t += ", scattering_orders_lut_size=64x128x64";
+             // Their product is bounded (kMaxOrdersWork): the orders, steps, then azimuths down until it
+             // fits.
+             postfx::AtmosphereSettings& a = s.atmosphere;
+             while (postfx::atmosphere::scatteringOrdersWork(a) > postfx::atmosphere::kMaxOrdersWork &&
+                    a.scatteringOrders > 1)
+                 --a.scatteringOrders;
+             while (postfx::atmosphere::scatteringOrdersWork(a) > postfx::atmosphere::kMaxOrdersWork &&
+                    a.scatteringOrdersSteps > 1)
+                 --a.scatteringOrdersSteps;
+             while (postfx::atmosphere::scatteringOrdersWork(a) > postfx::atmosphere::kMaxOrdersWork &&
+                    a.scatteringOrdersAzimuthSize > 2)
+                 --a.scatteringOrdersAzimuthSize;
+             t += ", within the orders' work bound: scattering_orders=" + std::to_string(a.scatteringOrders) +
+                  ", scattering_orders_steps=" + std::to_string(a.scatteringOrdersSteps) +
+                  ", scattering_orders_azimuth_size=" + std::to_string(a.scatteringOrdersAzimuthSize);
          }},
         {"clouds",
          [=](demo::Scene& s, std::string& t) {

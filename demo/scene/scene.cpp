@@ -14,6 +14,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -61,6 +62,9 @@ public:
         if (ex.id == 406) {  // out_of_range.406: a number literal that overflows a double
             return setError(pendingPath() + ": expected a finite number, got " + truncated(lastToken, 40));
         }
+        // A byte that is not UTF-8 inside a string: the object or array it is in, then its position.
+        if (std::strstr(ex.what(), "ill-formed UTF-8") && !stack_.empty())
+            return setError(containerPath() + ": " + json_text::syntaxError(text_, position, ex.what()));
         return setError(json_text::syntaxError(text_, position, ex.what()));
     }
 
@@ -118,6 +122,17 @@ private:
             } else {
                 path = json_text::keyPath(path, f.key);
             }
+        }
+        return path.empty() ? std::string("(root)") : path;
+    }
+
+    // The key path of the innermost open object or array.
+    std::string containerPath() const {
+        std::string path;
+        for (std::size_t i = 0; i + 1 < stack_.size(); ++i) {
+            const Frame& f = stack_[i];
+            path = f.node->is_array() ? json_text::indexPath(path, f.node->size() - 1)
+                                      : json_text::keyPath(path, f.key);
         }
         return path.empty() ? std::string("(root)") : path;
     }

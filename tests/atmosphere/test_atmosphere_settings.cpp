@@ -121,3 +121,47 @@ TEST(AtmosphereSettings, TopRadiusMessageSaysWhy) {
 }
 
 }  // namespace
+
+namespace test {
+namespace {
+
+// The orders' work together is bounded (kMaxOrdersWork): the defaults and each setting alone at its
+// maximum fit; all at their maxima are refused naming scatteringOrders; Hillaire's model is not bound by it.
+TEST(AtmosphereSettings, ScatteringOrdersWorkIsBounded) {
+    using postfx::atmosphere::kMaxOrdersWork;
+    using postfx::atmosphere::scatteringOrdersWork;
+    postfx::AtmosphereSettings s;
+    s.multipleScattering = postfx::AtmosphereMultipleScattering::Orders;
+    EXPECT_NEAR(scatteringOrdersWork(s), 4.0 * 64 * 33 * 256 * (24 + 32 * 8), 1.0);
+    const std::function<void(postfx::AtmosphereSettings&)> alone[] = {
+        [](auto& a) { a.scatteringOrders = postfx::atmosphere::kMaxScatteringOrders; },
+        [](auto& a) { a.scatteringOrdersSteps = postfx::atmosphere::kMaxSteps; },
+        [](auto& a) { a.scatteringOrdersDirections = postfx::atmosphere::kMaxOrdersDirections; },
+        [](auto& a) { a.scatteringOrdersAzimuthSize = postfx::atmosphere::kMaxOrdersAzimuths; },
+        [](auto& a) {
+            a.scatteringOrdersLutSize = {postfx::atmosphere::kMaxOrdersViewSide,
+                                         postfx::atmosphere::kMaxOrdersSunSide,
+                                         postfx::atmosphere::kMaxOrdersHeightSide};
+        },
+    };
+    for (const auto& edit : alone) {
+        postfx::AtmosphereSettings a = s;
+        edit(a);
+        EXPECT_LE(scatteringOrdersWork(a), kMaxOrdersWork);
+        EXPECT_TRUE(postfx::validateAtmosphereSettings(a).ok())
+            << postfx::validateAtmosphereSettings(a).message;
+    }
+    postfx::AtmosphereSettings all = s;
+    for (const auto& edit : alone)
+        edit(all);
+    const postfx::Status refused = postfx::validateAtmosphereSettings(all);
+    EXPECT_EQ(refused.code, postfx::Result::InvalidArgument);
+    EXPECT_EQ(refused.message.rfind("FrameInfo.atmosphere.scatteringOrders: 16 orders with ", 0), 0u)
+        << refused.message;
+    EXPECT_NE(refused.message.find("more than 1.71799e+10"), std::string::npos) << refused.message;
+    all.multipleScattering = postfx::AtmosphereMultipleScattering::Hillaire;
+    EXPECT_TRUE(postfx::validateAtmosphereSettings(all).ok());
+}
+
+}  // namespace
+}  // namespace test

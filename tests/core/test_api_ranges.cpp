@@ -754,14 +754,15 @@ TEST_F(CoreApiRanges, EveryTableSettingJustOutsideItsRangeIsRefusedNamingIt) {
     }
     // The ends that a rule across fields refuses with the other field at its default (documented beside
     // the table, and named in the message): the atmosphere's top above its ground, the clouds' top above
-    // their bottom, the octaves' contribution at most their attenuation.
+    // their bottom, the octaves' contribution at most their attenuation, the froxel grid's product.
     const std::pair<std::string, std::string> crossFieldRules[] = {
         {"atmosphere.groundRadius", "greater than groundRadius"},
         {"atmosphere.topRadius", "greater than groundRadius"},
         {"clouds.bottomHeight", "greater than bottomHeight"},
         {"clouds.topHeight", "greater than bottomHeight"},
         {"clouds.multipleScattering.attenuation", "at most attenuation"},
-        {"clouds.multipleScattering.contribution", "at most attenuation"}};
+        {"clouds.multipleScattering.contribution", "at most attenuation"},
+        {"froxelFog.grid", "more than kMaxFroxels"}};
     for (const TableRow& row : good) {
         const postfx::Status s = planRow(row);
         const std::string field = std::string(row.effect->member) + "." + row.field->member;

@@ -402,7 +402,7 @@ std::vector<Rejection> rejections() {
     addText("SyntaxUnterminatedString", "{\"camera", "(line 1, column ", "syntax error");
     addText("SyntaxNaNLiteral", withRaw("/camera/near", "NaN"), "(line ", "syntax error");
     addText("SyntaxComment", "// comment\n" + base().dump(), "(line 1, column 1) syntax error: ");
-    addText("SyntaxInvalidUtf8", withRaw("/camera/near", "\"\xff\""), "(line ", "syntax error");
+    addText("SyntaxInvalidUtf8", withRaw("/camera/near", "\"\xff\""), "camera: (line ", "syntax error");
 
     // top level
     addText("RootArray", "[]", "(root): expected a JSON object, got an empty array");
@@ -615,6 +615,16 @@ TEST(DemoSceneParse, SyntaxErrorPositionIsLineAndColumn) {
     ASSERT_FALSE(p.ok);
     EXPECT_EQ(p.error.rfind("(line 3, column 9) syntax error: ", 0), 0u) << p.error;
     EXPECT_NE(p.error.find("expected ':'"), std::string::npos) << p.error;
+}
+
+// A byte that is not UTF-8 in a string: the object it is in, then the position.
+TEST(DemoSceneParse, InvalidUtf8NamesTheObjectItIsIn) {
+    const std::string text =
+        "{\"camera\": {\"position\": [0, 2, 10]},\n \"effects\": {\"fog\": {\"x\": \"a\xff\"}}}";
+    const Parsed p = parse(text);
+    ASSERT_FALSE(p.ok);
+    EXPECT_EQ(p.error.rfind("effects.fog: (line 2, column ", 0), 0u) << p.error;
+    EXPECT_NE(p.error.find("UTF-8"), std::string::npos) << p.error;
 }
 
 TEST(DemoSceneParse, VeryDeepNestingDoesNotCrash) {

@@ -44,7 +44,25 @@ Status validateSettings(const AtmosphereSettings& s) {
     if (!perfectSquare(s.scatteringOrdersDirections))
         return bad("scatteringOrdersDirections", std::to_string(s.scatteringOrdersDirections) +
                                                      " is not a perfect square (n×n directions)");
+    if (s.multipleScattering == AtmosphereMultipleScattering::Orders &&
+        scatteringOrdersWork(s) > kMaxOrdersWork) {
+        const UVec3& n = s.scatteringOrdersLutSize;
+        return bad("scatteringOrders",
+                   std::to_string(s.scatteringOrders) + " orders with scatteringOrdersLutSize (" +
+                       std::to_string(n.x) + ", " + std::to_string(n.y) + ", " + std::to_string(n.z) +
+                       "), scatteringOrdersAzimuthSize " + std::to_string(s.scatteringOrdersAzimuthSize) +
+                       ", scatteringOrdersDirections " + std::to_string(s.scatteringOrdersDirections) +
+                       " and scatteringOrdersSteps " + std::to_string(s.scatteringOrdersSteps) + " take " +
+                       core::numberText(scatteringOrdersWork(s)) + " samples, more than " +
+                       core::numberText(kMaxOrdersWork) + " (28 times the defaults'): lower one of them");
+    }
     return Status::success();
+}
+
+double scatteringOrdersWork(const AtmosphereSettings& s) {
+    const UVec3& n = s.scatteringOrdersLutSize;
+    return double(s.scatteringOrders) * n.y * (2.0 * n.z + 1.0) * s.scatteringOrdersDirections *
+           (double(s.scatteringOrdersSteps) + double(n.x) * s.scatteringOrdersAzimuthSize);
 }
 
 }  // namespace postfx::atmosphere

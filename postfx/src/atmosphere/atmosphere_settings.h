@@ -29,6 +29,12 @@ constexpr uint32_t kMaxOrdersViewSide = 64, kMaxOrdersSunSide = 128, kMaxOrdersH
 constexpr uint32_t kMinOrdersAzimuths = 2, kMaxOrdersAzimuths = 16;
 constexpr uint32_t kMaxScatteringOrders = 16;
 constexpr uint32_t kMaxOrdersDirections = gpu::kAtmosphereOrdersMaxDirections;  // the pass's shared memory
+// The orders' work together: orders · μ_s nodes · (2·height + 1) nodes · directions · (steps + μ nodes ·
+// azimuths), the march and the gather per node and order (atmosphere.md, "Passes"). The defaults do
+// 6.1e8; each key alone at its maximum (the table's three sides together) at most 15×; all at their
+// maxima 290× (more than 8 minutes on lavapipe). 2^34, 28× the defaults', admits every key alone.
+constexpr double kMaxOrdersWork = 17179869184.0;
+double scatteringOrdersWork(const AtmosphereSettings& settings);
 
 // InvalidArgument naming the field by its key under effects.atmosphere ("atmosphere.mie_anisotropy: 1 is
 // outside (-1, 1)") for any value out of range, NaN or Inf; success otherwise.
