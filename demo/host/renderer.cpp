@@ -242,20 +242,26 @@ bool Renderer::setScene(const Scene& scene, std::string& error) {
     return true;
 }
 
+VkCommandBuffer Renderer::Impl::beginSlot(size_t slot, std::string& error) {
+    if (!vkCheck(vkWaitForFences(host.device, 1, &fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences",
+                 error))
+        return VK_NULL_HANDLE;
+    VkCommandBuffer cmd = commandBuffers[slot];
+    vkResetCommandBuffer(cmd, 0);
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd, &bi);
+    return cmd;
+}
+
 bool Renderer::Impl::meterFirstFrame(const Scene& state, std::string& error) {
     meteredExposure = 0.0;  // the first pass: the camera's exposure (scenePreExposure)
     if (!options.preExpose) return true;
     const double wanted = exposureFromEv100(state.camera.ev100);
     for (uint32_t pass = 0; pass < kMeteringPasses; ++pass) {
         const size_t slot = 0;  // frame 0's
-        VkCommandBuffer cmd = commandBuffers[slot];
-        if (!vkCheck(vkWaitForFences(host.device, 1, &fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences",
-                     error))
-            return false;
-        vkResetCommandBuffer(cmd, 0);
-        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-        vkBeginCommandBuffer(cmd, &bi);
+        VkCommandBuffer cmd = beginSlot(slot, error);
+        if (!cmd) return false;
         const bool recorded = recordFrame(cmd, state, 0, postfx::ImageInput{}, error);
         if (recorded) recordReadback(cmd);
         if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;
@@ -306,15 +312,9 @@ bool Renderer::render(const Scene& scene, ImageF& out, std::string& error) {
             }
         }
         const size_t slot = frameIndex % kFramesInFlight;
-        VkCommandBuffer cmd = r.commandBuffers[slot];
         // The command buffer and postfx's per-frame resources of frame (index - kFramesInFlight) are free.
-        if (!vkCheck(vkWaitForFences(device, 1, &r.fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences",
-                     error))
-            return false;
-        vkResetCommandBuffer(cmd, 0);
-        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-        vkBeginCommandBuffer(cmd, &bi);
+        VkCommandBuffer cmd = r.beginSlot(slot, error);
+        if (!cmd) return false;
         const bool recorded = recordFrame(cmd, state, frameIndex, error);
         if (recorded && f + 1 == r.options.frames) r.recordReadback(cmd);
         if (!vkCheck(vkEndCommandBuffer(cmd), "vkEndCommandBuffer", error) || !recorded) return false;

@@ -162,6 +162,9 @@ struct Renderer::Impl {
     uint32_t forwardFirstQuery = 0;
     bool recordForward(VkCommandBuffer cmd, const Scene& scene, const postfx::FrameInfo& frame,
                        std::string& error);
+    // Waits for the slot's fence (its frame in flight done), then resets and begins its command buffer for
+    // one submission; the command buffer, or null on a failed wait.
+    VkCommandBuffer beginSlot(size_t slot, std::string& error);
     // Submits the ended `cmd` on the host's queue, signalling fences[slot] (reset first); a failed
     // submission marks the renderer broken.
     bool submit(VkCommandBuffer cmd, size_t slot, std::string& error);
