@@ -134,7 +134,8 @@ int fail(const std::string& message) {
 }
 
 // {"passes":[{"name", "effect", "reads", "writes", "groups"}], "resources":[{"name", "effect", "bytes",
-// "sized_by" (when a setting sizes it)}], "total_bytes"}: postfx's own passes and memory only.
+// "sized_by" (when a setting sizes it)}], "total_bytes", "adjusted" (when postfx uses an input other
+// than as given: one line each)}: postfx's own passes and memory only.
 nlohmann::ordered_json planJson(const postfx::FramePlan& plan) {
     nlohmann::ordered_json passes = nlohmann::ordered_json::array(),
                            resources = nlohmann::ordered_json::array();
@@ -148,7 +149,10 @@ nlohmann::ordered_json planJson(const postfx::FramePlan& plan) {
         resources.push_back({{"name", r.name}, {"effect", r.effect}, {"bytes", r.bytes}});
         if (!r.sizedBy.empty()) resources.back()["sized_by"] = r.sizedBy;
     }
-    return {{"passes", passes}, {"resources", resources}, {"total_bytes", plan.totalBytes()}};
+    nlohmann::ordered_json json = {
+        {"passes", passes}, {"resources", resources}, {"total_bytes", plan.totalBytes()}};
+    if (!plan.adjusted.empty()) json["adjusted"] = plan.adjusted;
+    return json;
 }
 
 // --print-plan: renders frames 0..frames-2, then prints the plan of frame frames-1.

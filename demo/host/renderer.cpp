@@ -53,6 +53,8 @@ Renderer::Impl::~Impl() {
     if (frameSetLayout) vkDestroyDescriptorSetLayout(device, frameSetLayout, nullptr);
     for (GpuBuffer* b : {&frameUniforms, &lightsUniforms, &shadowFaces, &vertices, &indices, &readback})
         destroyBuffer(device, *b);
+    for (GpuBuffer& b : meterCopies)
+        destroyBuffer(device, b);
 }
 
 std::unique_ptr<Renderer> Renderer::create(VulkanHost& host, const RenderOptions& options,

@@ -46,6 +46,11 @@ struct RenderOptions {
     // lighting in physical units into RGBA16F should; false: physical units (pre-exposure 1), where a
     // 100,000 lux sun's in-scattering clips at RGBA16F's 65,504.
     bool preExpose = true;
+    // A window's auto-exposure (with preExpose): every meterInterval-th frame recordFrame records copies its
+    // HDR image to a host buffer of its frame slot, and the next recordFrame of that slot (its frame done)
+    // measures it and sets the pre-exposure of the frames after (host/metering.h), so the pre-exposure
+    // follows what the camera sees. 0: off (render() meters its frame 0 itself).
+    uint32_t meterInterval = 0;
 };
 
 // Linear RGBA32F pixels, row-major, top row first.

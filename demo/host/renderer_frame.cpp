@@ -1,6 +1,7 @@
 // One frame of the demo renderer: uniforms, shadow map, G-buffer, lighting, postfx.
 #include "demo_shared.h"
 #include "host/camera_math.h"
+#include "host/metering.h"
 #include "host/renderer_impl.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -332,6 +333,7 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     }
     // The atlas first: postfx's plan (drawsShadows) and record read it.
     if (!reserveLocalShadows(scene, error)) return false;
+    meterCompletedFrame(scene, frameIndex % kFramesInFlight);
     const LocalShadowLayout localShadowFrame = localShadowsOf(scene);
     const ShadowFit fit = shadowFit(scene);
     // The frame's light, once: the surfaces' uniforms and lights, the shadow decision and postfx read it.
@@ -409,8 +411,47 @@ bool Renderer::Impl::recordFrame(VkCommandBuffer cmd, const Scene& scene, uint64
     cloudShadow = postfx::cloudShadowTransform(frame);
     // The transparent surfaces over postfx's composite. Not with a separate output (the CPU reference
     // path, whose HDR image keeps the un-fogged opaque scene): there they are left out.
-    if (!frame.volumetricsLookup.enabled || fogOutput.image != VK_NULL_HANDLE) return true;
-    return recordForward(cmd, scene, frame, error);
+    if (frame.volumetricsLookup.enabled && fogOutput.image == VK_NULL_HANDLE &&
+        !recordForward(cmd, scene, frame, error))
+        return false;
+    return recordMeterCopy(cmd, frameIndex, error);
+}
+
+void Renderer::Impl::meterCompletedFrame(const Scene& scene, size_t slot) {
+    if (!meterCopyPending[slot]) return;
+    meterCopyPending[slot] = false;
+    const Metering m = meterHalfImage(static_cast<const uint16_t*>(meterCopies[slot].mapped),
+                                      size_t(extent.width) * extent.height);
+    const PreExposureRange range = preExposureRange(scene, frameLight(scene).surfaces.ambient);
+    meteredExposure = meteredPreExposure(m, meterCopyExposure[slot], exposureFromEv100(scene.camera.ev100),
+                                         range.lowest, range.highest);
+}
+
+// The HDR image (GENERAL, written in compute or chained there) copied in TRANSFER_SRC and returned to
+// GENERAL for this frame's other readers (their barriers chain from COMPUTE_SHADER writes); the next
+// frame's discard waits for TRANSFER (kHdrReaderStages).
+bool Renderer::Impl::recordMeterCopy(VkCommandBuffer cmd, uint64_t frameIndex, std::string& error) {
+    if (!options.preExpose || options.meterInterval == 0 || frameIndex % options.meterInterval != 0)
+        return true;
+    const size_t slot = frameIndex % kFramesInFlight;
+    GpuBuffer& copy = meterCopies[slot];
+    if (!copy.buffer && !createBuffer(host, VkDeviceSize(extent.width) * extent.height * 8,
+                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, copy, error))
+        return false;
+    imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kCompute,
+                 VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {extent.width, extent.height, 1};
+    vkCmdCopyImageToBuffer(cmd, hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.buffer, 1, &region);
+    imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kCompute,
+                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    bufferBarrier(cmd, copy, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+    meterCopyExposure[slot] = preExposure;
+    meterCopyPending[slot] = true;
+    return true;
 }
 
 bool Renderer::Impl::recordForward(VkCommandBuffer cmd, const Scene& scene, const postfx::FrameInfo& frame,

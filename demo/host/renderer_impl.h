@@ -102,9 +102,14 @@ struct Renderer::Impl {
     bool cameraCutRequested = false;
     // The pre-exposure of the last recorded frame (its HDR image holds radiance × this).
     float preExposure = 1.0f;
-    // The pre-exposure render() and renderReference() metered from what the camera sees (0:
-    // none, frameLight takes scenePreExposure's).
+    // The pre-exposure metered from what the camera sees (render()'s frame 0, or a window's frames with
+    // options.meterInterval; 0: none, frameLight takes scenePreExposure's).
     double meteredExposure = 0.0;
+    // options.meterInterval: per frame slot, the copy of a frame's HDR image (host-visible, created on
+    // first use), the pre-exposure it was stored with, and whether it waits to be measured.
+    std::array<GpuBuffer, kFramesInFlight> meterCopies;
+    std::array<float, kFramesInFlight> meterCopyExposure{};
+    std::array<bool, kFramesInFlight> meterCopyPending{};
 
     // renderReference(): where postfx writes the fogged frame so that the HDR image keeps the
     // un-fogged scene (FrameInfo::output); created on first use.
@@ -124,6 +129,10 @@ struct Renderer::Impl {
     bool createFrameSet(std::string& error);
     bool createPostfx(std::string& error);
     void recordReadback(VkCommandBuffer cmd) const;
+    // options.meterInterval: measures `slot`'s copy when one waits (its frame done: the caller waited for
+    // it) into meteredExposure; after recording frame `frameIndex`, records its copy when it is due.
+    void meterCompletedFrame(const Scene& scene, size_t slot);
+    bool recordMeterCopy(VkCommandBuffer cmd, uint64_t frameIndex, std::string& error);
     // Records frame 0 of `state` (a camera cut), reads it back and meters it (host/metering.h); again
     // with the metered pre-exposure (meteredExposure) while that changes, at most kMeteringPasses times.
     // The HDR image and the readback then hold frame 0 as rendered with meteredExposure (or the camera's

@@ -17,8 +17,9 @@ bool CameraControls::build(Scene& scene, float preExposure) {
     if (changed && std::isfinite(ev100)) scene.camera.ev100 = ev100;
     ImGui::Text("pre-exposure 2^%d (HDR image = radiance x it)", int(std::lround(std::log2(preExposure))));
     widgets::tooltip(
-        "postfx::FrameInfo::preExposure: the exposure rounded down to a power of two, so that a "
-        "100,000 lux sun's in-scattering fits RGBA16F");
+        "postfx::FrameInfo::preExposure: a power of two metered from what the camera sees every 4th "
+        "frame (the exposure's, lowered so that the brightest pixel fits RGBA16F, raised so that the "
+        "median keeps half precision's digits)");
     return changed;
 }
 

@@ -33,6 +33,9 @@ namespace demo::window {
 namespace {
 
 constexpr uint32_t kFramesInFlight = Renderer::kFramesInFlight;
+// Every 4th frame is metered (RenderOptions::meterInterval): reading back and measuring an image costs a
+// few ms of CPU, which a quarter of the frames carry; the exposure settles within a few metered frames.
+constexpr uint32_t kMeterInterval = 4;
 
 int fail(const std::string& message) {
     std::fprintf(stderr, "postfx-demo: %s\n", message.c_str());
@@ -198,6 +201,7 @@ bool App::recreateRenderer(std::string& error) {
     RenderOptions ro;
     ro.width = swapchain_.extent.width;
     ro.height = swapchain_.extent.height;
+    ro.meterInterval = kMeterInterval;  // auto-exposure: the pre-exposure follows what the camera sees
     renderer_ = Renderer::create(*host_, ro, error);
     if (!renderer_ || !renderer_->setScene(scene_, error) ||
         !tonemap_.create(*host_, renderer_->hdrImage(), error))

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,10 @@ protected:
         ASSERT_TRUE(gpu.init(hostHandles()).ok());
         postfx::ContextCreateInfo info;
         info.depth.reversedZ = true;
+        info.messageCallback = [](postfx::MessageSeverity, const char* text, void* user) {
+            static_cast<AtmosphereStability*>(user)->messages.emplace_back(text);
+        };
+        info.messageUserData = this;
         ASSERT_TRUE(createContext(context, info).ok());
         frame.atmosphere.enabled = true;
         frame.sun.illuminance = postfx::Vec3(1e5f);
@@ -75,6 +80,7 @@ protected:
         frame.frameIndex = frameIndex++;
         std::vector<float> out;
         FogHarness harness(*host, gpu);
+        harness.onBeforeRecord = beforeRecord;
         const postfx::Status s = harness.run(*context, im, frame, out);
         EXPECT_TRUE(s.ok()) << s.message;
         return out;
@@ -117,6 +123,8 @@ protected:
     std::unique_ptr<postfx::Context> context;
     postfx::FrameInfo frame;
     uint64_t frameIndex = 0;
+    std::vector<std::string> messages;  // what postfx said through the message callback
+    std::function<void(const postfx::FrameInfo&)> beforeRecord;  // FogHarness::onBeforeRecord
 };
 
 TEST_F(AtmosphereStability, SunAtAndBelowTheHorizon) {
@@ -127,14 +135,32 @@ TEST_F(AtmosphereStability, SunAtAndBelowTheHorizon) {
     }
 }
 
-// Below the ground the camera is clamped onto it: the image is the one from the ground.
+// Below the ground the camera is clamped onto it: the image is the one from the ground, and postfx says
+// so in one line, in the plan and once through the message callback.
 TEST_F(AtmosphereStability, CameraBelowTheGroundIsClamped) {
+    const std::string line =
+        "atmosphere: FrameInfo.camera.position is below the ground (the planet's surface): "
+        "the sky and the aerial perspective are drawn from the ground above it";
+    // The plan of each frame as record() gets it, before it records.
+    postfx::FramePlan plan;
+    beforeRecord = [&](const postfx::FrameInfo& f) { ASSERT_TRUE(context->plan(f, plan).ok()); };
     look({0.0, 0.0, 0.0}, {1.0, 0.05, 0.2});
     const std::vector<float> onGround = expectStable("camera on the ground");
+    EXPECT_TRUE(plan.adjusted.empty());
     look({0.0, -500.0, 0.0}, {1.0, 0.05, 0.2});
     const std::vector<float> below = expectStable("camera 500 m below the ground");
+    EXPECT_EQ(plan.adjusted, std::vector<std::string>{line});
     const ImageStats stats = compareImages(below, onGround, 16, 8, 0.01, 1e-3);
     EXPECT_LT(stats.relativeRmse, 1e-3) << stats.summary();
+    look({0.0, -800.0, 0.0}, {1.0, 0.05, 0.2});
+    expectStable("camera 800 m below the ground");
+    EXPECT_EQ(messages, std::vector<std::string>{line}) << "said once while the camera stays below";
+    look({0.0, 0.0, 0.0}, {1.0, 0.05, 0.2});
+    expectStable("camera on the ground again");
+    EXPECT_TRUE(plan.adjusted.empty());
+    look({0.0, -500.0, 0.0}, {1.0, 0.05, 0.2});
+    expectStable("camera below the ground again");
+    EXPECT_EQ(messages, (std::vector<std::string>{line, line})) << "said again when it goes below again";
 }
 
 TEST_F(AtmosphereStability, CameraFarOutAndLookingStraightUpOrDown) {

@@ -358,7 +358,7 @@ void fogRows(std::vector<Row>& bad, std::vector<Row>& good) {
         fogRange(
             "FrameInfo.fog.albedo", [c](FrameInfo& f) -> float& { return f.fog.albedo[c]; }, 0.0f, 1.0f);
     fogRange(
-        "FrameInfo.fog.anisotropy", [](FrameInfo& f) -> float& { return f.fog.anisotropy; }, -1.0f, 1.0f);
+        "FrameInfo.fog.anisotropy", [](FrameInfo& f) -> float& { return f.fog.anisotropy; }, -0.999f, 0.999f);
     fogRange(
         "FrameInfo.fog.heightFalloff", [](FrameInfo& f) -> float& { return f.fog.heightFalloff; }, 0.0f,
         10.0f);

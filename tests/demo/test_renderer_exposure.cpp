@@ -4,6 +4,7 @@
 // GPU frame and its reference agree at the ends as they do at 15.
 #include "gpu_test.h"
 #include "host/renderer.h"
+#include "host/vulkan_host.h"
 #include "scene/scene.h"
 
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace test {
 namespace {
@@ -87,6 +90,50 @@ TEST_F(DemoRendererExposure, EndsOfTheRangeKeepThePhysicalImage) {
             // moves values, it rounds nothing): 2^-10 apart.
             EXPECT_LE(same, 0x1p-10) << file << " at ev100 " << ev;
             EXPECT_LE(agree, agree15 * 1.05 + 0x1p-11) << file << " at ev100 " << ev;
+        }
+    }
+}
+
+// The window's auto-exposure (RenderOptions::meterInterval): frames recorded one after another as a window
+// records them, each metered once its slot comes round, reach the pre-exposure render() meters for frame 0,
+// from the camera's exposure at the ends of the range (where it clips everything or shows nothing).
+TEST_F(DemoRendererExposure, WindowMeteringReachesWhatRenderMeters) {
+    for (const auto& [file, ev] : {std::pair{"sky_noon.json", -30.0f}, std::pair{"sky_noon.json", 30.0f},
+                                   std::pair{"froxel_lights.json", -30.0f}}) {
+        demo::Scene scene;
+        std::string error;
+        ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/" + file, scene, error)) << error;
+        {
+            float metered = 0.0f;
+            render(scene, ev, false, &metered);
+            demo::RenderOptions o;
+            o.width = kWidth;
+            o.height = kHeight;
+            o.shadowMapSize = 256;
+            o.meterInterval = 1;
+            auto window = demo::Renderer::create(*host, o, error);
+            ASSERT_TRUE(window) << error;
+            demo::Scene frameScene = scene;
+            frameScene.camera.ev100 = ev;
+            ASSERT_TRUE(window->setScene(frameScene, error)) << error;
+            std::vector<float> chosen;
+            for (uint64_t f = 0; f < 10; ++f) {
+                bool recorded = false;
+                ASSERT_TRUE(host->submitAndWait(
+                    [&](VkCommandBuffer cmd) { recorded = window->recordFrame(cmd, frameScene, f, error); },
+                    error))
+                    << error;
+                ASSERT_TRUE(recorded) << error;
+                chosen.push_back(window->preExposure());
+            }
+            std::printf(
+                "[ exposure ] window metering, %s at ev100 %g: frame 0 at 2^%d, frame 9 at 2^%d "
+                "(render() meters 2^%d)\n",
+                file, double(ev), int(std::lround(std::log2(chosen.front()))),
+                int(std::lround(std::log2(chosen.back()))), int(std::lround(std::log2(metered))));
+            // Each decision waits for its frame (two slots): after a few, it stands.
+            EXPECT_EQ(chosen[7], metered) << file << " at ev100 " << ev;
+            EXPECT_EQ(chosen.back(), metered) << file << " at ev100 " << ev;
         }
     }
 }

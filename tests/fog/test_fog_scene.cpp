@@ -259,8 +259,8 @@ TEST(FogScene, EachKeyRoundTripsAtItsBounds) {
     const std::vector<std::pair<std::string, json>> cases = {
         {"/density", 0},
         {"/density", 1e6},
-        {"/anisotropy", -1},
-        {"/anisotropy", 1},
+        {"/anisotropy", -0.999},
+        {"/anisotropy", 0.999},
         {"/height_falloff", 0},
         {"/height_falloff", 10},
         {"/base_height", -3e38},
@@ -362,7 +362,7 @@ std::vector<FogRejection> fogRejections() {
         {"AutoBudgetString", fog("/auto_budget_ms", "1"), "effects.fog.auto_budget_ms: expected a number"},
         // ranges, from postfx::validateFogSettings
         {"DensityNegative", fog("/density", -1), "effects.fog.density: -1 is outside [0, 1e+06]"},
-        {"AnisotropyTwo", fog("/anisotropy", 2), "effects.fog.anisotropy: 2 is outside [-1, 1]"},
+        {"AnisotropyTwo", fog("/anisotropy", 2), "effects.fog.anisotropy: 2 is outside [-0.999, 0.999]"},
         {"HeightFalloffNegative", fog("/height_falloff", -0.1), "effects.fog.height_falloff: "},
         {"MaxDistanceZero", fog("/max_distance", 0), "effects.fog.max_distance: "},
         {"AutoBudgetZero",

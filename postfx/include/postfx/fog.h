@@ -61,7 +61,7 @@ struct FogMedium {
     // Extinction σt at base_height where noise = 1 [1/m]; in [0, 1e6]. 0.02 gives a visibility of ~150 m.
     float density = 0.02f;
     Vec3 albedo{0.9f};  // single-scattering albedo σs/σt per RGB channel [1]; each in [0, 1]
-    // Henyey–Greenstein asymmetry g [1]; in [-1, 1], clamped to [-0.999, 0.999].
+    // Henyey–Greenstein asymmetry g [1]; in [-0.999, 0.999] (±1 would be a delta).
     // g > 0 scatters forward: brightest looking toward the sun.
     float anisotropy = 0.6f;
     // Height fog: σt ∝ exp(-height_falloff · (y - base_height)) [1/m], y the height along the host's up

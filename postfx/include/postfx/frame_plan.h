@@ -43,6 +43,11 @@ struct PlannedResource {
 struct POSTFX_API FramePlan {
     std::vector<PlannedPass> passes;         // in recording order
     std::vector<PlannedResource> resources;  // every resource postfx holds after recording the frame
+    // Inputs postfx uses other than as given, where the documentation says it does rather than refusing
+    // them (a camera below the ground draws the sky from the ground): one line each, naming the field.
+    // record() also says each once through ContextCreateInfo::messageCallback (Warning) in the first
+    // frame that has it.
+    std::vector<std::string> adjusted;
 
     uint64_t totalBytes() const;                           // sum of resources[].bytes
     bool reads(std::string_view resource) const;           // some pass reads it

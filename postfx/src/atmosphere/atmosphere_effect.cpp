@@ -466,4 +466,13 @@ void AtmosphereEffect::recorded(const FrameInfo& frame, bool active) {
     built_.skyView = v.skyView;
 }
 
+void AtmosphereEffect::adjusted(const FrameInfo& frame, std::vector<std::string>& out) const {
+    const glm::dvec3 p =
+        glm::dvec3(frame.camera.position) + glm::dvec3(0.0, frame.atmosphere.groundRadius, 0.0);
+    if (glm::length(p) < frame.atmosphere.groundRadius)
+        out.push_back(
+            "atmosphere: FrameInfo.camera.position is below the ground (the planet's surface): the sky "
+            "and the aerial perspective are drawn from the ground above it");
+}
+
 }  // namespace postfx::atmosphere

@@ -47,6 +47,7 @@ public:
     bool active(const FrameInfo& frame) const override { return frame.atmosphere.enabled; }
     Status declare(core::FrameBuilder& builder) const override;
     void recorded(const FrameInfo& frame, bool active) override;
+    void adjusted(const FrameInfo& frame, std::vector<std::string>& out) const override;
 
     // The views this frame's sky-view and aerial-perspective LUTs are (or stay) built for.
     struct Views {

@@ -14,7 +14,7 @@
 
 namespace postfx::common {
 
-constexpr float kMaxAnisotropy = 0.999f;                       // |g| is clamped to this
+constexpr float kMaxAnisotropy = 0.999f;                       // the range of |g|; ±1 would be a delta
 constexpr float kMaxHeightExponent = gpu::kMaxHeightExponent;  // -height_falloff·(y - base_height) <= this
 
 // The shared medium's checks that are not ranges of its table (common/medium_table.h), used by both fogs:

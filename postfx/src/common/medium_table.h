@@ -8,6 +8,8 @@
 #include <postfx/settings_table.h>
 #include <postfx/temporal.h>
 
+#include "common/medium.h"
+
 #include <array>
 #include <cstddef>
 #include <initializer_list>
@@ -81,13 +83,13 @@ constexpr std::array<SettingField, 17> mediumFields() {
          .member = "anisotropy",
          .kind = SettingKind::Float,
          .unit = "1",
-         .min = -1.0,
-         .max = 1.0,
+         .min = -double(kMaxAnisotropy),
+         .max = double(kMaxAnisotropy),
          .defaults = {m.anisotropy},
          .history = true,
          .uiMin = -0.99,
          .uiMax = 0.99,
-         .meaning = "Henyey–Greenstein g, clamped to ±0.999; > 0 scatters forward",
+         .meaning = "Henyey–Greenstein g; > 0 scatters forward (±1 would be a delta)",
          .address = POSTFX_SETTING_ADDRESS(S, anisotropy)},
         {.key = "height_falloff",
          .member = "heightFalloff",

@@ -8,6 +8,7 @@
 #include "core/world_frame.h"
 #include "effects.h"
 
+#include <algorithm>
 #include <string>
 
 namespace postfx {
@@ -56,6 +57,13 @@ Status validateCreateInfo(const ContextCreateInfo& info) {
 void Context::Impl::warn(const std::string& message) const {
     if (info.messageCallback)
         info.messageCallback(MessageSeverity::Warning, message.c_str(), info.messageUserData);
+}
+
+std::vector<std::string> Context::Impl::adjustedInputs(const FrameInfo& resolved) const {
+    std::vector<std::string> lines;
+    for (const auto& effect : effects)
+        if (effect->active(resolved)) effect->adjusted(resolved, lines);
+    return lines;
 }
 
 TimingsOrigin Context::Impl::timingsOrigin() const {
@@ -246,6 +254,7 @@ Status Context::plan(const FrameInfo& frame, FramePlan& out) const {
     if (Status s = impl.prepareFrame(frame, autoQuality, resolved, impl.planScratch, declared, nullptr); !s)
         return s;
     impl.graph.plan(declared, out);
+    out.adjusted = impl.adjustedInputs(resolved);
     return Status::success();
 }
 
@@ -279,6 +288,12 @@ Status Context::record(const FrameInfo& frame) {
     impl.lookupFrame = frame.frameIndex;
     for (const auto& effect : impl.effects)
         effect->recorded(impl.resolved, effect->active(impl.resolved));
+    // Each adjusted input said once, in the first frame that has it (not again while it stays).
+    std::vector<std::string> adjusted = impl.adjustedInputs(impl.resolved);
+    for (const std::string& line : adjusted)
+        if (std::find(impl.adjusted.begin(), impl.adjusted.end(), line) == impl.adjusted.end())
+            impl.warn(line);
+    impl.adjusted = std::move(adjusted);
     return Status::success();
 }
 

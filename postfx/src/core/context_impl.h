@@ -35,6 +35,7 @@ struct POSTFX_INTERNAL Context::Impl {
     core::WorldScratch recordScratch;
     mutable core::WorldScratch planScratch;
     bool warnedAutoWithoutTimings = false;
+    std::vector<std::string> adjusted;  // the last recorded frame's FramePlan::adjusted lines
     // The last recorded frame's volumetrics lookup (Context::volumetricsLookup).
     bool lookupRecorded = false;
     uint64_t lookupFrame = 0;
@@ -44,6 +45,8 @@ struct POSTFX_INTERNAL Context::Impl {
     void addEffect(std::unique_ptr<core::Effect> effect);
 
     void warn(const std::string& message) const;
+    // FramePlan::adjusted of `resolved` (prepareFrame's): each active effect's lines, in composite order.
+    std::vector<std::string> adjustedInputs(const FrameInfo& resolved) const;
 
     // `frame` checked, each active effect's preset chosen (Auto: by `autoQuality`) and applied into
     // `resolved`, converted into postfx's world frame (its arrays into `scratch`), and the frame declared

@@ -8,6 +8,7 @@
 #include <postfx/context.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace postfx::core {
@@ -75,6 +76,11 @@ public:
     // through what changes between frames without a change of settings, besides what the context varies
     // itself (presets on Auto, camera cuts, the sun lit or dark). Appends to `out`; none by default.
     virtual void prewarmVariants(const FrameInfo& /*frame*/, PrewarmVariants& /*out*/) const {}
+
+    // Inputs of `frame` (validated, in postfx's frame, the effect active) that the effect uses other than
+    // as given, where its documentation says so rather than refusing them (a camera below the ground drawn
+    // from the ground): one line each, naming the field, appended to `out` (FramePlan::adjusted).
+    virtual void adjusted(const FrameInfo& /*frame*/, std::vector<std::string>& /*out*/) const {}
 
     // Called once record() has recorded `frame` (validated, presets applied), for every effect, whether
     // `active` or not: an effect with a temporal history moves its state on (core/temporal.h). plan()
