@@ -294,6 +294,8 @@ std::vector<std::string> App::planLines() {
     }
     lines.push_back("  cached: " + (cached.empty() ? std::string("none") : cached));
     if (!history.empty()) lines.push_back("  history: " + history);
+    for (const std::string& adjusted : plan.adjusted)
+        lines.push_back("  adjusted: " + adjusted);
     return lines;
 }
 
