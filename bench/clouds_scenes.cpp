@@ -73,8 +73,8 @@ postfx::Vec3 cloudsToSun(const CloudsView& view) {
 
 const std::vector<std::string>& cloudsKnobs() {
     static const std::vector<std::string> knobs = {
-        "model",     "steps",       "light_steps", "resolution_scale",
-        "base_size", "detail_size", "temporal",    "preset"};
+        "model",    "steps",        "light_steps", "resolution_scale", "base_size", "detail_size",
+        "temporal", "update_block", "preset"};
     return knobs;
 }
 
@@ -95,6 +95,7 @@ CloudsSweepOptions defaultCloudsSweep(bool quick) {
                 {"base_size", {"32", "64", "128", "256"}},
                 {"detail_size", {"16", "32", "64"}},
                 {"temporal", {"off"}},
+                {"update_block", {"1", "4"}},
                 {"preset", {"low", "medium", "high", "ultra"}}};
     return o;
 }
@@ -112,13 +113,15 @@ bool applyCloudsKnob(postfx::CloudSettings& s, const std::string& knob, const st
     float f = 0.0f;
     bool ok = false;
     const char* expected = "an integer";
-    if (knob == "steps" || knob == "light_steps" || knob == "base_size" || knob == "detail_size") {
+    if (knob == "steps" || knob == "light_steps" || knob == "base_size" || knob == "detail_size" ||
+        knob == "update_block") {
         ok = parseUint(value, n);
         if (ok) {
-            uint32_t& field = knob == "steps"         ? s.steps
-                              : knob == "light_steps" ? s.lightSteps
-                              : knob == "base_size"   ? s.noise.baseSize
-                                                      : s.noise.detailSize;
+            uint32_t& field = knob == "steps"          ? s.steps
+                              : knob == "light_steps"  ? s.lightSteps
+                              : knob == "base_size"    ? s.noise.baseSize
+                              : knob == "update_block" ? s.updateBlock
+                                                       : s.noise.detailSize;
             field = n;
         }
     } else if (knob == "model") {
@@ -163,6 +166,7 @@ std::string cloudsKnobValue(const postfx::CloudSettings& s, const std::string& k
     if (knob == "base_size") return std::to_string(s.noise.baseSize);
     if (knob == "detail_size") return std::to_string(s.noise.detailSize);
     if (knob == "temporal") return s.temporal.enabled ? "on" : "off";
+    if (knob == "update_block") return std::to_string(s.updateBlock);
     return "";
 }
 

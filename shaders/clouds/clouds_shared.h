@@ -116,11 +116,14 @@ struct CloudUniforms {
     vec4 windDelta;  // xyz: how far the wind moved the clouds since the previous recorded frame [m]
     uvec4 extent;    // xy: color extent [px], z: frame index, w: 0
     uvec4 marchExtent;  // xy: the march's extent [px] (the color's at resolution scale 1)
-    uvec4 flags;        // x: kCloudFlag* bits
+    // Sparse update (temporal.comp): x: this frame's block k (1: the march updates every texel), yz: the
+    // texel it updates in each k×k block (texel = block·k + yz)
+    uvec4 sparse;
+    uvec4 flags;  // x: kCloudFlag* bits
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CloudUniforms) == 2 * 64 + 20 * 16, "CloudUniforms must match std140");
+static_assert(sizeof(CloudUniforms) == 2 * 64 + 21 * 16, "CloudUniforms must match std140");
 }  // namespace postfx::gpu
 #endif
 

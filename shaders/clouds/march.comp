@@ -1,6 +1,7 @@
 #version 450
 // The clouds' march (docs/effects/clouds.md, "March" and "Composite"): one invocation per pixel of the
-// march (the color's at resolution scale 1).
+// march (the color's at resolution scale 1), or with a sparse update (cl.sparse.x = k > 1) per k×k block,
+// marching the block's texel cl.sparse.yz.
 // The view ray's part inside the shape and before the geometry (and max distance) is split into `steps`
 // equal steps whatever its length; each sample's extinction σt comes from the density field, its light
 // from lighting.glsl, and each step is integrated in closed form (T·S·(1 - e^{-σt·Δ})/σt, in which the
@@ -60,7 +61,7 @@ layout(binding = kCloudBindingMultiScattering) uniform sampler3D multiScattering
 #include "common/integrate.glsl"
 
 void main() {
-    uvec2 texel = gl_GlobalInvocationID.xy;
+    uvec2 texel = gl_GlobalInvocationID.xy * cl.sparse.x + cl.sparse.yz;
     if (any(greaterThanEqual(texel, cl.marchExtent.xy))) return;
     CloudRay ray = cloudTexelRay(texel);
     vec3 d = ray.dir;
@@ -76,8 +77,11 @@ void main() {
     float weightSum = 0.0;
     if (seg.y > seg.x) {
         float dt = (seg.y - seg.x) / float(cl.counts.x);
+        // A sparse update marches a texel every k² frames: its own consecutive jitters, not every k²-th
+        // (IGN's shift repeats over 64 frames: with k = 4 a texel would see 4 of them).
+        uint jitterFrame = cl.extent.z / (cl.sparse.x * cl.sparse.x);
         float offset =
-            (cl.flags.x & kCloudFlagJitter) != 0u ? interleavedGradientNoise(texel, cl.extent.z) : 0.5;
+            (cl.flags.x & kCloudFlagJitter) != 0u ? interleavedGradientNoise(texel, jitterFrame) : 0.5;
         float albedo = cl.phase.w;
         for (uint i = 0u; i < cl.counts.x; ++i) {
             float t = seg.x + (float(i) + offset) * dt;

@@ -16,12 +16,18 @@
 //   4. The history is clamped to the min/max box of this frame's 3×3 neighbourhood (Karis 2014).
 //   5. result = history + w·(current - history), w = cameraDelta.w (a running mean after a reset, then
 //      the blend weight); without history, the current value.
+// Sparse update (cl.sparse.x = k > 1): the march updated one texel of each k×k block (cl.sparse.yz); the
+// history is not clamped (step 4: a box of updated texels k apart is too coarse), and the blend weight is the
+// texel's own running mean after a reset (postfx/src/clouds/clouds_effect.cpp). A texel the march
+// skipped keeps its reprojected history; without history it takes the bilinear mix of the updated texels
+// around it. Its reprojection distance is that of the updated texels around it that saw its surface (else
+// where its own ray ends), its surface its own; both are written into this frame's distances for the next
+// frame (the march wrote the updated texels').
 // The alpha channel accumulates the optical depth τ = -ln T, not T: each frame's jittered march gives an
 // unbiased τ, and e^{-mean τ} converges to the true T, where the mean of e^{-τ} would be too bright by
-// Jensen's inequality (the sun's disk through a thin cloud at sunset: +11% with 64 steps on the H100).
-// The upsample takes e^{-τ} of each texel (kCloudFlagOpticalDepthHistory).
-// The history is RGBA32F whatever the color format (in half, small updates would be lost).
-// Variant COLOR_RGBA32F: the march's image is RGBA32F.
+// Jensen's inequality (the sun's disk through a thin cloud at sunset: +11% with 64 steps on the H100). The
+// upsample takes e^{-τ} of each texel (kCloudFlagOpticalDepthHistory). The history is RGBA32F whatever the
+// color format (in half, small updates would be lost). Variant COLOR_RGBA32F: the march's image is RGBA32F.
 #extension GL_GOOGLE_include_directive : require
 
 #include "clouds/clouds_shared.h"
@@ -32,7 +38,9 @@ layout(binding = kCloudBindingUniforms, std140) uniform Uniforms {
     CloudUniforms cl;
 };
 #include "clouds/images.glsl"
-layout(binding = kCloudBindingDistance, r32ui) uniform restrict readonly uimage2D distanceCurrent;
+// Read at the updated texels, written at the skipped ones (a sparse update).
+layout(binding = kCloudBindingDistance, r32ui) uniform restrict uimage2D distanceCurrent;
+layout(binding = kCloudBindingDepth) uniform sampler2D depthTexture;
 layout(binding = kCloudBindingHistoryIn, rgba32f) uniform restrict readonly image2D historyIn;
 layout(binding = kCloudBindingHistoryOut, rgba32f) uniform restrict writeonly image2D historyOut;
 layout(binding = kCloudBindingDistanceIn, r32ui) uniform restrict readonly uimage2D distanceIn;
@@ -41,6 +49,7 @@ layout(binding = kCloudBindingTemporal, std140) uniform Temporal {
 };
 #include "common/history_rescale.glsl"
 #include "clouds/distances.glsl"
+#include "clouds/ray.glsl"
 
 bool finite(vec4 v) {
     return !any(isnan(v)) && !any(isinf(v));
@@ -111,21 +120,30 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvTexel, float expectedSur
     return true;
 }
 
+// The texel the march updated in block `block` of the sparse grid, the block clamped to those whose
+// updated texel lies inside the image (every block's, with a full update).
+ivec2 updatedTexel(ivec2 block) {
+    ivec2 k = ivec2(cl.sparse.x), offset = ivec2(cl.sparse.yz);
+    ivec2 last = (ivec2(cl.marchExtent.xy) - 1 - offset) / k;
+    return clamp(block, ivec2(0), last) * k + offset;
+}
+
 void main() {
     uvec2 texel = gl_GlobalInvocationID.xy;
     if (any(greaterThanEqual(texel, cl.marchExtent.xy))) return;
-    ivec2 size = ivec2(cl.marchExtent.xy);
-    vec4 current = withOpticalDepth(imageLoad(scatterImage, ivec2(texel)));
-    vec2 distances = unpackCloudDistances(imageLoad(distanceCurrent, ivec2(texel)).r);
+    // Where the texel lies in the grid of updated texels: between blocks b0 and b0 + 1 by f.
+    vec2 grid = (vec2(texel) - vec2(cl.sparse.yz)) / float(cl.sparse.x);
+    ivec2 b0 = ivec2(floor(grid)), nearest = ivec2(round(grid));
+    vec2 f = grid - vec2(b0);
+    bool updated = all(equal(texel % cl.sparse.x, cl.sparse.yz));
 
-    // The 3×3 neighbourhood's min/max box clamps the history.
-    vec4 lo = current, hi = current;
+    // The 3×3 updated texels' min/max box clamps the history.
+    vec4 lo = vec4(1e30), hi = vec4(-1e30);
     vec4 sum = vec4(0.0), sumSquares = vec4(0.0);
     float count = 0.0;
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
-            vec4 n = withOpticalDepth(
-                imageLoad(scatterImage, clamp(ivec2(texel) + ivec2(x, y), ivec2(0), size - 1)));
+            vec4 n = withOpticalDepth(imageLoad(scatterImage, updatedTexel(nearest + ivec2(x, y))));
             if (finite(n)) {
                 lo = min(lo, n);
                 hi = max(hi, n);
@@ -134,22 +152,60 @@ void main() {
                 count += 1.0;
             }
         }
-    // Variance clipping (Salvi 2016): the box mean ± γ·σ, inside the min/max box.
+    // Variance clipping (Salvi 2016): the box mean ± γ·σ, inside the min/max box (none finite: 0).
     vec4 mean = sum / max(count, 1.0);
     vec4 sigma = sqrt(max(sumSquares / max(count, 1.0) - mean * mean, vec4(0.0)));
-    lo = max(lo, mean - kCloudTemporalClipGamma * sigma);
-    hi = min(hi, mean + kCloudTemporalClipGamma * sigma);
+    lo = count > 0.0 ? max(lo, mean - kCloudTemporalClipGamma * sigma) : vec4(0.0);
+    hi = count > 0.0 ? min(hi, mean + kCloudTemporalClipGamma * sigma) : vec4(0.0);
+
+    vec4 current;
+    vec2 distances;
+    vec3 dir;
+    if (updated) {
+        current = withOpticalDepth(imageLoad(scatterImage, ivec2(texel)));
+        distances = unpackCloudDistances(imageLoad(distanceCurrent, ivec2(texel)).r);
+        dir = rayDirection(texel);
+    } else {
+        // Skipped: the bilinear mix of the updated texels around it, and their reprojection distance
+        // where they saw its surface.
+        CloudRay ray = cloudTexelRay(texel);
+        dir = ray.dir;
+        current = vec4(0.0);
+        float weight = 0.0, reprojection = 0.0, matched = 0.0;
+        for (int k = 0; k < 4; ++k) {
+            ivec2 o = ivec2(k & 1, k >> 1);
+            ivec2 q = updatedTexel(b0 + o);
+            float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+            vec4 n = withOpticalDepth(imageLoad(scatterImage, q));
+            if (finite(n)) {
+                current += w * n;
+                weight += w;
+            }
+            vec2 d = unpackCloudDistances(imageLoad(distanceCurrent, q).r);
+            if (d.x >= 0.0 && sameSurface(d.y, ray.surface)) {
+                reprojection += (w + 1e-3) * d.x;
+                matched += w + 1e-3;
+            }
+        }
+        current = weight > 0.0 ? current / weight : mean;
+        distances = vec2(matched > 0.0 ? reprojection / matched : ray.far, ray.surface);
+        if (isnan(ray.surface)) distances.x = -1.0;
+        imageStore(distanceCurrent, ivec2(texel), uvec4(packCloudDistances(distances.x, distances.y)));
+    }
 
     vec4 result = current;
     if (temporal.state.x != 0u && finite(current) && distances.x >= 0.0) {
-        vec3 dir = rayDirection(texel);
         vec3 point = dir * distances.x - cl.windDelta.xyz;
         float expectedSurface =
             isinf(distances.y) ? distances.y : length(dir * distances.y + temporal.cameraDelta.xyz);
         vec4 history;
         if (reprojectedHistory(point, texel, (vec2(texel) + 0.5) / vec2(cl.marchExtent.xy), expectedSurface,
                                history))
-            result = mix(clamp(history, lo, hi), current, temporal.cameraDelta.w);
+            // A sparse update's box (updated texels k apart) is too coarse to clamp by: its history is
+            // kept as reprojected (surfaces checked), as a skipped texel's.
+            result = updated ? mix(cl.sparse.x == 1u ? clamp(history, lo, hi) : history, current,
+                                   temporal.cameraDelta.w)
+                             : history;
     }
     imageStore(historyOut, ivec2(texel), result);
 }

@@ -190,5 +190,40 @@ TEST_F(CloudsPlanTest, SwitchingTheMarchsCombinationsKeepsAtMostFourPipelines) {
     EXPECT_EQ(graph.heldPipelines("clouds.march"), 4u);
 }
 
+// The sparse update (update_block): a frame with history marches one texel of each block (a quarter or a
+// sixteenth of the march's groups) and its temporal pass reads the depth (the skipped texels' surfaces); the
+// first frame and a camera cut march every texel. 64×32 pixels: a 32×16 march at half resolution.
+TEST_F(CloudsPlanTest, SparseUpdateMarchesOneTexelPerBlock) {
+    im.width = 64;
+    im.height = 32;
+    im.color.assign(64 * 32 * 4, 0.0f);
+    im.depth.assign(64 * 32, 0.0f);
+    frame.clouds.castShadows = false;
+    auto marchGroups = [&]() {
+        const postfx::PlannedPass* march = last.pass("clouds.march");
+        return march ? std::vector<uint32_t>{march->groups[0], march->groups[1]} : std::vector<uint32_t>{};
+    };
+    auto temporalReadsDepth = [&]() {
+        const postfx::PlannedPass* t = last.pass("clouds.temporal");
+        return t && std::find(t->reads.begin(), t->reads.end(), "host.depth") != t->reads.end();
+    };
+    for (uint32_t block : {1u, 2u, 4u}) {
+        frame.clouds.updateBlock = block;
+        frame.cameraCut = true;
+        planAndRun();
+        EXPECT_EQ(marchGroups(), (std::vector<uint32_t>{4, 2})) << "update_block " << block << ", a cut";
+        EXPECT_FALSE(temporalReadsDepth()) << "update_block " << block << ", a cut";
+        frame.cameraCut = false;
+        planAndRun();
+        const uint32_t x = (32 / block + 7) / 8, y = (16 / block + 7) / 8;
+        EXPECT_EQ(marchGroups(), (std::vector<uint32_t>{x, y})) << "update_block " << block;
+        EXPECT_EQ(temporalReadsDepth(), block > 1) << "update_block " << block;
+    }
+    frame.clouds.temporal.enabled = false;  // without temporal the block is not used: every texel
+    frame.clouds.updateBlock = 4;
+    planAndRun();
+    EXPECT_EQ(marchGroups(), (std::vector<uint32_t>{4, 2}));
+}
+
 }  // namespace
 }  // namespace test

@@ -184,6 +184,12 @@ struct CloudSettings {
     // Temporal accumulation of the march's (L, T), reprojected at the clouds' mean distance and moved by
     // the wind (docs/temporal.md): on by default for the clouds; blend weight in (0, 1].
     TemporalSettings temporal{true, 0.1f};
+    // Sparse update, with temporal on: each frame the march updates one texel of every updateBlock ×
+    // updateBlock block of its image (in Bayer order, so each is updated once in updateBlock² frames)
+    // and the others keep their reprojected history (docs/effects/clouds.md, "Sparse update") [texels];
+    // 1, 2 or 4. 1 marches every texel every frame. A frame without history (the first, a camera cut or
+    // a reset) marches every texel.
+    uint32_t updateBlock = 1;
     // Cast shadows: the shadow map (clouds.shadow_map) dims the sun in both fogs and, through
     // cloudShadowTransform, on the host's surfaces.
     bool castShadows = true;

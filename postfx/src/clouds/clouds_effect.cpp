@@ -16,6 +16,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace postfx::clouds {
@@ -42,7 +43,7 @@ constexpr core::Binding kTemporalBindings[] = {
     {gpu::kCloudBindingUniforms, kUniform},   {gpu::kCloudBindingScatter, kStorage},
     {gpu::kCloudBindingDistance, kStorage},   {gpu::kCloudBindingHistoryIn, kStorage},
     {gpu::kCloudBindingHistoryOut, kStorage}, {gpu::kCloudBindingDistanceIn, kStorage},
-    {gpu::kCloudBindingTemporal, kUniform}};
+    {gpu::kCloudBindingTemporal, kUniform},   {gpu::kCloudBindingDepth, kSampled}};
 constexpr core::Binding kUpsampleBindings[] = {{gpu::kCloudBindingUniforms, kUniform},
                                                {gpu::kCloudBindingColorIn, kStorage},
                                                {gpu::kCloudBindingColorOut, kStorage},
@@ -80,6 +81,17 @@ const core::ComputePipelineDesc kBaseNoisePass{"clouds.base_noise", spirv::commo
                                                kNoiseBindings, sizeof(gpu::NoisePush)};
 const core::ComputePipelineDesc kDetailNoisePass{"clouds.detail_noise", spirv::common_noise_generate_comp,
                                                  kNoiseBindings, sizeof(gpu::NoisePush)};
+
+// The texel of each block × block block the march updates in frame `frameIndex` (block 1, 2 or 4): the
+// block's texels in the order of the Bayer matrix, so that consecutive frames update texels far apart.
+glm::uvec2 sparseOffset(uint32_t block, uint64_t frameIndex) {
+    static constexpr uint8_t kBayer2[4] = {0, 2, 3, 1};  // row-major: the frame (mod 4) of each texel
+    static constexpr uint8_t kBayer4[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
+    const uint32_t texels = block * block, n = uint32_t(frameIndex % texels);
+    for (uint32_t i = 0; i < texels && block > 1; ++i)
+        if ((block == 2 ? kBayer2[i] : kBayer4[i]) == n) return {i % block, i / block};
+    return {0u, 0u};
+}
 
 uint32_t groupsFor(uint32_t size) {
     return (size + gpu::kCloudGroupSize - 1) / gpu::kCloudGroupSize;
@@ -204,6 +216,7 @@ gpu::CloudUniforms buildUniforms(const FrameInfo& frame, const DepthConvention& 
         glm::uvec4(frame.color.extent.width, frame.color.extent.height, uint32_t(frame.frameIndex), 0u);
     u.marchExtent = glm::uvec4(
         marchExtent(frame.color.extent.width, frame.color.extent.height, s.resolutionScale), 0u, 0u);
+    u.sparse = glm::uvec4(1u, 0u, 0u, 0u);  // every texel; declare() sets a sparse update
     u.flags.x = (s.noise.enabled ? gpu::kCloudFlagNoise : 0u) | (curved ? gpu::kCloudFlagCurved : 0u) |
                 (s.shape == CloudShape::Box ? gpu::kCloudFlagBox : 0u) |
                 (depth.reversedZ ? gpu::kCloudFlagDepthReversedZ : 0u) |
@@ -327,6 +340,11 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
     }
     const core::DepthInput depthInput = b.depthInput();
     gpu::CloudUniforms u = buildUniforms(frame, b.depthConvention(), windDelta);
+    // A sparse update needs history (a frame without it marches every texel) and a block inside the image.
+    const uint32_t block = temporal && t.historyValid && march.x >= s.updateBlock && march.y >= s.updateBlock
+                               ? s.updateBlock
+                               : 1u;
+    u.sparse = glm::uvec4(block, sparseOffset(block, frame.frameIndex), 0u);
     if (depthInput.distance) u.flags.x |= gpu::kCloudFlagViewDistance;
     const core::BufferRef uniforms = b.uniforms(kUniforms, &u, sizeof u);
 
@@ -377,7 +395,8 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         }
     }
 
-    b.pass(kMarch[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
+    b.pass(kMarch[rgba32], groupsFor((march.x + block - 1) / block), groupsFor((march.y + block - 1) / block),
+           1)
         .constants(marchConstants(withAtmosphere, scatter, temporal || lookup))
         .bind(gpu::kCloudBindingUniforms, uniforms)
         .bind(gpu::kCloudBindingDepth, depthInput.image, Use::Sampled)
@@ -442,12 +461,22 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         }
         // The march stores this frame's distances in the slot written this frame (the next one's "in").
         b.bind(gpu::kCloudBindingDistance, distance[t.writeSlot], Use::StorageWrite);
-        const gpu::TemporalUniforms tu = core::temporalUniforms(t);
+        gpu::TemporalUniforms tu = core::temporalUniforms(t);
+        // An updated texel of a sparse update gets a sample every block² frames: the running mean of its
+        // own samples (the full march after the reset and about n/block² since), 1/(1 + n/block²), until
+        // that falls to the blend weight, per sample (1 - (1 - w)^block per sample measured no better on a
+        // panning view, 7.7% against 7.9%, and noisier on a still one, 3.2% against 2.3% with block 4).
+        if (block > 1)
+            tu.cameraDelta.w =
+                std::max(s.temporal.blendWeight,
+                         float(1.0 / (1.0 + double(t.framesSinceReset) / double(block * block))));
         const core::BufferRef temporalUniforms = b.uniforms(kTemporalUniforms, &tu, sizeof tu);
         b.pass(kTemporal[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
             .bind(gpu::kCloudBindingUniforms, uniforms)
             .bind(gpu::kCloudBindingScatter, scatterImage, Use::StorageRead)
-            .bind(gpu::kCloudBindingDistance, distance[t.writeSlot], Use::StorageRead)
+            .bind(gpu::kCloudBindingDepth, depthInput.image, block > 1 ? Use::Sampled : Use::BoundOnly)
+            .bind(gpu::kCloudBindingDistance, distance[t.writeSlot],
+                  block > 1 ? Use::StorageReadWrite : Use::StorageRead)
             .bind(gpu::kCloudBindingHistoryIn, history[t.readSlot], Use::StorageRead)
             .bind(gpu::kCloudBindingDistanceIn, distance[t.readSlot], Use::StorageRead)
             .bind(gpu::kCloudBindingTemporal, temporalUniforms)

@@ -49,6 +49,8 @@ Status validateSettings(const CloudSettings& s) {
                        ") to conserve energy (Wrenninge 2015)");
     if (s.coverageMap.texture)
         if (Status r = sampledLayout("coverageMap.layout", s.coverageMap.layout); !r) return r;
+    if (s.temporal.enabled && s.updateBlock != 1 && s.updateBlock != 2 && s.updateBlock != kMaxUpdateBlock)
+        return bad("updateBlock", std::to_string(s.updateBlock) + " is not 1, 2 or 4");
     const CloudNoiseSettings& n = s.noise;
     if ((n.hostBaseTexture || n.hostDetailTexture) && n.enabled)
         if (Status r = sampledLayout("noise.hostTextureLayout", n.hostTextureLayout); !r) return r;
@@ -86,6 +88,7 @@ CloudSettings applyCloudQuality(const CloudSettings& settings, CloudQuality qual
             s.lightSteps = p.lightSteps;
             s.resolutionScale = p.resolutionScale;
             s.temporal.enabled = p.temporal;
+            s.updateBlock = p.updateBlock;
         }
     return s;
 }

@@ -15,6 +15,7 @@ inline constexpr double kMaxBoxHalfSize = 1e7;               // [m]
 inline constexpr double kMaxWind = 1e3;                      // [m/s]
 inline constexpr double kMinTiling = 1.0, kMaxTiling = 1e7;  // [m]
 inline constexpr uint32_t kMaxSteps = 1024, kMaxLightSteps = 64, kMaxOctaves = 8;
+inline constexpr uint32_t kMaxUpdateBlock = 4;  // CloudSettings::updateBlock: 1, 2 or this
 inline constexpr uint32_t kMinBaseSize = 16, kMaxBaseSize = 256, kMinDetailSize = 8, kMaxDetailSize = 128;
 inline constexpr float kMaxAnisotropy = 0.999f;
 inline constexpr float kMinResolutionScale = 0.25f;
@@ -27,6 +28,7 @@ struct QualityPreset {
     uint32_t steps, lightSteps;
     float resolutionScale;
     bool temporal;
+    uint32_t updateBlock;
     // Its converged relative RMSE against the reference, the mean over the benchmark's views
     // (ground_noon, ground_sunset, above) of the H100 run's preset= rows
     // (docs/accuracy-cost/clouds/results.csv; tests/frame/test_frame_fronts.cpp holds them equal): what
@@ -34,10 +36,10 @@ struct QualityPreset {
     double error;
 };
 inline constexpr QualityPreset kQualityPresets[] = {
-    {CloudQuality::Low, 32, 4, 0.25f, true, 0.06593},
-    {CloudQuality::Medium, 80, 8, 0.5f, true, 0.006867},
-    {CloudQuality::High, 128, 12, 0.5f, true, 0.007172},
-    {CloudQuality::Ultra, 128, 12, 1.0f, true, 0.004081},
+    {CloudQuality::Low, 32, 4, 0.25f, true, 1, 0.06593},
+    {CloudQuality::Medium, 80, 8, 0.5f, true, 1, 0.006867},
+    {CloudQuality::High, 128, 12, 0.5f, true, 1, 0.007172},
+    {CloudQuality::Ultra, 128, 12, 1.0f, true, 1, 0.004081},
 };
 
 Status validateSettings(const CloudSettings& settings);

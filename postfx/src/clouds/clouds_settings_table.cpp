@@ -68,7 +68,7 @@ constexpr F ui(F f, double lo, double hi, bool log = false) {
     f.logScale = log;
     return f;
 }
-constexpr std::array<SettingField, 48> cloudFields() {
+constexpr std::array<SettingField, 49> cloudFields() {
     const CloudSettings s{};
     const CloudBox& b = s.box;
     const CloudMultipleScattering& m = s.multipleScattering;
@@ -196,7 +196,8 @@ constexpr std::array<SettingField, 48> cloudFields() {
          .member = "quality",
          .kind = K::Enum,
          .defaults = {double(s.quality)},
-         .meaning = "a preset replaces `steps`, `lightSteps`, `resolutionScale`, `temporal.enabled`",
+         .meaning =
+             "a preset replaces `steps`, `lightSteps`, `resolutionScale`, `temporal.enabled`, `updateBlock`",
          .choices = kQualityChoices,
          .typeName = "CloudQuality",
          .address = POSTFX_SETTING_ADDRESS(S, quality)},
@@ -224,6 +225,18 @@ constexpr std::array<SettingField, 48> cloudFields() {
                 POSTFX_SETTING_ADDRESS(S, temporal.blendWeight),
                 "weight of the current frame in the accumulation", true),
            0.01, 1.0, true),
+        // 1, 2 or 4 (a power of two): checked beside the table.
+        {.key = "update_block",
+         .member = "updateBlock",
+         .kind = K::Uint,
+         .unit = "texels",
+         .min = 1.0,
+         .max = kMaxUpdateBlock,
+         .defaults = {double(s.updateBlock)},
+         .activeIf = "temporal.enabled",
+         .customCheck = true,
+         .meaning = "the march updates one texel of each block this wide per frame (1, 2 or 4)",
+         .address = POSTFX_SETTING_ADDRESS(S, updateBlock)},
         {.key = "cast_shadows",
          .member = "castShadows",
          .kind = K::Bool,
@@ -343,7 +356,8 @@ constexpr auto kCloudTable = common::usedOnlyWith(
             {"multipleScattering.octaves", "multipleScattering.attenuation",
              "multipleScattering.contribution", "multipleScattering.eccentricity"},
             "multipleScattering.model", kOctavesModel),
-        {"steps", "lightSteps", "resolutionScale", "temporal.enabled"}, "quality", kCustomQuality),
+        {"steps", "lightSteps", "resolutionScale", "temporal.enabled", "updateBlock"}, "quality",
+        kCustomQuality),
     {"autoBudgetMs"}, "quality", kAutoQuality);
 
 }  // namespace
