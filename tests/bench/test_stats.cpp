@@ -1,5 +1,7 @@
 // bench/stats.h on made-up images and calibration measurements: the tonemapped relative RMSE (one bright
-// pixel cannot dominate it; the exposure cancels), the calibration's drift and spread, repeated settings.
+// pixel cannot dominate it; the exposure cancels), the calibration's drift and spread, and the report's
+// calibration summary.
+#include "report.h"
 #include "stats.h"
 
 #include <gtest/gtest.h>
@@ -87,7 +89,7 @@ TEST(BenchStats, CalibrationDriftIsTheLargestChange) {
     EXPECT_TRUE(std::isnan(bench::calibrationDrift(1.0, NAN, 1.0)));
 }
 
-TEST(BenchStats, CalibrationSpreadIsOverTheFiniteMeasurements) {
+TEST(BenchStats, CalibrationSpreadAndSummary) {
     bench::CalibrationLog log;
     log.enabled = true;
     log.iterations = 64;
@@ -105,6 +107,37 @@ TEST(BenchStats, CalibrationSpreadIsOverTheFiniteMeasurements) {
     EXPECT_DOUBLE_EQ(s.median, 2.0);
     EXPECT_DOUBLE_EQ(s.max, 2.2);
     EXPECT_DOUBLE_EQ(s.ratio, 2.2 / 1.9);
+    const std::string text = bench::calibrationSummary(log);
+    EXPECT_EQ(text.rfind("reference 2 ms", 0), 0u) << text;
+    EXPECT_NE(text.find("5 measurements min 1.9 / median 2 / max 2.2 ms, max/min 1.158"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("re-measured 1 of 2 rows (3 more attempts), 1 flagged"), std::string::npos) << text;
+    log.enabled = false;
+    EXPECT_EQ(bench::calibrationSummary(log).rfind("not run", 0), 0u);
+}
+
+TEST(BenchStats, CalibrationCellsFollowTheColumns) {
+    bench::RowCalibration c;
+    c.beforeMs = 2.0;
+    c.afterMs = 2.2;
+    c.drift = 0.1;
+    c.remeasured = 3;
+    c.flagged = true;
+    std::vector<std::string> row;
+    bench::appendCalibrationCells(row, c);
+    ASSERT_EQ(row.size(), bench::calibrationColumns().size());
+    EXPECT_EQ(row, (std::vector<std::string>{"2.1", "2", "2.2", "0.1", "3", "1"}));
+    EXPECT_EQ(bench::remeasuredText(c), "3!");
+    EXPECT_EQ(bench::calibrationMsText(bench::RowCalibration{}), "–");
+    bench::Timing timing;
+    bench::RunInfo info;
+    row.clear();
+    bench::appendTimingCells(row, info, timing);
+    EXPECT_EQ(row.size(), bench::timingColumns().size());
+    row.clear();
+    std::array<bench::ErrorStats, 3> errors{};
+    bench::appendErrorCells(row, errors);
+    EXPECT_EQ(row.size(), bench::errorColumns().size());
 }
 
 TEST(BenchStats, RepeatSpreadIsTheLargestOverSettingsMeasuredTwice) {
@@ -122,6 +155,7 @@ TEST(BenchStats, RepeatSpreadIsTheLargestOverSettingsMeasuredTwice) {
     EXPECT_EQ(r.settings, 2u);
     EXPECT_NEAR(r.spread, 0.05, 1e-12);
     EXPECT_NE(r.worst.find("steps=64"), std::string::npos) << r.worst;
+    EXPECT_EQ(bench::repeatSpreadText({results[4]}), "");
 }
 
 }  // namespace
