@@ -79,33 +79,15 @@ std::vector<AtmosphereTarget> atmosphereTargets(const std::vector<AtmosphereRow>
 
 const std::vector<std::string>& atmosphereCsvColumns() {
     static const std::vector<std::string> columns = [] {
-        std::vector<std::string> c = {"view", "situation", "knob", "value"};
-        c.insert(c.end(), atmosphereKnobs().begin(), atmosphereKnobs().end());  // every knob's value
-        c.insert(c.end(), {"width",
-                           "height",
-                           "warmup",
-                           "frames",
-                           "gpu_ms_median",
-                           "gpu_ms_p10",
-                           "gpu_ms_p90",
-                           "gpu_ms_min",
-                           "gpu_ms_max",
-                           "transmittance_ms",
-                           "multiple_scattering_ms",
-                           "scattering_orders_ms",
-                           "sky_view_ms",
-                           "aerial_perspective_ms",
-                           "apply_ms",
-                           "pass_frames",
-                           "sky_pixels",
-                           "sky_rel_rmse",
-                           "sky_max_abs",
-                           "geometry_pixels",
-                           "geometry_rel_rmse",
-                           "geometry_max_abs",
-                           "all_rel_rmse",
-                           "non_finite"});
-        return c;
+        std::vector<std::string> knobs = {"view", "situation", "knob", "value"};
+        knobs.insert(knobs.end(), atmosphereKnobs().begin(), atmosphereKnobs().end());  // every knob's value
+        return joinColumns(
+            {knobs,
+             timingColumns(),
+             {"transmittance_ms", "multiple_scattering_ms", "scattering_orders_ms", "sky_view_ms",
+              "aerial_perspective_ms", "apply_ms", "pass_frames", "sky_pixels", "sky_rel_rmse", "sky_max_abs",
+              "geometry_pixels", "geometry_rel_rmse", "geometry_max_abs", "all_rel_rmse", "sky_tm_rel_rmse",
+              "geometry_tm_rel_rmse", "all_tm_rel_rmse", "non_finite"}});
     }();
     return columns;
 }
@@ -138,6 +120,9 @@ bool writeAtmosphereCsv(const std::string& path, const AtmosphereInfo& info,
         row.push_back(formatNumber(r.geometry.relativeRmse, 6));
         row.push_back(formatNumber(r.geometry.maxAbsError, 6));
         row.push_back(formatNumber(r.all.relativeRmse, 6));
+        row.push_back(formatNumber(r.sky.tonemappedRmse, 6));
+        row.push_back(formatNumber(r.geometry.tonemappedRmse, 6));
+        row.push_back(formatNumber(r.all.tonemappedRmse, 6));
         row.push_back(std::isfinite(r.all.relativeRmse) ? std::to_string(r.all.nonFinite) : "");
         writeCsvRow(out, row);
     }
@@ -162,7 +147,8 @@ bool writeAtmosphereMarkdown(const std::string& path, const AtmosphereInfo& info
         << "| GPU time | " << warmupText(run) << ", then the median of " << run.frames
         << " frames (p10–p90), Vulkan timestamps around each pass; a row's time is the sum of the "
            "atmosphere.* "
-           "passes its frames recorded |\n\n";
+           "passes its frames recorded |\n"
+        << "| calibration | " << calibrationSummary(run.calibration) << " |\n\n";
     if (!info.referenceSeconds.empty()) {
         out << "CPU references:";
         for (size_t i = 0; i < info.referenceSeconds.size(); ++i)

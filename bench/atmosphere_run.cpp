@@ -144,7 +144,8 @@ void compare(const std::vector<float>& image, const ViewReference& ref, uint32_t
         const uint32_t n = uint32_t(a[set].size() / 4);
         if (n == 0) return e;
         const test::ImageStats s = test::compareImages(a[set], b[set], n, 1, 0.01, 1e-6);
-        return ErrorStats{s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
+        return ErrorStats{s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite,
+                          tonemappedRmse(a[set], b[set])};
     };
     row.sky = stats(0);
     row.geometry = stats(1);
@@ -175,6 +176,7 @@ int runAtmosphere(const AtmosphereRunArgs& args, const std::string& commandLine,
     if (!gpu.create(args.runner, error)) return fail(error);
     AtmosphereInfo info;
     fillRunHeader(info.run, *gpu.host, args.runner, args.errorStride, args.referenceSteps, date, commandLine);
+    if (!gpu.calibrate(info.run.calibration, error)) return fail(error);
     info.psiDirections = args.psiDirections;
     info.psiSteps = args.psiSteps;
 
@@ -242,8 +244,9 @@ int runAtmosphere(const AtmosphereRunArgs& args, const std::string& commandLine,
 
     std::printf("postfx-bench --atmosphere: %s, %ux%u, error stride %u, reference %u steps\n",
                 info.run.device.c_str(), W, H, args.errorStride, args.referenceSteps);
-    std::printf("%-14s %-7s %-26s %9s %9s %9s %9s %9s %9s %9s %9s\n", "view", "frame", "setting", "GPU ms",
-                "trans", "ms", "sky_view", "ap", "apply", "sky RMSE", "geo RMSE");
+    std::printf("%-14s %-7s %-26s %9s %9s %9s %9s %9s %9s %9s %9s %9s %9s %8s %3s\n", "view", "frame",
+                "setting", "GPU ms", "trans", "ms", "orders", "sky_view", "ap", "apply", "sky RMSE",
+                "geo RMSE", "sky TM", "calib ms", "re");
     for (const AtmosphereRow& r : rows) {
         const std::string setting =
             r.point.knob == "default" ? "defaults" : r.point.knob + "=" + r.point.value;
@@ -251,10 +254,13 @@ int runAtmosphere(const AtmosphereRunArgs& args, const std::string& commandLine,
                     formatNumber(r.timing.median, 4).c_str());
         for (const char* pass : kAtmospherePasses)
             std::printf(" %9s", orDash(formatNumber(atmospherePassMs(r, pass), 3)).c_str());
-        std::printf(" %9s %9s\n", percent(r.sky.relativeRmse).c_str(),
-                    r.geometryPixels ? percent(r.geometry.relativeRmse).c_str() : "–");
+        std::printf(" %9s %9s %9s %8s %3s\n", percent(r.sky.relativeRmse).c_str(),
+                    r.geometryPixels ? percent(r.geometry.relativeRmse).c_str() : "–",
+                    percent(r.sky.tonemappedRmse).c_str(), calibrationMsText(r.timing.calibration).c_str(),
+                    remeasuredText(r.timing.calibration).c_str());
     }
     std::printf("%s", atmosphereSummary(info, rows).c_str());
+    std::printf("calibration: %s\n", calibrationSummary(info.run.calibration).c_str());
     std::printf("wrote %s, %s\n", csv.c_str(), md.c_str());
     if (!messages.empty()) {
         for (const std::string& m : messages)

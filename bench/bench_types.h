@@ -57,6 +57,21 @@ struct ErrorStats {
     double maxAbsError = NAN;   // largest |a-b| of any RGB channel [radiance]
     double fractionOff = NAN;   // fraction of pixels with a channel off by > 1% of the pixel's magnitude
     uint64_t nonFinite = 0;     // NaN/Inf channels in the GPU image
+    // Relative RMSE of the tonemapped images (bench/stats.h, tonemappedRmse): one pixel far brighter than
+    // the rest (the sun's disk) cannot dominate it as it does relativeRmse.
+    double tonemappedRmse = NAN;
+};
+
+// The calibration of one timed row (bench/calibration.h): the fixed calibration dispatch timed right
+// before and right after the row's timed frames, of the attempt kept.
+struct RowCalibration {
+    double beforeMs = NAN, afterMs = NAN;
+    // The largest relative change among after against before and each against the run's reference;
+    // NaN without timestamps or without calibration.
+    double drift = NAN;
+    uint32_t remeasured = 0;  // how many times the row was timed again because drift > the tolerance
+    bool flagged = false;     // kept with drift > the tolerance, its retries spent
+    double ms() const { return 0.5 * (beforeMs + afterMs); }
 };
 
 // GPU time of the method's passes per frame, over the measured frames [ms].
@@ -65,6 +80,23 @@ struct Timing {
     uint32_t frames = 0;  // frames measured
     // Median of each pass over the frames that recorded it, in recording order ("fog.raymarch").
     std::vector<std::pair<std::string, double>> passMedians;
+    RowCalibration calibration;
+};
+
+// The run's calibration (bench/calibration.h): its settings, the reference taken at the start after a
+// warm-up, every calibration measurement (the reference first, re-measured attempts included) and how many
+// rows were timed again.
+struct CalibrationLog {
+    bool enabled = false;  // false: not run (--no-calibration, or the queue has no timestamps)
+    uint32_t iterations = 0, groups = 0, repeats = 0;  // the dispatch's work; dispatches per measurement
+    double tolerance = 0.05;
+    uint32_t retries = 3;
+    double referenceMs = NAN;
+    std::vector<double> measurements;  // [ms]
+    uint32_t rows = 0;                 // timed rows bracketed
+    uint32_t remeasuredRows = 0;       // rows timed more than once
+    uint32_t remeasurements = 0;       // extra attempts over all rows
+    uint32_t flaggedRows = 0;          // rows kept out of tolerance
 };
 
 constexpr std::array<uint32_t, 3> kAveragedFrames = {1, 8, 16};
@@ -107,6 +139,7 @@ struct RunInfo {
     std::vector<PresetBudget> presetBudgets;  // --preset-budgets
     // CPU time of each reference: scene, noise size, seconds.
     std::vector<std::pair<std::string, double>> referenceSeconds;
+    CalibrationLog calibration;
 
     // --froxel (bench/froxel_report.h): the device's copy bandwidth measured by the run (bytes read and
     // written per second; Runner::copyBandwidth) by a compute pass and by vkCmdCopyBuffer, and the

@@ -80,47 +80,33 @@ std::vector<CloudsTarget> cloudsTargets(const std::vector<CloudsRow>& rows) {
 }
 
 const std::vector<std::string>& cloudsCsvColumns() {
-    static const std::vector<std::string> columns = {
-        "view",
-        "knob",
-        "value",
-        "steps",
-        "light_steps",
-        "resolution_scale",
-        "base_size",
-        "detail_size",
-        "temporal",
-        "width",
-        "height",
-        "warmup",
-        "frames",
-        "gpu_ms_median",
-        "gpu_ms_p10",
-        "gpu_ms_p90",
-        "gpu_ms_min",
-        "gpu_ms_max",
-        "base_noise_ms",
-        "detail_noise_ms",
-        "shadow_ms",
-        "march_ms",
-        "temporal_ms",
-        "upsample_ms",
-        "pass_frames",
-        "still_frames",
-        "still_rel_rmse",
-        "still_mean_rel_luminance",
-        "still_max_abs",
-        "motion_frames",
-        "motion_rel_rmse",
-        "motion_mean_rel_luminance",
-        "motion_max_abs",
-        "non_finite",
-        "model",
-        "truth_model_bias",
-        "truth_model_rel_rmse",
-        "truth_gpu_bias",
-        "truth_gpu_rel_rmse",
-    };
+    static const std::vector<std::string> columns =
+        joinColumns({{"view", "knob", "value", "steps", "light_steps", "resolution_scale", "base_size",
+                      "detail_size", "temporal"},
+                     timingColumns(),
+                     {"base_noise_ms",
+                      "detail_noise_ms",
+                      "shadow_ms",
+                      "march_ms",
+                      "temporal_ms",
+                      "upsample_ms",
+                      "pass_frames",
+                      "still_frames",
+                      "still_rel_rmse",
+                      "still_mean_rel_luminance",
+                      "still_max_abs",
+                      "still_tm_rel_rmse",
+                      "motion_frames",
+                      "motion_rel_rmse",
+                      "motion_mean_rel_luminance",
+                      "motion_max_abs",
+                      "motion_tm_rel_rmse",
+                      "non_finite",
+                      "model",
+                      "truth_model_bias",
+                      "truth_model_rel_rmse",
+                      "truth_gpu_bias",
+                      "truth_gpu_rel_rmse"}});
     return columns;
 }
 
@@ -153,6 +139,7 @@ bool writeCloudsCsv(const std::string& path, const CloudsInfo& info, const std::
             row.push_back(formatNumber(e->stats.relativeRmse, 6));
             row.push_back(formatNumber(e->meanRelativeLuminance, 6));
             row.push_back(formatNumber(e->stats.maxAbsError, 6));
+            row.push_back(formatNumber(e->stats.tonemappedRmse, 6));
         }
         row.push_back(std::to_string(r.still.stats.nonFinite + r.motion.stats.nonFinite));
         row.push_back(cloudsKnobValue(r.point.settings, "model"));
@@ -184,6 +171,7 @@ bool writeCloudsMarkdown(const std::string& path, const CloudsInfo& info, const 
         << "| GPU time | camera and sun still: " << warmupText(run) << ", then the median of " << run.frames
         << " frames (p10–p90), Vulkan timestamps around each pass; a row's time is the sum of the clouds.* "
            "passes its frames recorded (the atmosphere's passes are not counted) |\n"
+        << "| calibration | " << calibrationSummary(run.calibration) << " |\n"
         << "| error | relative RMSE over RGB and mean relative luminance error; still: the last of "
         << info.convergedFrames << " still frames with temporal on (1 frame without); motion: the last of "
         << info.motionFrames << " frames of the camera panning " << formatNumber(kCloudsPanDegPerFrame, 3)

@@ -119,7 +119,7 @@ CloudsError compare(const std::vector<float>& image, const std::vector<float>& r
         }
     const test::ImageStats s = test::compareImages(a, ref, w, h, 0.01, 1e-6);
     CloudsError e;
-    e.stats = ErrorStats{s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
+    e.stats = ErrorStats{s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite, tonemappedRmse(a, ref)};
     e.meanRelativeLuminance = relY / (double(w) * h);
     return e;
 }
@@ -228,6 +228,7 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
     if (!gpu.create(args.runner, error)) return fail(error);
     CloudsInfo info;
     fillRunHeader(info.run, *gpu.host, args.runner, args.errorStride, args.referenceSteps, date, commandLine);
+    if (!gpu.calibrate(info.run.calibration, error)) return fail(error);
     info.referenceLightSteps = args.referenceLightSteps;
     info.convergedFrames = args.convergedFrames;
     info.motionFrames = args.motionFrames;
@@ -369,8 +370,9 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
     std::printf("postfx-bench --clouds: %s, %ux%u, error stride %u, reference %u x %u steps\n",
                 info.run.device.c_str(), W, H, args.errorStride, args.referenceSteps,
                 args.referenceLightSteps);
-    std::printf("%-14s %-24s %9s %9s %9s %9s %9s %10s %10s\n", "view", "setting", "GPU ms", "shadow", "march",
-                "temporal", "upsample", "still RMSE", "moving");
+    std::printf("%-14s %-24s %9s %9s %9s %9s %9s %10s %10s %10s %8s %3s\n", "view", "setting", "GPU ms",
+                "shadow", "march", "temporal", "upsample", "still RMSE", "moving", "still TM", "calib ms",
+                "re");
     for (const CloudsRow& r : rows) {
         const std::string setting =
             r.point.knob == "default" ? "default" : r.point.knob + "=" + r.point.value;
@@ -378,10 +380,13 @@ int runClouds(const CloudsRunArgs& args, const std::string& commandLine, const s
                     orDash(formatNumber(r.timing.median, 4)).c_str());
         for (const char* pass : {"clouds.shadow", "clouds.march", "clouds.temporal", "clouds.upsample"})
             std::printf(" %9s", orDash(formatNumber(cloudsPassMs(r, pass), 3)).c_str());
-        std::printf(" %10s %10s\n", percent(r.still.stats.relativeRmse).c_str(),
-                    percent(r.motion.stats.relativeRmse).c_str());
+        std::printf(
+            " %10s %10s %10s %8s %3s\n", percent(r.still.stats.relativeRmse).c_str(),
+            percent(r.motion.stats.relativeRmse).c_str(), percent(r.still.stats.tonemappedRmse).c_str(),
+            calibrationMsText(r.timing.calibration).c_str(), remeasuredText(r.timing.calibration).c_str());
     }
     std::printf("%s", cloudsSummary(info, rows).c_str());
+    std::printf("calibration: %s\n", calibrationSummary(info.run.calibration).c_str());
     std::printf("wrote %s, %s\n", csv.c_str(), md.c_str());
     if (!messages.empty()) {
         for (const std::string& m : messages)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "bench_types.h"
+#include "calibration.h"
 #include "runner.h"
 #include "stats.h"
 
@@ -46,6 +47,7 @@ public:
         if (!host) return;
         const VkDevice device = host->device;
         vkDeviceWaitIdle(device);
+        calibration.reset();
         context.reset();
         for (VkFence f : fences)
             if (f) vkDestroyFence(device, f, nullptr);
@@ -108,6 +110,14 @@ public:
                                   staging, error);
     }
 
+    // Brackets every measure() from now on with the calibration (bench/calibration.h), recording into
+    // `log`; takes the run's reference first unless `log` has one.
+    bool calibrate(CalibrationLog& log, std::string& error) {
+        calibration = Calibration::create(*host, options.calibration, log, error);
+        idle = true;
+        return calibration && calibration->reference(std::max(options.warmupMs, options.coldWarmupMs), error);
+    }
+
     // Uploads a view's images (full size): colour RGBA, depth one float a pixel.
     bool upload(const std::vector<float>& rgba, const std::vector<float>& depthValues, std::string& error) {
         if (!waitAll(error)) return false;
@@ -144,7 +154,8 @@ public:
             error);
     }
 
-    // Times frames n = 0, 1, ... of frameAt (warm-up, then options.frames timed), two in flight.
+    // Times frames n = 0, 1, ... of frameAt (warm-up, then options.frames timed), two in flight,
+    // bracketed by the calibration and timed again from n = 0 while it drifts (Timing::calibration).
     // `include`: the passes counted (all when empty).
     bool measure(const std::function<postfx::FrameInfo(uint32_t)>& frameAt, Timing& timing,
                  std::vector<std::pair<std::string, uint32_t>>& passFrames, std::string& error,
@@ -191,25 +202,45 @@ public:
             f.active = false;
             return ok;
         };
-        const auto start = std::chrono::steady_clock::now();
-        const double warmupMs = idle ? std::max(options.warmupMs, options.coldWarmupMs) : options.warmupMs;
-        idle = false;
-        uint32_t warmupFrames = 0, timedFrames = 0;
-        for (uint32_t n = 0; timedFrames < options.frames; ++n) {
-            const bool timed =
-                timedFrames > 0 || (warmupFrames >= options.warmup && secondsSince(start) * 1e3 >= warmupMs);
-            ++(timed ? timedFrames : warmupFrames);
+        uint32_t n = 0;  // frameAt's frame
+        auto submitFrame = [&](bool timed) -> bool {
             const uint64_t frameIndex = nextFrame++;
             const size_t slot = frameIndex % kFramesInFlight;
-            if (!retire(slot) || !submit(slot, frameAt(n), frameIndex, false, error)) return false;
+            if (!retire(slot) || !submit(slot, frameAt(n++), frameIndex, false, error)) return false;
             inFlight[slot] = {true, timed, frameIndex};
-        }
-        for (uint64_t f = nextFrame - kFramesInFlight; f < nextFrame; ++f)
-            if (!retire(f % kFramesInFlight)) return false;
-        timing = summarize(totals, passes);
-        passFrames.clear();
-        for (const auto& [name, values] : passes)
-            passFrames.emplace_back(name, uint32_t(values.size()));
+            return true;
+        };
+        auto retireAll = [&]() -> bool {
+            for (uint64_t age = kFramesInFlight; age > 0; --age)  // oldest first
+                if (nextFrame >= age && !retire((nextFrame - age) % kFramesInFlight)) return false;
+            return true;
+        };
+        // One attempt: frames 0, 1, ... of frameAt, the calibration after the warm-up and after the timed
+        // frames (bench/calibration.h).
+        CalibratedRow calibrated(calibration.get());
+        double warmupMs = idle ? std::max(options.warmupMs, options.coldWarmupMs) : options.warmupMs;
+        idle = false;
+        do {
+            totals.clear();
+            passes.clear();
+            n = 0;
+            const auto start = std::chrono::steady_clock::now();
+            for (uint32_t warmupFrames = 0;
+                 warmupFrames < options.warmup || secondsSince(start) * 1e3 < warmupMs; ++warmupFrames)
+                if (!submitFrame(false)) return false;
+            if (!retireAll() || !calibrated.before(error)) return false;
+            for (uint32_t timedFrames = 0; timedFrames < options.frames; ++timedFrames)
+                if (!submitFrame(true)) return false;
+            if (!retireAll() || !calibrated.after(error)) return false;
+            if (calibrated.kept()) {
+                timing = summarize(totals, passes);
+                passFrames.clear();
+                for (const auto& [name, values] : passes)
+                    passFrames.emplace_back(name, uint32_t(values.size()));
+            }
+            warmupMs = options.warmupMs;
+        } while (calibrated.again());
+        timing.calibration = calibrated.finish();
         return true;
     }
 
@@ -251,6 +282,7 @@ public:
     }
 
     std::unique_ptr<demo::VulkanHost> host;
+    std::unique_ptr<Calibration> calibration;
     RunnerOptions options;
     bool idle = true;  // the GPU sat idle (a CPU reference): the next warm-up is coldWarmupMs
 

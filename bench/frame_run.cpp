@@ -1,6 +1,7 @@
 #include "frame_run.h"
 
 #include "progress.h"
+#include "report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 namespace bench {
 namespace {
@@ -36,13 +38,6 @@ std::string fixed(double v, int digits) {
     return b;
 }
 
-std::string percent(double v) {
-    if (!std::isfinite(v)) return "–";
-    char b[64];
-    std::snprintf(b, sizeof b, "%.3g%%", 100.0 * v);
-    return b;
-}
-
 postfx::FogQuality fogQuality(const std::string& preset) {
     if (preset == "budget") return postfx::FogQuality::Auto;
     if (preset == "low") return postfx::FogQuality::Low;
@@ -65,18 +60,33 @@ bool writeResults(const FrameRunArgs& args, const std::vector<Row>& rows, const 
     std::ofstream csv(args.out + "/results.csv");
     csv << "# postfx-bench --frame results; columns: docs/accuracy-cost/README.md (Whole frame)\n";
     csv << "# device: " << info.device << "\n# vulkan: " << info.vulkanApi << "\n# date: " << info.date
-        << "\n# command: " << info.commandLine << "\n";
-    csv << "width,height,fog,preset,gpu_ms_median,gpu_ms_p10,gpu_ms_p90";
+        << "\n# command: " << info.commandLine << "\n# calibration: " << calibrationSummary(info.calibration)
+        << "\n";
+    std::vector<std::string> header = {"width",         "height",     "fog",       "preset",
+                                       "gpu_ms_median", "gpu_ms_p10", "gpu_ms_p90"};
+    header.insert(header.end(), calibrationColumns().begin(), calibrationColumns().end());
     for (const std::string& e : kEffects)
-        csv << "," << e << "_ms";
-    csv << ",error_stride,rel_rmse_1,rel_rmse_16,non_finite,budget_choice\n";
+        header.push_back(e + "_ms");
+    header.insert(header.end(), {"error_stride", "rel_rmse_1", "rel_rmse_16", "tm_rel_rmse_1",
+                                 "tm_rel_rmse_16", "non_finite", "budget_choice"});
+    writeCsvRow(csv, header);
+    auto number = [](double v) {
+        std::ostringstream text;
+        text << v;
+        return text.str();
+    };
     for (const Row& r : rows) {
-        csv << r.width << "," << r.height << "," << r.fog << "," << r.preset << "," << r.timing.median << ","
-            << r.timing.p10 << "," << r.timing.p90;
+        std::vector<std::string> cells = {
+            std::to_string(r.width), std::to_string(r.height), r.fog, r.preset, number(r.timing.median),
+            number(r.timing.p10),    number(r.timing.p90)};
+        appendCalibrationCells(cells, r.timing.calibration);
         for (const std::string& e : kEffects)
-            csv << "," << (r.effectMs.count(e) ? r.effectMs.at(e) : 0.0);
-        csv << "," << r.stride << "," << r.error[0].relativeRmse << "," << r.error[2].relativeRmse << ","
-            << r.error[0].nonFinite + r.error[2].nonFinite << "," << r.chosen << "\n";
+            cells.push_back(number(r.effectMs.count(e) ? r.effectMs.at(e) : 0.0));
+        cells.insert(cells.end(), {std::to_string(r.stride), number(r.error[0].relativeRmse),
+                                   number(r.error[2].relativeRmse), number(r.error[0].tonemappedRmse),
+                                   number(r.error[2].tonemappedRmse),
+                                   std::to_string(r.error[0].nonFinite + r.error[2].nonFinite), r.chosen});
+        writeCsvRow(csv, cells);
     }
     std::ofstream md(args.out + "/results.md");
     md << "# The whole frame: accuracy–cost results\n\n"
@@ -93,6 +103,7 @@ bool writeResults(const FrameRunArgs& args, const std::vector<Row>& rows, const 
        << "| GPU time | every postfx pass of a frame (Context::readPassTimings), median of " << info.frames
        << " frames (p10–p90) after a warm-up of at least " << info.warmup << " frames and "
        << fixed(info.warmupMs, 0) << " ms; per effect: the sum of its passes' medians |\n"
+       << "| calibration | " << calibrationSummary(info.calibration) << " |\n"
        << "| error | relative RMSE over RGB against the demo's combined CPU reference (Renderer::"
           "renderReference: the atmosphere's reference (a), renderClouds, then renderFog or "
           "renderFroxelFog, "
@@ -186,6 +197,8 @@ int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std
         if (!runner) return fail(error);
         fillRunHeader(info, runner->host(), options, args.errorStride, args.referenceSteps, date,
                       commandLine);
+        // One log for every size: the reference is the first device's.
+        if (!runner->calibrate(info.calibration, error)) return fail(error);
         const uint32_t stride =
             std::max(1u, uint32_t(std::lround(double(args.errorStride) * width / 1920.0)));
         for (const std::string fog : {"froxel", "raymarched"}) {
@@ -247,12 +260,17 @@ int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std
                 for (const auto& [pass, ms] : row.timing.passMedians)
                     row.effectMs[passEffect(pass)] += ms;
                 std::printf(
-                    "%ux%u %-10s %-6s %8.4f ms  atmosphere %.4f clouds %.4f fog %.4f  rel. RMSE %s / %s %s\n",
+                    "%ux%u %-10s %-6s %8.4f ms  atmosphere %.4f clouds %.4f fog %.4f  rel. RMSE %s / %s  TM "
+                    "%s / "
+                    "%s  calib %s ms re %s %s\n",
                     width, height, fog.c_str(), row.preset.c_str(), row.timing.median,
                     row.effectMs["atmosphere"], row.effectMs["clouds"],
                     row.effectMs[fog == "froxel" ? "froxel_fog" : "fog"],
                     percent(row.error[0].relativeRmse).c_str(), percent(row.error[2].relativeRmse).c_str(),
-                    row.chosen.c_str());
+                    percent(row.error[0].tonemappedRmse).c_str(),
+                    percent(row.error[2].tonemappedRmse).c_str(),
+                    calibrationMsText(row.timing.calibration).c_str(),
+                    remeasuredText(row.timing.calibration).c_str(), row.chosen.c_str());
                 for (const auto& [pass, ms] : row.timing.passMedians)
                     if (pass.find("lookup") != std::string::npos || pass == "host.forward")
                         std::printf("  %-22s %8.4f ms\n", pass.c_str(), ms);
@@ -264,6 +282,7 @@ int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std
             return fail("validation: " + m);
     }
     if (!writeResults(args, rows, info, error)) return fail(error);
+    std::printf("calibration: %s\n", calibrationSummary(info.calibration).c_str());
     std::printf("wrote %s/results.csv, %s/results.md\n", args.out.c_str(), args.out.c_str());
     return 0;
 }

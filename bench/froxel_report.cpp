@@ -271,20 +271,14 @@ std::vector<FroxelTarget> froxelTargets(const RunInfo& info, const std::vector<R
 }
 
 const std::vector<std::string>& froxelCsvColumns() {
-    static const std::vector<std::string> columns = {
-        "scene",           "method",         "grid_x",           "grid_y",
-        "grid_z",          "distribution",   "tricubic",         "jitter",
-        "lights",          "light_lists",    "light_sweep",      "shadow_sweep",
-        "shadowed_lights", "steps",          "resolution_scale", "shadow_kernel",
-        "noise_size",      "width",          "height",           "warmup",
-        "frames",          "gpu_ms_median",  "gpu_ms_p10",       "gpu_ms_p90",
-        "gpu_ms_min",      "gpu_ms_max",     "light_lists_ms",   "scatter_ms",
-        "integrate_ms",    "apply_ms",       "pass_ms",          "rel_rmse_1",
-        "max_abs_1",       "frac_off_1",     "rel_rmse_8",       "max_abs_8",
-        "frac_off_8",      "rel_rmse_16",    "max_abs_16",       "frac_off_16",
-        "non_finite",      "apply_floor_ms", "apply_over_floor", "pareto_1",
-        "pareto_16",
-    };
+    static const std::vector<std::string> columns =
+        joinColumns({{"scene", "method", "grid_x", "grid_y", "grid_z", "distribution", "tricubic", "jitter",
+                      "lights", "light_lists", "light_sweep", "shadow_sweep", "shadowed_lights", "steps",
+                      "resolution_scale", "shadow_kernel", "noise_size"},
+                     timingColumns(),
+                     {"light_lists_ms", "scatter_ms", "integrate_ms", "apply_ms", "pass_ms"},
+                     errorColumns(),
+                     {"non_finite", "apply_floor_ms", "apply_over_floor", "pareto_1", "pareto_16"}});
     return columns;
 }
 
@@ -508,6 +502,7 @@ bool writeFroxelMarkdown(const std::string& path, const RunInfo& info, const std
         << "| GPU time | " << warmupText(info) << ", then the median of " << info.frames
         << " frames (p10–p90), Vulkan timestamps around each pass; a row's time is the sum of its passes "
            "(froxel_fog.* or fog.*) |\n"
+        << "| calibration | " << calibrationSummary(info.calibration) << " |\n"
         << "| memory bandwidth | " << bandwidthText(info) << " |\n"
         << "| apply floor | " << info.width << "×" << info.height
         << " × 20 B = " << formatNumber(double(applyFloorBytes(info.width, info.height)) / 1e6, 4)

@@ -240,6 +240,7 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
 
     RunInfo info;
     fillRunHeader(info, host, args.runner, args.errorStride, args.referenceSteps, date, commandLine);
+    if (!runner->calibrate(info.calibration, error)) return fail(error);
     info.froxelTargetScene = args.targetScene;
     info.lightListDefault = postfx::FroxelFogSettings{}.lightListMinLights;
     for (const ScenePlan& p : plans)
@@ -426,19 +427,23 @@ int runFroxel(const FroxelRunArgs& args, const std::string& commandLine, const s
         "(compute), %s GB/s (vkCmdCopyBuffer)\n",
         info.device.c_str(), info.width, info.height, info.errorStride, info.referenceSteps,
         formatNumber(info.copyBandwidth, 4).c_str(), formatNumber(info.transferBandwidth, 4).c_str());
-    std::printf("%-14s %-14s %-52s %9s %9s %9s %9s %9s %6s\n", "scene", "method", "setting", "GPU ms",
-                "scatter", "apply", "RMSE 1", "RMSE 16", "pareto");
+    std::printf("%-14s %-14s %-52s %9s %9s %9s %9s %9s %9s %8s %3s %6s\n", "scene", "method", "setting",
+                "GPU ms", "scatter", "apply", "RMSE 1", "RMSE 16", "TM 16", "calib ms", "re", "pareto");
     for (const Result& r : results) {
         const char* pareto = r.pareto1 && r.pareto16 ? "1, 16" : r.pareto1 ? "1" : r.pareto16 ? "16" : "";
         std::printf(
-            "%-14s %-14s %-52s %9s %9s %9s %9s %9s %6s\n", r.setting.scene.c_str(),
+            "%-14s %-14s %-52s %9s %9s %9s %9s %9s %9s %8s %3s %6s\n", r.setting.scene.c_str(),
             methodName(r.setting.method), r.setting.label().c_str(), formatNumber(r.timing.median, 4).c_str(),
             formatNumber(passMs(r, "froxel_fog.scatter"), 3).c_str(),
             formatNumber(passMs(r, "froxel_fog.apply"), 3).c_str(), percent(r.error[0].relativeRmse).c_str(),
-            percent(r.error[2].relativeRmse).c_str(), pareto);
+            percent(r.error[2].relativeRmse).c_str(), percent(r.error[2].tonemappedRmse).c_str(),
+            calibrationMsText(r.timing.calibration).c_str(), remeasuredText(r.timing.calibration).c_str(),
+            pareto);
     }
     std::printf("%s", froxelSummary(info, results).c_str());
     std::printf("%s", motionSummary(info, results, motion, switchOff).c_str());
+    std::printf("calibration: %s\n", calibrationSummary(info.calibration).c_str());
+    std::printf("%s", repeatSpreadText(results).c_str());
     std::printf("wrote %s, %s%s\n", csv.c_str(), md.c_str(),
                 motion.empty() && switchOff.empty() ? "" : (", " + motionCsv).c_str());
     if (!messages.empty()) {

@@ -101,6 +101,16 @@ const char* kUsage =
     "  --no-presets           do not measure the quality presets (low, medium, high, ultra) as such\n"
     "  --no-baselines         postfx's fog only\n"
     "  --validation           Vulkan validation layer with synchronization validation; any message fails\n"
+    "calibration (every GPU-timed mode; docs/accuracy-cost/README.md, \"Calibration\"): a fixed ALU\n"
+    "dispatch timed right before and right after each row's timed frames; a row whose calibration moved by\n"
+    "more than the tolerance (after against before, or either against the run's reference, taken at the\n"
+    "start after a warm-up) is timed again; the CSVs say each row's calibration, the summary its spread.\n"
+    "  --calibration-tolerance F  the drift that has a row timed again [0.05]\n"
+    "  --calibration-retries N    at most this many more attempts, then the row is kept and flagged [3;\n"
+    "                             quick: 0, lavapipe's calibration follows the CPU's load]\n"
+    "  --calibration-ms T         the dispatch's work sized at the start to take about T ms [2]\n"
+    "  --calibration-work N       ... or fixed: N loop steps (the summary says the run's) [sized]\n"
+    "  --no-calibration           time each row once, without it\n"
     "in motion (docs/accuracy-cost/README.md, \"In motion\"): each preset with temporal off and on (froxel:\n"
     "the light-count sweep's grid) on sequences that start with a camera cut: the camera walking and "
     "turning\n"
@@ -326,7 +336,7 @@ Args parseArgs(int argc, char** argv) {
          framesGiven = false, refGiven = false, stepsGiven = false, noiseGiven = false, lengthsGiven = false,
          scalesGiven = false, scenesGiven = false, outGiven = false, gridsGiven = false, slicesGiven = false,
          lightsGiven = false, motionWarmupGiven = false, motionFramesGiven = false, motionStepGiven = false,
-         switchOffGiven = false, shadowedGiven = false, shadowResolutionGiven = false;
+         switchOffGiven = false, shadowedGiven = false, shadowResolutionGiven = false, retriesGiven = false;
     const auto toFloats = [](const std::vector<double>& values) {
         return std::vector<float>(values.begin(), values.end());
     };
@@ -415,6 +425,19 @@ Args parseArgs(int argc, char** argv) {
             quick = true;
         } else if (a == "--validation") {
             args.runner.validation = true;
+        } else if (a == "--calibration-tolerance") {
+            args.runner.calibration.tolerance = cli::numberOption(
+                a, value(), [](double v) { return v >= 0 && v <= 10; }, "a fraction in 0..10");
+        } else if (a == "--calibration-retries") {
+            cli::uintOption(a, value(), 0, 100, args.runner.calibration.retries);
+            retriesGiven = true;
+        } else if (a == "--calibration-work") {
+            cli::uintOption(a, value(), 1, 1u << 30, args.runner.calibration.iterations);
+        } else if (a == "--calibration-ms") {
+            args.runner.calibration.targetMs = cli::numberOption(
+                a, value(), [](double v) { return v >= 0.01 && v <= 1000; }, "milliseconds in 0.01..1000");
+        } else if (a == "--no-calibration") {
+            args.runner.calibration.enabled = false;
         } else if (a == "--froxel") {
             args.froxel = true;
         } else if (a == "--atmosphere") {
@@ -684,6 +707,9 @@ Args parseArgs(int argc, char** argv) {
         if (!warmupMsGiven) args.runner.warmupMs = 0.0;
         if (!coldGiven) args.runner.coldWarmupMs = 0.0;
         if (!framesGiven) args.runner.frames = 2;
+        // CI on lavapipe, whose calibration follows the machine's load: rows flagged, not timed again (a
+        // media row of --atmosphere takes seconds a frame there).
+        if (!retriesGiven) args.runner.calibration.retries = 0;
         if (!refGiven) args.referenceSteps = 1024;
         if (!stepsGiven) args.steps = {4, 16, 64};
         if (!noiseGiven) args.noiseSizes = {32};
@@ -881,6 +907,8 @@ int runWorstCase(const Args& args, const std::string& command) {
     a.sceneDir = args.sceneDir;
     a.validation = args.runner.validation;
     a.rows = args.worstCaseRows;
+    a.calibration = args.runner.calibration;
+    a.calibrationWarmupMs = std::max(args.runner.warmupMs, args.runner.coldWarmupMs);
     return bench::runWorstCase(a, command);
 }
 
@@ -966,6 +994,7 @@ int run(const Args& args, const std::string& command) {
 
     bench::RunInfo info;
     fillRunHeader(info, host, args.runner, args.errorStride, args.referenceSteps, utcNow(), command);
+    if (!runner->calibrate(info.calibration, error)) return fail(error);
     info.textureRate = args.textureRate;
     info.baselines = baselines;
     info.presetScene = args.presetScene;
@@ -1189,19 +1218,23 @@ int run(const Args& args, const std::string& command) {
 
     std::printf("postfx-bench: %s, %ux%u, error stride %u, reference %u steps\n", info.device.c_str(),
                 info.width, info.height, info.errorStride, info.referenceSteps);
-    std::printf("%-14s %-19s %-28s %10s %10s %10s %10s\n", "scene", "method", "setting", "GPU ms", "RMSE 1",
-                "RMSE 8", "RMSE 16");
+    std::printf("%-14s %-19s %-28s %10s %10s %10s %10s %10s %8s %3s\n", "scene", "method", "setting",
+                "GPU ms", "RMSE 1", "RMSE 8", "RMSE 16", "TM 16", "calib ms", "re");
     for (const bench::Result& r : results) {
-        std::printf("%-14s %-19s %-28s %10s %9s%% %9s%% %9s%%%s\n", r.setting.scene.c_str(),
+        std::printf("%-14s %-19s %-28s %10s %9s%% %9s%% %9s%% %9s%% %8s %3s%s\n", r.setting.scene.c_str(),
                     bench::methodName(r.setting.method), r.setting.label().c_str(),
                     bench::formatNumber(r.timing.median, 4).c_str(),
                     bench::formatNumber(r.error[0].relativeRmse * 100, 3).c_str(),
                     bench::formatNumber(r.error[1].relativeRmse * 100, 3).c_str(),
                     bench::formatNumber(r.error[2].relativeRmse * 100, 3).c_str(),
-                    r.pareto1 ? "  pareto" : "");
+                    bench::formatNumber(r.error[2].tonemappedRmse * 100, 3).c_str(),
+                    bench::calibrationMsText(r.timing.calibration).c_str(),
+                    bench::remeasuredText(r.timing.calibration).c_str(), r.pareto1 ? "  pareto" : "");
     }
     std::printf("%s", bench::conclusionsSummary(info, results).c_str());
     std::printf("%s", bench::motionSummary(info, results, motion, {}).c_str());
+    std::printf("calibration: %s\n", bench::calibrationSummary(info.calibration).c_str());
+    std::printf("%s", bench::repeatSpreadText(results).c_str());
     std::printf("wrote %s, %s, %s%s\n", csv.c_str(), md.c_str(), svg.c_str(),
                 motion.empty() ? "" : (", " + motionCsv).c_str());
     if (!messages.empty()) {

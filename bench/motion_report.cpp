@@ -143,11 +143,12 @@ std::vector<TemporalPays> temporalPays(const RunInfo& info, const std::vector<Mo
 }
 
 const std::vector<std::string>& motionCsvColumns() {
-    static const std::vector<std::string> columns = {
-        "scene",    "method",     "setting",       "preset",      "temporal", "blend_weight",
-        "motion",   "frame",      "gpu_ms_median", "temporal_ms", "rel_rmse", "max_abs",
-        "frac_off", "non_finite", "rel_rmse_16",   "remaining",   "leftover", "shadow_matrix_changes",
-    };
+    static const std::vector<std::string> columns = joinColumns(
+        {{"scene",       "method",        "setting",       "preset",      "temporal", "blend_weight",
+          "motion",      "frame",         "gpu_ms_median", "temporal_ms", "rel_rmse", "max_abs",
+          "frac_off",    "non_finite",    "rel_rmse_16",   "remaining",   "leftover", "shadow_matrix_changes",
+          "tm_rel_rmse", "tm_rel_rmse_16"},
+         calibrationColumns()});
     return columns;
 }
 
@@ -163,8 +164,9 @@ bool writeMotionCsv(const std::string& path, const RunInfo& info, const MotionIn
         << " m/s forward, yaw " << formatNumber(o.yawRateDeg, 3) << " deg/s; light " << o.light << " at "
         << formatNumber(o.lightSpeed, 3) << " m/s; references every " << mi.errorStride << "th pixel, "
         << mi.referenceSteps << " steps\n"
-        << "# rows: motion=still (the still camera: gpu_ms_median, rel_rmse of one frame and rel_rmse_16 of "
-           "the mean of 16), camera or light (one row per measured frame), switch_off and "
+        << "# rows: motion=still (the still camera: gpu_ms_median and its calibration, rel_rmse of one frame "
+           "and rel_rmse_16 of the mean of 16, tm_rel_rmse and tm_rel_rmse_16 tonemapped), camera or light "
+           "(one row per measured frame), switch_off and "
            "switch_off_control and never_lit (frame: frames since the switch-off, -1 the last lit; "
            "remaining, "
            "leftover)\n";
@@ -185,13 +187,18 @@ bool writeMotionCsv(const std::string& path, const RunInfo& info, const MotionIn
         still.insert(still.end(),
                      {"still", "", formatNumber(m.timing.median, 5), formatNumber(m.temporalMs(), 5)});
         errorCells(still, m.still[0]);
-        still.insert(still.end(), {formatNumber(m.still[2].relativeRmse, 6), "", "", ""});
+        still.insert(still.end(), {formatNumber(m.still[2].relativeRmse, 6), "", "", "",
+                                   formatNumber(m.still[0].tonemappedRmse, 6),
+                                   formatNumber(m.still[2].tonemappedRmse, 6)});
+        appendCalibrationCells(still, m.timing.calibration);
         writeCsvRow(out, still);
         for (size_t k = 0; k < m.frames.size() && k < m.errors.size(); ++k) {
             std::vector<std::string> row = base(m.setting, m.temporal, m.blendWeight);
             row.insert(row.end(), {motionKindName(m.kind), std::to_string(m.frames[k]), "", ""});
             errorCells(row, m.errors[k]);
-            row.insert(row.end(), {"", "", "", std::to_string(m.shadowMatrixChanges)});
+            row.insert(row.end(), {"", "", "", std::to_string(m.shadowMatrixChanges),
+                                   formatNumber(m.errors[k].tonemappedRmse, 6), ""});
+            row.resize(motionCsvColumns().size());  // no calibration: not a timed row
             writeCsvRow(out, row);
         }
     }
@@ -211,7 +218,7 @@ bool writeMotionCsv(const std::string& path, const RunInfo& info, const MotionIn
                 row.insert(row.end(), {"", "", "", "", ""});
                 row.push_back(formatNumber(remaining, 6));
                 row.push_back(formatNumber(leftover, 6));
-                row.push_back("");
+                row.resize(motionCsvColumns().size());
                 writeCsvRow(out, row);
             }
         }

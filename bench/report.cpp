@@ -2,6 +2,7 @@
 #include "report.h"
 
 #include "conclusions.h"
+#include "stats.h"
 
 #include <algorithm>
 #include <cmath>
@@ -132,17 +133,78 @@ std::vector<std::string> sceneOrder(const std::vector<Result>& results) {
     return scenes;
 }
 
-const std::vector<std::string>& csvColumns() {
-    static const std::vector<std::string> columns = {
-        "scene",       "method",           "preset",      "steps",         "step_length_m",
-        "jitter",      "resolution_scale", "noise_size",  "shadow_kernel", "width",
-        "height",      "warmup",           "frames",      "gpu_ms_median", "gpu_ms_p10",
-        "gpu_ms_p90",  "gpu_ms_min",       "gpu_ms_max",  "pass_ms",       "rel_rmse_1",
-        "max_abs_1",   "frac_off_1",       "rel_rmse_8",  "max_abs_8",     "frac_off_8",
-        "rel_rmse_16", "max_abs_16",       "frac_off_16", "non_finite",    "fetches_per_pixel",
-        "floor_ms",    "time_over_floor",  "pareto_1",    "pareto_16",
-    };
+const std::vector<std::string>& calibrationColumns() {
+    static const std::vector<std::string> columns = {"calib_ms",    "calib_before_ms", "calib_after_ms",
+                                                     "calib_drift", "remeasured",      "calib_flagged"};
     return columns;
+}
+
+const std::vector<std::string>& timingColumns() {
+    static const std::vector<std::string> columns =
+        joinColumns({{"width", "height", "warmup", "frames", "gpu_ms_median", "gpu_ms_p10", "gpu_ms_p90",
+                      "gpu_ms_min", "gpu_ms_max"},
+                     calibrationColumns()});
+    return columns;
+}
+
+const std::vector<std::string>& errorColumns() {
+    static const std::vector<std::string> columns = [] {
+        std::vector<std::string> c;
+        for (uint32_t n : kAveragedFrames)
+            for (const char* what : {"rel_rmse_", "max_abs_", "frac_off_"})
+                c.push_back(what + std::to_string(n));
+        for (uint32_t n : kAveragedFrames)
+            c.push_back("tm_rel_rmse_" + std::to_string(n));
+        return c;
+    }();
+    return columns;
+}
+
+std::vector<std::string> joinColumns(std::initializer_list<std::vector<std::string>> parts) {
+    std::vector<std::string> out;
+    for (const std::vector<std::string>& part : parts)
+        out.insert(out.end(), part.begin(), part.end());
+    return out;
+}
+
+const std::vector<std::string>& csvColumns() {
+    static const std::vector<std::string> columns = joinColumns(
+        {{"scene", "method", "preset", "steps", "step_length_m", "jitter", "resolution_scale", "noise_size",
+          "shadow_kernel"},
+         timingColumns(),
+         {"pass_ms"},
+         errorColumns(),
+         {"non_finite", "fetches_per_pixel", "floor_ms", "time_over_floor", "pareto_1", "pareto_16"}});
+    return columns;
+}
+
+std::string calibrationSummary(const CalibrationLog& log) {
+    if (!log.enabled) return "not run (--no-calibration, or the queue has no timestamps)";
+    const CalibrationSpread spread = calibrationSpread(log);
+    return "reference " + formatNumber(log.referenceMs, 4) + " ms (" + std::to_string(log.iterations) +
+           " iterations x " + std::to_string(log.groups) + " groups of 64, median of " +
+           std::to_string(log.repeats) + "); " + std::to_string(spread.count) + " measurements min " +
+           formatNumber(spread.min, 4) + " / median " + formatNumber(spread.median, 4) + " / max " +
+           formatNumber(spread.max, 4) + " ms, max/min " + formatNumber(spread.ratio, 4) + "; re-measured " +
+           std::to_string(log.remeasuredRows) + " of " + std::to_string(log.rows) + " rows (" +
+           std::to_string(log.remeasurements) + " more attempts), " + std::to_string(log.flaggedRows) +
+           " flagged (tolerance " + formatNumber(log.tolerance * 100.0, 3) + "%, at most " +
+           std::to_string(log.retries) + " more)";
+}
+
+std::string calibrationMsText(const RowCalibration& calibration) {
+    return orDash(formatNumber(calibration.ms(), 4));
+}
+
+std::string repeatSpreadText(const std::vector<Result>& results) {
+    const RepeatSpread r = repeatSpread(results);
+    if (r.settings == 0) return "";
+    return "repeated settings: " + std::to_string(r.settings) + ", the largest spread of one's medians " +
+           percent(r.spread) + " (" + r.worst + ")\n";
+}
+
+std::string remeasuredText(const RowCalibration& calibration) {
+    return std::to_string(calibration.remeasured) + (calibration.flagged ? "!" : "");
 }
 
 void writeCsvPreamble(std::ostream& out, const std::string& title, const RunInfo& info,
@@ -154,8 +216,14 @@ void writeCsvPreamble(std::ostream& out, const std::string& title, const RunInfo
         << "# command: " << info.commandLine << "\n"
         << "# image: " << referenceSummary(info) << "\n"
         << "# timing: " << warmupText(info) << ", then " << info.frames << " timed frames\n"
+        << "# calibration: " << calibrationSummary(info.calibration) << "\n"
         << extraLines;
     writeCsvRow(out, columns);
+}
+
+void appendCalibrationCells(std::vector<std::string>& row, const RowCalibration& c) {
+    row.insert(row.end(), {formatNumber(c.ms(), 6), formatNumber(c.beforeMs, 6), formatNumber(c.afterMs, 6),
+                           formatNumber(c.drift, 4), std::to_string(c.remeasured), c.flagged ? "1" : "0"});
 }
 
 void appendTimingCells(std::vector<std::string>& row, const RunInfo& info, const Timing& timing) {
@@ -163,6 +231,7 @@ void appendTimingCells(std::vector<std::string>& row, const RunInfo& info, const
                {std::to_string(info.width), std::to_string(info.height), std::to_string(info.warmup),
                 std::to_string(timing.frames), formatNumber(timing.median, 6), formatNumber(timing.p10, 6),
                 formatNumber(timing.p90, 6), formatNumber(timing.min, 6), formatNumber(timing.max, 6)});
+    appendCalibrationCells(row, timing.calibration);
 }
 
 uint64_t appendErrorCells(std::vector<std::string>& row, const std::array<ErrorStats, 3>& error) {
@@ -173,6 +242,8 @@ uint64_t appendErrorCells(std::vector<std::string>& row, const std::array<ErrorS
         row.push_back(formatNumber(e.fractionOff, 6));
         nonFinite = std::max(nonFinite, e.nonFinite);
     }
+    for (const ErrorStats& e : error)
+        row.push_back(formatNumber(e.tonemappedRmse, 6));
     return nonFinite;
 }
 
@@ -233,6 +304,7 @@ bool writeMarkdown(const std::string& path, const RunInfo& info, const std::vect
         << "| image | " << referenceSummary(info) << " |\n"
         << "| GPU time | " << warmupText(info) << ", then the median of " << info.frames
         << " frames (p10–p90), Vulkan timestamps around the pass(es) |\n"
+        << "| calibration | " << calibrationSummary(info.calibration) << " |\n"
         << "| texture rate | " << textureRateText(info) << " |\n"
         << "| baselines | " << (info.baselines ? "seed-as-written, seed-fixed-riemann" : "not run")
         << " |\n\n"

@@ -5,6 +5,7 @@
 #include "bench_types.h"
 
 #include <array>
+#include <initializer_list>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -43,15 +44,38 @@ std::string referenceSummary(const RunInfo& info);
 std::string warmupText(const RunInfo& info);
 std::string textureRateText(const RunInfo& info);
 // CSV files (writeCsv, writeFroxelCsv): the metadata comment lines (pandas: comment='#') starting with
-// `title`, the run's device, API, date, command, image and timing, then `extraLines` (each "# ...\n"), then
-// the header row of `columns`.
+// `title`, the run's device, API, date, command, image, timing and calibration, then `extraLines` (each
+// "# ...\n"), then the header row of `columns`.
 void writeCsvPreamble(std::ostream& out, const std::string& title, const RunInfo& info,
                       const std::string& extraLines, const std::vector<std::string>& columns);
-// The run columns and the timing columns of a row: width, height, warm-up, frames, median, p10, p90, min,
-// max.
+// The columns appendTimingCells writes: width, height, warmup, frames, gpu_ms_median, _p10, _p90, _min,
+// _max, then the row's calibration (calibrationColumns).
+const std::vector<std::string>& timingColumns();
+// A timed row's calibration (bench/calibration.h): calib_ms (the mean of before and after), calib_before_ms,
+// calib_after_ms, calib_drift, remeasured (how many more times the row was timed), calib_flagged (1: kept
+// out of tolerance).
+const std::vector<std::string>& calibrationColumns();
+// The columns appendErrorCells writes: rel_rmse_N, max_abs_N, frac_off_N for N = 1, 8, 16, then
+// tm_rel_rmse_N (ErrorStats::tonemappedRmse) for each.
+const std::vector<std::string>& errorColumns();
+// The parts one after the other.
+std::vector<std::string> joinColumns(std::initializer_list<std::vector<std::string>> parts);
+// The run columns and the timing columns of a row (timingColumns).
 void appendTimingCells(std::vector<std::string>& row, const RunInfo& info, const Timing& timing);
-// rel_rmse, max_abs, frac_off of each averaged-frames error; returns the largest non-finite count.
+void appendCalibrationCells(std::vector<std::string>& row, const RowCalibration& calibration);
+// errorColumns' cells of each averaged-frames error; returns the largest non-finite count.
 uint64_t appendErrorCells(std::vector<std::string>& row, const std::array<ErrorStats, 3>& error);
+// The run's calibration in one line: "reference 2.01 ms (131072 iterations x 1024 groups, median of 5);
+// 84 measurements min 1.98 / median 2.01 / max 2.1 ms, max/min 1.061; re-measured 3 of 40 rows (5 more
+// attempts), 0 flagged (tolerance 5%, at most 3 more)", or why there is none.
+std::string calibrationSummary(const CalibrationLog& log);
+// A row's calibration for the stdout tables: its mean [ms] ("–" without), and how many times it was timed
+// again ("0", "2"; "3!" when flagged).
+std::string calibrationMsText(const RowCalibration& calibration);
+// "repeated settings: 2, the largest spread of one's medians 1.2% (fog_default postfx-fog steps=32 ...)\n"
+// for stdout; "" when no setting was measured twice.
+std::string repeatSpreadText(const std::vector<Result>& results);
+std::string remeasuredText(const RowCalibration& calibration);
 void writeCsvRow(std::ostream& out, const std::vector<std::string>& row);
 // The scenes in the order their first result appears.
 std::vector<std::string> sceneOrder(const std::vector<Result>& results);

@@ -1,5 +1,6 @@
 #include "runner.h"
 
+#include "calibration.h"
 #include "image_compare.h"
 #include "stats.h"
 
@@ -58,6 +59,7 @@ struct Runner::Impl {
 #if POSTFX_BENCH_BASELINES
     std::unique_ptr<BaselinePass> baseline;
 #endif
+    std::unique_ptr<Calibration> calibration;  // brackets each row's timed frames (Runner::calibrate)
     std::array<VkCommandBuffer, kFramesInFlight> commandBuffers{};
     std::array<VkFence, kFramesInFlight> fences{};
     VkQueryPool queries = VK_NULL_HANDLE;  // the baselines' timestamps: 2 per frame slot
@@ -99,6 +101,7 @@ Runner::Impl::~Impl() {
     if (!host) return;
     const VkDevice device = host->device;
     vkDeviceWaitIdle(device);
+    calibration.reset();
 #if POSTFX_BENCH_BASELINES
     baseline.reset();
 #endif
@@ -184,6 +187,14 @@ const postfx::Context& Runner::postfxContext() const {
 
 bool Runner::hasBaselines() {
     return POSTFX_BENCH_BASELINES != 0;
+}
+
+bool Runner::calibrate(CalibrationLog& log, std::string& error) {
+    Impl& m = *impl_;
+    m.calibration = Calibration::create(*m.host, m.options.calibration, log, error);
+    m.idleSince = true;
+    return m.calibration &&
+           m.calibration->reference(std::max(m.options.warmupMs, m.options.coldWarmupMs), error);
 }
 
 std::vector<std::string> Runner::validationMessages() const {
@@ -368,33 +379,48 @@ bool Runner::measure(const demo::Scene& scene, Method method, float stepLength, 
         f.active = false;
         return ok;
     };
-    const auto start = std::chrono::steady_clock::now();
-    const double warmupMs =
-        m.idleSince ? std::max(m.options.warmupMs, m.options.coldWarmupMs) : m.options.warmupMs;
-    m.idleSince = false;
-    uint32_t warmupFrames = 0, timedFrames = 0;
-    while (timedFrames < m.options.frames) {
-        bool timed =
-            warmupFrames >= m.options.warmup &&
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() >=
-                warmupMs;
-        if (timedFrames > 0) timed = true;  // warm-up over
-        ++(timed ? timedFrames : warmupFrames);
+    auto submitFrame = [&](bool timed) -> bool {
         const uint64_t frameIndex = m.nextFrame++;
         const size_t slot = frameIndex % kFramesInFlight;
-        if (!retire(slot)) return false;
-        if (!m.submit(
-                slot,
-                [&](VkCommandBuffer cmd) {
-                    return m.recordFrame(cmd, scene, method, stepLength, frameIndex, slot, false, error);
-                },
-                error))
+        if (!retire(slot) || !m.submit(
+                                 slot,
+                                 [&](VkCommandBuffer cmd) {
+                                     return m.recordFrame(cmd, scene, method, stepLength, frameIndex, slot,
+                                                          false, error);
+                                 },
+                                 error))
             return false;
         inFlight[slot] = {true, timed, frameIndex};
-    }
-    for (uint64_t f = m.nextFrame - kFramesInFlight; f < m.nextFrame; ++f)  // the last frames, oldest first
-        if (!retire(f % kFramesInFlight)) return false;
-    timing = summarize(totals, passes);
+        return true;
+    };
+    auto retireAll = [&]() -> bool {
+        for (uint64_t f = m.nextFrame - kFramesInFlight; f < m.nextFrame; ++f)  // oldest first
+            if (!retire(f % kFramesInFlight)) return false;
+        return true;
+    };
+    // One attempt: the warm-up (at least options.warmup frames and warmupMs), the calibration, the timed
+    // frames, the calibration again (bench/calibration.h).
+    CalibratedRow calibrated(m.calibration.get());
+    double warmupMs = m.idleSince ? std::max(m.options.warmupMs, m.options.coldWarmupMs) : m.options.warmupMs;
+    m.idleSince = false;
+    do {
+        totals.clear();
+        passes.clear();
+        const auto start = std::chrono::steady_clock::now();
+        for (uint32_t warmupFrames = 0;
+             warmupFrames < m.options.warmup ||
+             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() <
+                 warmupMs;
+             ++warmupFrames)
+            if (!submitFrame(false)) return false;
+        if (!retireAll() || !calibrated.before(error)) return false;
+        for (uint32_t timedFrames = 0; timedFrames < m.options.frames; ++timedFrames)
+            if (!submitFrame(true)) return false;
+        if (!retireAll() || !calibrated.after(error)) return false;
+        if (calibrated.kept()) timing = summarize(totals, passes);
+        warmupMs = m.options.warmupMs;
+    } while (calibrated.again());
+    timing.calibration = calibrated.finish();
     if (reference.width == 0) return true;  // timing only
 
     // --- Error: one frame at a time, read back; the reference's pixel (i, j) is the frame's
@@ -468,7 +494,7 @@ uint32_t Runner::shadowMatrixChanges(const std::function<demo::Scene(uint32_t)>&
 ErrorStats Runner::compare(const std::vector<float>& image, const demo::ImageF& reference) {
     const test::ImageStats s = test::compareImages(image, reference.rgba, reference.width, reference.height,
                                                    kPixelTolerance, kMagnitudeFloor);
-    return {s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite};
+    return {s.relativeRmse, s.maxAbsError, s.fractionOff, s.nonFinite, tonemappedRmse(image, reference.rgba)};
 }
 
 bool Runner::sequence(uint32_t frames, const std::function<demo::Scene(uint32_t)>& sceneAt,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "bench_types.h"
+#include "calibration.h"
 
 #include "host/renderer.h"
 #include "host/vulkan_host.h"
@@ -25,8 +26,9 @@ struct RunnerOptions {
     // ... or this long after the GPU sat idle for seconds (the CPU reference): 200 ms was not always
     // enough on the H100 (a bimodal median, 2.7× its p10, in the setting measured next).
     double coldWarmupMs = 1000.0;
-    uint32_t frames = 30;     // frames timed
-    bool validation = false;  // Khronos validation with synchronization validation
+    uint32_t frames = 30;            // frames timed
+    bool validation = false;         // Khronos validation with synchronization validation
+    CalibrationOptions calibration;  // the calibration around each row's timed frames
 };
 
 // The report header's run fields common to every mode: device, Vulkan API, date, command, image size,
@@ -48,6 +50,11 @@ public:
     // Whether the baselines (bench/baseline.h) were built in.
     static bool hasBaselines();
 
+    // Brackets every timed row of measure() from now on with the calibration (bench/calibration.h),
+    // recording into `log` (which outlives the runner); takes the run's reference first unless `log` has
+    // one. Without it, measure() times each row once and leaves Timing::calibration NaN.
+    bool calibrate(CalibrationLog& log, std::string& error);
+
     // Uploads the scene's geometry (once per scene, before reference() and measure()).
     bool setScene(const demo::Scene& scene, std::string& error);
     // Whether the frames of `scene` give postfx a shadow map (sun.shadows and a caster).
@@ -58,7 +65,8 @@ public:
     bool reference(const demo::Scene& scene, uint32_t steps, uint32_t stride, demo::ImageF& out,
                    std::string& error);
 
-    // Times `method` on `scene` (warm-up, then the timed frames) and measures the error of one frame and
+    // Times `method` on `scene` (warm-up, then the timed frames, bracketed by the calibration and timed
+    // again while it drifts: Timing::calibration) and measures the error of one frame and
     // of the mean of 8 and 16 frames (consecutive frame indices from a multiple of 1024: only the jitter
     // differs; the ray-marched fog's IGN pattern repeats every 64 frames, the froxel fog's Halton
     // samples every 1024) against `reference` (from reference() with the same stride); an empty

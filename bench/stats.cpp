@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numeric>
 #include <set>
 
@@ -106,6 +107,71 @@ void markParetoFronts(std::vector<Result>& results) {
         for (size_t k : paretoFront(time, error16))
             results[ours[k]].pareto16 = true;
     }
+}
+
+double tonemappedRmse(std::span<const float> actual, std::span<const float> expected) {
+    const size_t pixels = std::min(actual.size(), expected.size()) / 4;
+    auto luminance = [](const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; };
+    double logSum = 0.0;
+    size_t lit = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        const double y = luminance(&expected[p * 4]);
+        if (y > 0.0 && std::isfinite(y)) logSum += std::log(y), ++lit;
+    }
+    const double k = lit ? 0.18 / std::exp(logSum / double(lit)) : 1.0;
+    auto tonemap = [k](double v) { return k * v / (1.0 + k * std::abs(v)); };
+    double errorSquared = 0.0, referenceSquared = 0.0;
+    for (size_t p = 0; p < pixels; ++p) {
+        for (size_t c = 0; c < 3; ++c) {
+            const double a = actual[p * 4 + c], b = expected[p * 4 + c];
+            if (!std::isfinite(a) || !std::isfinite(b)) continue;
+            const double tb = tonemap(b), d = tonemap(a) - tb;
+            errorSquared += d * d;
+            referenceSquared += tb * tb;
+        }
+    }
+    if (referenceSquared > 0.0) return std::sqrt(errorSquared / referenceSquared);
+    return errorSquared > 0.0 ? INFINITY : 0.0;
+}
+
+double calibrationDrift(double beforeMs, double afterMs, double referenceMs) {
+    if (!std::isfinite(beforeMs) || !std::isfinite(afterMs) || beforeMs <= 0.0 || afterMs <= 0.0) return NAN;
+    double drift = std::abs(afterMs / beforeMs - 1.0);
+    if (std::isfinite(referenceMs) && referenceMs > 0.0)
+        drift =
+            std::max({drift, std::abs(beforeMs / referenceMs - 1.0), std::abs(afterMs / referenceMs - 1.0)});
+    return drift;
+}
+
+RepeatSpread repeatSpread(const std::vector<Result>& results) {
+    std::map<std::string, std::vector<double>> medians;
+    for (const Result& r : results)
+        if (std::isfinite(r.timing.median))
+            medians[r.setting.scene + " " + methodName(r.setting.method) + " " + r.setting.label()].push_back(
+                r.timing.median);
+    RepeatSpread out;
+    for (const auto& [what, values] : medians) {
+        if (values.size() < 2) continue;
+        ++out.settings;
+        const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+        const double spread = *hi / *lo - 1.0;
+        if (!(spread <= out.spread)) out.spread = spread, out.worst = what;
+    }
+    return out;
+}
+
+CalibrationSpread calibrationSpread(const CalibrationLog& log) {
+    CalibrationSpread s;
+    std::vector<double> values;
+    for (double v : log.measurements)
+        if (std::isfinite(v)) values.push_back(v);
+    s.count = values.size();
+    if (values.empty()) return s;
+    s.min = percentile(values, 0.0);
+    s.median = percentile(values, 0.5);
+    s.max = percentile(values, 1.0);
+    s.ratio = s.max / s.min;
+    return s;
 }
 
 }  // namespace bench

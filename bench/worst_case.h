@@ -6,6 +6,8 @@
 // libvulkan.
 #pragma once
 
+#include "calibration.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,6 +22,10 @@ struct WorstCaseArgs {
     std::vector<std::string> rows;
     uint32_t frames = 3;  // frames recorded per row, each submitted and waited for
     bool validation = false;
+    // Each row's frames bracketed by the calibration (bench/calibration.h); its reference after this long
+    // a warm-up [ms].
+    CalibrationOptions calibration;
+    double calibrationWarmupMs = 1000.0;
 };
 
 int runWorstCase(const WorstCaseArgs& args, const std::string& commandLine);

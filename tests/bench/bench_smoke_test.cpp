@@ -42,13 +42,49 @@ bool presetTemporal(const std::string& name) {
 std::string gBench, gSceneDir, gOut;
 
 const std::vector<std::string> kColumns = {
-    "scene",       "method",           "preset",      "steps",         "step_length_m",
-    "jitter",      "resolution_scale", "noise_size",  "shadow_kernel", "width",
-    "height",      "warmup",           "frames",      "gpu_ms_median", "gpu_ms_p10",
-    "gpu_ms_p90",  "gpu_ms_min",       "gpu_ms_max",  "pass_ms",       "rel_rmse_1",
-    "max_abs_1",   "frac_off_1",       "rel_rmse_8",  "max_abs_8",     "frac_off_8",
-    "rel_rmse_16", "max_abs_16",       "frac_off_16", "non_finite",    "fetches_per_pixel",
-    "floor_ms",    "time_over_floor",  "pareto_1",    "pareto_16",
+    "scene",
+    "method",
+    "preset",
+    "steps",
+    "step_length_m",
+    "jitter",
+    "resolution_scale",
+    "noise_size",
+    "shadow_kernel",
+    "width",
+    "height",
+    "warmup",
+    "frames",
+    "gpu_ms_median",
+    "gpu_ms_p10",
+    "gpu_ms_p90",
+    "gpu_ms_min",
+    "gpu_ms_max",
+    "calib_ms",
+    "calib_before_ms",
+    "calib_after_ms",
+    "calib_drift",
+    "remeasured",
+    "calib_flagged",
+    "pass_ms",
+    "rel_rmse_1",
+    "max_abs_1",
+    "frac_off_1",
+    "rel_rmse_8",
+    "max_abs_8",
+    "frac_off_8",
+    "rel_rmse_16",
+    "max_abs_16",
+    "frac_off_16",
+    "tm_rel_rmse_1",
+    "tm_rel_rmse_8",
+    "tm_rel_rmse_16",
+    "non_finite",
+    "fetches_per_pixel",
+    "floor_ms",
+    "time_over_floor",
+    "pareto_1",
+    "pareto_16",
 };
 const std::vector<std::string> kScenes = {"fog_default", "fog_shadowed"};
 // --quick has 4,16,64; two step counts (CI time: a setting costs about as much as the next, and each
@@ -117,10 +153,78 @@ bool readCsv(const std::string& path, std::vector<std::string>& header, std::vec
 
 // motion.csv (bench/motion_report.h).
 const std::vector<std::string> kMotionColumns = {
-    "scene",    "method",     "setting",       "preset",      "temporal", "blend_weight",
-    "motion",   "frame",      "gpu_ms_median", "temporal_ms", "rel_rmse", "max_abs",
-    "frac_off", "non_finite", "rel_rmse_16",   "remaining",   "leftover", "shadow_matrix_changes",
+    "scene",           "method",         "setting",
+    "preset",          "temporal",       "blend_weight",
+    "motion",          "frame",          "gpu_ms_median",
+    "temporal_ms",     "rel_rmse",       "max_abs",
+    "frac_off",        "non_finite",     "rel_rmse_16",
+    "remaining",       "leftover",       "shadow_matrix_changes",
+    "tm_rel_rmse",     "tm_rel_rmse_16", "calib_ms",
+    "calib_before_ms", "calib_after_ms", "calib_drift",
+    "remeasured",      "calib_flagged",
 };
+
+// The calibration columns of a timed row (bench/calibration.h; lavapipe has timestamps): before and after
+// measured, calib_ms their mean, the drift within the tolerance unless the row was flagged after its
+// retries (--quick: none); `what` names the row.
+void expectCalibratedRow(const Row& row, const std::string& what, double tolerance = 0.05, int retries = 0) {
+    const double before = number(row.at("calib_before_ms")), after = number(row.at("calib_after_ms"));
+    EXPECT_GT(before, 0.0) << what << ": calib_before_ms '" << row.at("calib_before_ms") << "'";
+    EXPECT_GT(after, 0.0) << what << ": calib_after_ms '" << row.at("calib_after_ms") << "'";
+    EXPECT_NEAR(number(row.at("calib_ms")), 0.5 * (before + after), 1e-4 * (before + after)) << what;
+    const double drift = number(row.at("calib_drift"));
+    EXPECT_GE(drift, std::abs(after / before - 1.0) * (1.0 - 1e-3) - 1e-5) << what;  // 4 digits written
+    const int remeasured = std::stoi(row.at("remeasured"));
+    EXPECT_GE(remeasured, 0) << what;
+    EXPECT_LE(remeasured, retries) << what;
+    const std::string flagged = row.at("calib_flagged");
+    ASSERT_TRUE(flagged == "0" || flagged == "1") << what << ": calib_flagged '" << flagged << "'";
+    if (flagged == "1") {
+        EXPECT_EQ(remeasured, retries) << what << ": flagged only with its retries spent";
+        EXPECT_GE(drift, tolerance) << what;
+    } else {
+        EXPECT_LE(drift, tolerance) << what;
+    }
+}
+
+// The CSV's "# calibration: " comment line (the run's summary).
+std::string calibrationLine(const std::string& csvPath) {
+    std::istringstream lines(readFile(csvPath));
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("# calibration: ", 0) == 0) return line;
+    return "";
+}
+
+// The summary says the run's reference, the spread (min / median / max, max/min) and how many rows were
+// re-measured: at least the CSV's own re-measured rows, of at least its rows.
+void expectCalibrationSummary(const std::string& csvPath, const std::vector<Row>& rows) {
+    const std::string line = calibrationLine(csvPath);
+    ASSERT_EQ(line.rfind("# calibration: reference ", 0), 0u) << csvPath << ": '" << line << "'";
+    for (const char* part : {" measurements min ", " / median ", " / max ", "max/min ", "; re-measured "})
+        EXPECT_NE(line.find(part), std::string::npos) << part << " in '" << line << "'";
+    unsigned remeasured = 0, of = 0;
+    ASSERT_EQ(
+        std::sscanf(line.c_str() + line.find("re-measured "), "re-measured %u of %u rows", &remeasured, &of),
+        2)
+        << line;
+    size_t csvRemeasured = 0;
+    for (const Row& row : rows)
+        csvRemeasured +=
+            row.count("remeasured") && !row.at("remeasured").empty() && row.at("remeasured") != "0";
+    EXPECT_GE(of, rows.size()) << line;
+    EXPECT_GE(remeasured, csvRemeasured) << line;
+}
+
+// The robust error (tm_rel_rmse: relative RMSE of the tonemapped images) beside a finite relative RMSE:
+// finite, non-negative, below 1 (a tonemapped value is below 1).
+void expectTonemapped(const Row& row, const std::string& rmseColumn, const std::string& tmColumn,
+                      const std::string& what) {
+    if (!std::isfinite(number(row.at(rmseColumn)))) return;
+    const double tm = number(row.at(tmColumn));
+    EXPECT_TRUE(std::isfinite(tm) && tm >= 0.0 && tm < 1.0)
+        << what << ": " << tmColumn << " = '" << row.at(tmColumn) << "'";
+}
+
 const std::vector<std::string> kMotionFrames = {"4", "6"};  // --quick: warm-up 4, 2 frames, every 2nd
 
 class BenchSmoke : public ::testing::Test {
@@ -199,6 +303,9 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
         EXPECT_LE(number(row.at("frac_off_1")), 1.0) << what;
         EXPECT_EQ(row.at("width"), "64");
         EXPECT_EQ(row.at("height"), "36");
+        expectCalibratedRow(row, what);
+        for (const char* n : {"1", "8", "16"})
+            expectTonemapped(row, std::string("rel_rmse_") + n, std::string("tm_rel_rmse_") + n, what);
         if (row.at("method") == "postfx-fog") {
             EXPECT_TRUE(std::isfinite(number(row.at("fetches_per_pixel")))) << what;
             EXPECT_TRUE(row.at("floor_ms").empty()) << what << ": no --texture-rate, no floor";
@@ -216,6 +323,8 @@ TEST_F(BenchSmoke, CsvHasEverySettingWithFiniteErrors) {
             EXPECT_TRUE(std::isfinite(number(row.at("step_length_m")))) << what;
         }
     }
+    expectCalibrationSummary(gOut + "/results.csv", rows);
+    EXPECT_NE(readFile(gOut + "/results.md").find("| calibration | reference "), std::string::npos);
     EXPECT_EQ(methods["postfx-fog"], int(kScenes.size() * (sweepRows + kPresets.size())));
     EXPECT_EQ(methods["seed-as-written"], int(kScenes.size() * kStepLengths));
     EXPECT_EQ(methods["seed-fixed-riemann"], int(kScenes.size() * kStepLengths));
@@ -345,8 +454,11 @@ TEST_F(BenchSmoke, MotionCsvHasEveryPresetInMotion) {
         EXPECT_TRUE(std::isfinite(error) && error > 0.0 && error < 0.5) << what << ": " << row.at("rel_rmse");
         EXPECT_EQ(row.at("non_finite"), "0") << what;
         const std::string key = row.at("preset") + " " + row.at("temporal");
+        expectTonemapped(row, "rel_rmse", "tm_rel_rmse", what);
         if (row.at("motion") == "still") {
             EXPECT_GT(number(row.at("gpu_ms_median")), 0.0) << what;
+            expectCalibratedRow(row, what);
+            expectTonemapped(row, "rel_rmse_16", "tm_rel_rmse_16", what);
             EXPECT_EQ(std::isfinite(number(row.at("temporal_ms"))), row.at("temporal") == "1") << what;
             stillOne[key] = error;
             // The preset's own row (results.csv) is the still measurement of the preset as it is: with
@@ -364,6 +476,7 @@ TEST_F(BenchSmoke, MotionCsvHasEveryPresetInMotion) {
             continue;
         }
         EXPECT_EQ(row.at("motion"), "camera") << what;
+        EXPECT_EQ(row.at("calib_ms"), "") << what << ": a frame of a sequence is not timed";
         EXPECT_EQ(row.at("frame"), kMotionFrames[frames[key].size() % kMotionFrames.size()]) << what;
         EXPECT_EQ(row.at("shadow_matrix_changes"), "0") << what << ": the shadow map's fit does not follow";
         frames[key].push_back(error);
@@ -389,18 +502,17 @@ TEST_F(BenchSmoke, MotionCsvHasEveryPresetInMotion) {
 // tricubic; the ray-marched fog at 4 and 16 steps beside it on fog_default; the light-count sweep at 0, 4
 // and 16 lights) under the validation layer, into OUT_DIR/froxel.
 const std::vector<std::string> kFroxelColumns = {
-    "scene",           "method",         "grid_x",           "grid_y",
-    "grid_z",          "distribution",   "tricubic",         "jitter",
-    "lights",          "light_lists",    "light_sweep",      "shadow_sweep",
-    "shadowed_lights", "steps",          "resolution_scale", "shadow_kernel",
-    "noise_size",      "width",          "height",           "warmup",
-    "frames",          "gpu_ms_median",  "gpu_ms_p10",       "gpu_ms_p90",
-    "gpu_ms_min",      "gpu_ms_max",     "light_lists_ms",   "scatter_ms",
-    "integrate_ms",    "apply_ms",       "pass_ms",          "rel_rmse_1",
-    "max_abs_1",       "frac_off_1",     "rel_rmse_8",       "max_abs_8",
-    "frac_off_8",      "rel_rmse_16",    "max_abs_16",       "frac_off_16",
-    "non_finite",      "apply_floor_ms", "apply_over_floor", "pareto_1",
-    "pareto_16",
+    "scene",          "method",           "grid_x",          "grid_y",         "grid_z",
+    "distribution",   "tricubic",         "jitter",          "lights",         "light_lists",
+    "light_sweep",    "shadow_sweep",     "shadowed_lights", "steps",          "resolution_scale",
+    "shadow_kernel",  "noise_size",       "width",           "height",         "warmup",
+    "frames",         "gpu_ms_median",    "gpu_ms_p10",      "gpu_ms_p90",     "gpu_ms_min",
+    "gpu_ms_max",     "calib_ms",         "calib_before_ms", "calib_after_ms", "calib_drift",
+    "remeasured",     "calib_flagged",    "light_lists_ms",  "scatter_ms",     "integrate_ms",
+    "apply_ms",       "pass_ms",          "rel_rmse_1",      "max_abs_1",      "frac_off_1",
+    "rel_rmse_8",     "max_abs_8",        "frac_off_8",      "rel_rmse_16",    "max_abs_16",
+    "frac_off_16",    "tm_rel_rmse_1",    "tm_rel_rmse_8",   "tm_rel_rmse_16", "non_finite",
+    "apply_floor_ms", "apply_over_floor", "pareto_1",        "pareto_16",
 };
 const std::vector<std::string> kFroxelScenes = {"fog_default", "froxel_lights"};
 const size_t kFroxelSweepRows = 1 * 2 * 2 * 2;  // grids × slices × distributions × tricubic
@@ -444,6 +556,7 @@ TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
                                  " " + row.at("distribution") + " tricubic=" + row.at("tricubic") +
                                  " lights=" + row.at("lights") + " lists=" + row.at("light_lists");
         EXPECT_EQ(row.at("width"), "64");
+        expectCalibratedRow(row, what);  // the light and shadow sweeps' timed-only rows too
         const bool isFroxel = row.at("method") == "postfx-froxel";
         EXPECT_TRUE(isFroxel || row.at("method") == "postfx-fog") << what;
         if (isFroxel) {
@@ -477,6 +590,8 @@ TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
                 << what << ": " << column << " = '" << row.at(column) << "'";
         }
         EXPECT_LT(number(row.at("rel_rmse_1")), 0.5) << what;
+        for (const char* n : {"1", "8", "16"})
+            expectTonemapped(row, std::string("rel_rmse_") + n, std::string("tm_rel_rmse_") + n, what);
         EXPECT_EQ(row.at("non_finite"), "0") << what;
         if (!isFroxel) {
             ++fog;
@@ -495,6 +610,7 @@ TEST_F(BenchFroxelSmoke, CsvHasEveryRowWithTheFroxelPassesAndFiniteErrors) {
                 number(row.at("rel_rmse_1"));
         }
     }
+    expectCalibrationSummary(out_ + "/results.csv", rows);
     EXPECT_EQ(froxel, kFroxelScenes.size() * kFroxelSweepRows);
     EXPECT_EQ(fog, kFroxelFogRows);
     EXPECT_EQ(light, kFroxelLightRows);
@@ -529,7 +645,9 @@ TEST_F(BenchFroxelSmoke, MotionCsvHasTheSequencesAndTheSwitchedOffLightIsGone) {
         EXPECT_EQ(row.at("method"), "postfx-froxel") << what;
         EXPECT_NE(row.at("setting").find("grid=16x9x16 dist=power tricubic=off"), std::string::npos) << what;
         ++kinds[row.at("motion")];
+        if (row.at("motion") == "still") expectCalibratedRow(row, what);
         if (row.at("motion") == "still" || row.at("motion") == "camera" || row.at("motion") == "light") {
+            expectTonemapped(row, "rel_rmse", "tm_rel_rmse", what);
             const double error = number(row.at("rel_rmse"));
             EXPECT_TRUE(std::isfinite(error) && error > 0.0 && error < 0.5) << what;
             EXPECT_EQ(row.at("non_finite"), "0") << what;
@@ -608,6 +726,12 @@ const std::vector<std::string> kAtmosphereColumns = {
     "gpu_ms_p90",
     "gpu_ms_min",
     "gpu_ms_max",
+    "calib_ms",
+    "calib_before_ms",
+    "calib_after_ms",
+    "calib_drift",
+    "remeasured",
+    "calib_flagged",
     "transmittance_ms",
     "multiple_scattering_ms",
     "scattering_orders_ms",
@@ -622,6 +746,9 @@ const std::vector<std::string> kAtmosphereColumns = {
     "geometry_rel_rmse",
     "geometry_max_abs",
     "all_rel_rmse",
+    "sky_tm_rel_rmse",
+    "geometry_tm_rel_rmse",
+    "all_tm_rel_rmse",
     "non_finite",
 };
 const std::vector<std::string> kAtmosphereViews = {"ground_sun30", "ground_sunset", "space_sun30",
@@ -676,6 +803,10 @@ TEST_F(BenchAtmosphereSmoke, CsvHasEveryRowWithThePlanAndFiniteErrors) {
         EXPECT_EQ(row.at("height"), "36");
         EXPECT_EQ(row.at("non_finite"), "0") << what;
         EXPECT_GT(number(row.at("gpu_ms_median")), 0.0) << what;  // lavapipe has timestamps
+        expectCalibratedRow(row, what);
+        for (const char* set : {"sky", "geometry", "all"})
+            expectTonemapped(row, std::string(set) + "_rel_rmse", std::string(set) + "_tm_rel_rmse", what);
+        EXPECT_TRUE(std::isfinite(number(row.at("sky_tm_rel_rmse")))) << what;
         const double sky = number(row.at("sky_rel_rmse"));
         EXPECT_TRUE(std::isfinite(sky)) << what;
         EXPECT_LT(sky, 0.1) << what;
@@ -708,6 +839,7 @@ TEST_F(BenchAtmosphereSmoke, CsvHasEveryRowWithThePlanAndFiniteErrors) {
         EXPECT_EQ(has("sky_view"), situation == "sun" || situation == "media") << what;
     }
     ASSERT_EQ(defaultSky.size(), kAtmosphereViews.size());
+    expectCalibrationSummary(out_ + "/results.csv", rows);
 }
 
 TEST_F(BenchAtmosphereSmoke, MarkdownHasTheTargetsPlanAndSweep) {
@@ -739,6 +871,12 @@ const std::vector<std::string> kCloudsColumns = {"view",
                                                  "gpu_ms_p90",
                                                  "gpu_ms_min",
                                                  "gpu_ms_max",
+                                                 "calib_ms",
+                                                 "calib_before_ms",
+                                                 "calib_after_ms",
+                                                 "calib_drift",
+                                                 "remeasured",
+                                                 "calib_flagged",
                                                  "base_noise_ms",
                                                  "detail_noise_ms",
                                                  "shadow_ms",
@@ -750,10 +888,12 @@ const std::vector<std::string> kCloudsColumns = {"view",
                                                  "still_rel_rmse",
                                                  "still_mean_rel_luminance",
                                                  "still_max_abs",
+                                                 "still_tm_rel_rmse",
                                                  "motion_frames",
                                                  "motion_rel_rmse",
                                                  "motion_mean_rel_luminance",
                                                  "motion_max_abs",
+                                                 "motion_tm_rel_rmse",
                                                  "non_finite",
                                                  "model",
                                                  "truth_model_bias",
@@ -796,6 +936,9 @@ TEST_F(BenchCloudsSmoke, CsvHasEveryRowWithStillPassesAndFiniteErrors) {
         EXPECT_EQ(row.at("height"), "36");
         EXPECT_EQ(row.at("non_finite"), "0") << what;
         EXPECT_GT(number(row.at("gpu_ms_median")), 0.0) << what;  // lavapipe has timestamps
+        expectCalibratedRow(row, what);
+        expectTonemapped(row, "still_rel_rmse", "still_tm_rel_rmse", what);
+        expectTonemapped(row, "motion_rel_rmse", "motion_tm_rel_rmse", what);
         for (const char* column :
              {"still_rel_rmse", "still_mean_rel_luminance", "motion_rel_rmse", "motion_mean_rel_luminance",
               "truth_model_bias", "truth_gpu_bias", "truth_gpu_rel_rmse"})
@@ -821,6 +964,7 @@ TEST_F(BenchCloudsSmoke, CsvHasEveryRowWithStillPassesAndFiniteErrors) {
             EXPECT_EQ(pass.rfind("clouds.", 0), 0u) << what << ": " << pass;  // only the clouds' passes
     }
     // Marching every pixel is closer to the full-resolution reference than the half-resolution default.
+    expectCalibrationSummary(out_ + "/results.csv", rows);
     ASSERT_TRUE(still.count("default") && still.count("resolution_scale"));
     EXPECT_LT(still["resolution_scale"], still["default"]);
 }
@@ -907,9 +1051,14 @@ TEST_F(BenchFrameSmoke, CsvHasARowPerFogWithEveryEffectTimedAndAFiniteError) {
         EXPECT_GT(number(rows[r].at(fog)), 0.0) << r;
         EXPECT_EQ(number(rows[r].at("clouds_ms")) > 0.0, r % 3 == 1) << r;
     }
+    for (const Row& row : rows)
+        expectCalibratedRow(row, row.at("fog") + " " + row.at("preset"));
+    expectCalibrationSummary(out_ + "/results.csv", rows);
     for (const Row& row : rows) {
         if (row.at("preset") != "medium") continue;
         const std::string what = row.at("fog");
+        expectTonemapped(row, "rel_rmse_1", "tm_rel_rmse_1", what);
+        expectTonemapped(row, "rel_rmse_16", "tm_rel_rmse_16", what);
         EXPECT_EQ(row.at("width"), "64");
         EXPECT_EQ(row.at("non_finite"), "0") << what;
         const double total = number(row.at("gpu_ms_median"));
@@ -984,20 +1133,25 @@ TEST_F(BenchFirstFrameSmoke, PrewarmedRowsCompileNothingInRecord) {
 }
 
 // BenchRepeatSmoke: two runs of `postfx-bench --quick` on fog_default that differ only in how many frames
-// each setting's warm-up and timing take give every error to the last digit, the temporal presets' too:
-// the error frames start from a camera cut and the same frames before them, whatever ran before.
+// each setting's warm-up and timing take, and in how often it is timed (the second run has every row timed
+// again, the calibration's tolerance 0), give every error to the last digit, the temporal presets' too: the
+// error frames start from a camera cut and the same frames before them, whatever ran before. The second run
+// has each row re-measured once and flagged, and says so on stdout.
 class BenchRepeatSmoke : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
         for (int run = 0; run < 2; ++run) {
             const std::string out = gOut + "/repeat" + std::to_string(run);
             std::filesystem::remove_all(out);
-            const std::string frames = run == 0 ? " --warmup 1 --frames 2" : " --warmup 7 --frames 5";
+            std::filesystem::create_directories(out);
+            const std::string frames =
+                run == 0 ? " --warmup 1 --frames 2"
+                         : " --warmup 7 --frames 5 --calibration-tolerance 0 --calibration-retries 1";
             const std::string command =
                 "'" + gBench +
                 "' --quick --validation --size 64x36 --scenes fog_default --steps 4 --scales 1 "
                 "--shadow-kernels 1 --no-baselines --no-motion" +
-                frames + " --scene-dir '" + gSceneDir + "' --out '" + out + "'";
+                frames + " --scene-dir '" + gSceneDir + "' --out '" + out + "' > '" + out + "/stdout.txt'";
             std::printf("running: %s\n", command.c_str());
             std::fflush(stdout);
             status_[run] = std::system(command.c_str());
@@ -1008,8 +1162,10 @@ protected:
 int BenchRepeatSmoke::status_[2] = {-1, -1};
 
 TEST_F(BenchRepeatSmoke, ErrorsDoNotDependOnTheFramesBeforeThem) {
-    ASSERT_EQ(status_[0], 0) << "the first postfx-bench run failed (its output is above)";
-    ASSERT_EQ(status_[1], 0) << "the second postfx-bench run failed (its output is above)";
+    ASSERT_EQ(status_[0], 0) << "the first postfx-bench run failed:\n"
+                             << readFile(gOut + "/repeat0/stdout.txt");
+    ASSERT_EQ(status_[1], 0) << "the second postfx-bench run failed:\n"
+                             << readFile(gOut + "/repeat1/stdout.txt");
     std::vector<Row> rows[2];
     for (int run = 0; run < 2; ++run) {
         std::vector<std::string> header;
@@ -1026,9 +1182,29 @@ TEST_F(BenchRepeatSmoke, ErrorsDoNotDependOnTheFramesBeforeThem) {
         ASSERT_EQ(a.at("steps"), b.at("steps"));
         ASSERT_NE(a.at("frames"), b.at("frames"));  // the runs did differ before the error frames
         if (!a.at("preset").empty() && presetTemporal(a.at("preset"))) ++temporalRows;
-        for (const char* column : {"rel_rmse_1", "rel_rmse_8", "rel_rmse_16", "max_abs_1", "max_abs_16"})
+        for (const char* column : {"rel_rmse_1", "rel_rmse_8", "rel_rmse_16", "max_abs_1", "max_abs_16",
+                                   "tm_rel_rmse_1", "tm_rel_rmse_16"})
             EXPECT_EQ(a.at(column), b.at(column)) << column << " of row " << i << " (preset '"
                                                   << a.at("preset") << "', steps " << a.at("steps") << ")";
+        const std::string what = "row " + std::to_string(i);
+        expectCalibratedRow(a, what);
+        // Tolerance 0: each row timed again once (its drift is never exactly 0), then kept and flagged.
+        expectCalibratedRow(b, what + " (tolerance 0)", 0.0, 1);
+        EXPECT_EQ(b.at("remeasured"), "1") << what;
+        EXPECT_EQ(b.at("calib_flagged"), "1") << what;
     }
     EXPECT_EQ(temporalRows, 4u);  // the four presets, temporal on: what the history would have changed
+    for (int run = 0; run < 2; ++run)
+        expectCalibrationSummary(gOut + "/repeat" + std::to_string(run) + "/results.csv", rows[run]);
+    const std::string line = calibrationLine(gOut + "/repeat1/results.csv");
+    const std::string all = std::to_string(rows[1].size());
+    EXPECT_NE(line.find("re-measured " + all + " of " + all + " rows (" + all + " more attempts), " + all +
+                        " flagged"),
+              std::string::npos)
+        << line;
+    // stdout: each row's calibration and re-measurements, the run's summary.
+    const std::string text = readFile(gOut + "/repeat1/stdout.txt");
+    EXPECT_NE(text.find("calib ms"), std::string::npos) << text;
+    EXPECT_NE(text.find(" 1!"), std::string::npos) << text;
+    EXPECT_NE(text.find("\ncalibration: reference "), std::string::npos) << text;
 }
