@@ -96,6 +96,7 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvTexel, float expectedSur
     vec2 w4[4] = vec2[4](-0.5 * f3 + f2 - 0.5 * f, 1.5 * f3 - 2.5 * f2 + 1.0, -1.5 * f3 + 2.0 * f2 + 0.5 * f,
                          0.5 * f3 - 0.5 * f2);
     vec4 sum = vec4(0.0);
+    vec4 innerLo = vec4(1e30), innerHi = vec4(-1e30);  // the matching texels of the bilinear 2×2
     float weight = 0.0, positive = 0.0;
     for (int k = 0; k < 16; ++k) {
         ivec2 o = ivec2(k & 3, k >> 2);
@@ -111,11 +112,18 @@ bool reprojectedHistory(vec3 point, uvec2 texel, vec2 uvTexel, float expectedSur
             sum += w * h;
             weight += w;
             positive += max(w, 0.0);
+            if (all(greaterThanEqual(o, ivec2(1))) && all(lessThanEqual(o, ivec2(2)))) {
+                innerLo = min(innerLo, h);
+                innerHi = max(innerHi, h);
+            }
         }
     }
     // Too little of the footprint matched (its positive lobes mostly rejected): no history.
     if (!(weight > 0.25) || !(positive > 0.5)) return false;
     history = sum / weight;
+    // A sparse update's history is not clamped to a neighbourhood box: without this, Catmull-Rom's
+    // overshoot would grow frame after frame while a skipped texel is only resampled (a moving view).
+    if (cl.sparse.x > 1u && innerLo.x <= innerHi.x) history = clamp(history, innerLo, innerHi);
     history.rgb *= temporal.previous.y;  // the previous frame's pre-exposure -> this one's
     return true;
 }

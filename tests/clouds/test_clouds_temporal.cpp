@@ -158,7 +158,7 @@ TEST_F(CloudsTemporalTest, PanningViewDoesNotGhost) {
             "without %s\n",
             b, with.summary().c_str(), without.summary().c_str());
         EXPECT_EQ(with.nonFinite, 0u);
-        // A sparse update's skipped texels are only resampled while the view pans (measured 7.9% with
+        // A sparse update's skipped texels are only resampled while the view pans (measured 8.4% with
         // block 2 against 6.2% with block 1).
         EXPECT_LT(with.relativeRmse, (b == 1 ? 1.75 : 2.2) * without.relativeRmse) << "update_block " << b;
         EXPECT_LT(with.relativeRmse, 0.09) << "update_block " << b;
