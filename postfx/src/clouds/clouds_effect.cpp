@@ -474,9 +474,8 @@ Status CloudsEffect::declare(core::FrameBuilder& b) const {
         b.pass(kTemporal[rgba32], groupsFor(march.x), groupsFor(march.y), 1)
             .bind(gpu::kCloudBindingUniforms, uniforms)
             .bind(gpu::kCloudBindingScatter, scatterImage, Use::StorageRead)
-            .bind(gpu::kCloudBindingDepth, depthInput.image, block > 1 ? Use::Sampled : Use::BoundOnly)
-            .bind(gpu::kCloudBindingDistance, distance[t.writeSlot],
-                  block > 1 ? Use::StorageReadWrite : Use::StorageRead)
+            .bind(gpu::kCloudBindingDepth, depthInput.image, Use::Sampled)  // statically used by the shader
+            .bind(gpu::kCloudBindingDistance, distance[t.writeSlot], Use::StorageReadWrite)  // skipped texels
             .bind(gpu::kCloudBindingHistoryIn, history[t.readSlot], Use::StorageRead)
             .bind(gpu::kCloudBindingDistanceIn, distance[t.readSlot], Use::StorageRead)
             .bind(gpu::kCloudBindingTemporal, temporalUniforms)
