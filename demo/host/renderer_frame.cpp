@@ -438,17 +438,10 @@ bool Renderer::Impl::recordMeterCopy(VkCommandBuffer cmd, uint64_t frameIndex, s
     if (!copy.buffer && !createBuffer(host, VkDeviceSize(extent.width) * extent.height * 8,
                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, copy, error))
         return false;
-    imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kCompute,
-                 VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(cmd, hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.buffer, 1, &region);
+    recordHdrCopy(cmd, copy);
     imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT, kCompute,
                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    bufferBarrier(cmd, copy, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     meterCopyExposure[slot] = preExposure;
     meterCopyPending[slot] = true;
     return true;
@@ -499,17 +492,22 @@ void Renderer::requestCameraCut() {
     impl_->cameraCutRequested = true;
 }
 
-// After recordFrame: HDR image (GENERAL, compute writes) -> readback buffer -> host. The image is left in
-// TRANSFER_SRC_OPTIMAL; the next frame discards it anyway.
-void Renderer::Impl::recordReadback(VkCommandBuffer cmd) const {
+// After recordFrame: HDR image (GENERAL, compute writes) -> `buffer` -> host. The image is left in
+// TRANSFER_SRC_OPTIMAL.
+void Renderer::Impl::recordHdrCopy(VkCommandBuffer cmd, const GpuBuffer& buffer) const {
     imageBarrier(cmd, hdr, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, kCompute,
                  VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {extent.width, extent.height, 1};
-    vkCmdCopyImageToBuffer(cmd, hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, readback.buffer, 1, &region);
-    bufferBarrier(cmd, readback, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+    vkCmdCopyImageToBuffer(cmd, hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer.buffer, 1, &region);
+    bufferBarrier(cmd, buffer, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+}
+
+// The readback of render(): the next frame discards the image anyway.
+void Renderer::Impl::recordReadback(VkCommandBuffer cmd) const {
+    recordHdrCopy(cmd, readback);
 }
 
 }  // namespace demo

@@ -128,6 +128,7 @@ struct Renderer::Impl {
     bool createResources(std::string& error);
     bool createFrameSet(std::string& error);
     bool createPostfx(std::string& error);
+    void recordHdrCopy(VkCommandBuffer cmd, const GpuBuffer& buffer) const;
     void recordReadback(VkCommandBuffer cmd) const;
     // options.meterInterval: measures `slot`'s copy when one waits (its frame done: the caller waited for
     // it) into meteredExposure; after recording frame `frameIndex`, records its copy when it is due.
