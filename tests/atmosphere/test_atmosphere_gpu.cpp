@@ -67,19 +67,12 @@ protected:
 
     LutImage readLut(const char* name) { return {readLutTexels(*host, gpu, *context, name)}; }
 
-    // A scattering-orders LUT small enough for lavapipe (the reference's table is as small:
-    // atmosphere_reference_image.h).
-    static void smallOrders(postfx::AtmosphereSettings& s) {
-        s.scatteringOrdersLutSize = {16, 16, 8};
-        s.scatteringOrdersAzimuthSize = 4;
-        s.scatteringOrdersDirections = 144;
-        s.scatteringOrdersSteps = 24;
-        s.scatteringOrders = 4;
-    }
-
-    postfx::FrameInfo skyFrame(double sunElevationDeg) const {
+    // The atmosphere at its defaults but for the small scattering-orders table (smallScatteringOrders),
+    // unless `defaultTables`.
+    postfx::FrameInfo skyFrame(double sunElevationDeg, bool defaultTables = false) const {
         postfx::FrameInfo frame;
         frame.atmosphere.enabled = true;
+        if (!defaultTables) smallScatteringOrders(frame.atmosphere);
         const double e = glm::radians(sunElevationDeg);
         frame.sun.toSun = glm::vec3(float(std::cos(e)), float(std::sin(e)), 0.0f);
         frame.sun.illuminance = glm::vec3(1.0f);
@@ -202,7 +195,6 @@ TEST_F(AtmosphereGpuTest, MultipleScatteringLutMatchesReference) {
 // and half floats. Each node: ΨR and ΨM per channel, and the ground's E≥2.
 TEST_F(AtmosphereGpuTest, ScatteringOrdersLutMatchesReference) {
     postfx::FrameInfo frame = skyFrame(30.0);
-    smallOrders(frame.atmosphere);
     render(frame, images(frame.camera, 8, 4));
     const LutImage lut = readLut("atmosphere.multiple_scattering");
     const postfx::UVec3 n = frame.atmosphere.scatteringOrdersLutSize;
@@ -422,7 +414,6 @@ TEST_F(AtmosphereGpuTest, SkyWithMultipleScatteringMatchesReference) {
         for (double elevation : {30.0, 2.0}) {
             postfx::FrameInfo frame = skyFrame(elevation);
             frame.atmosphere.multipleScattering = model;
-            smallOrders(frame.atmosphere);
             frame.atmosphere.sunAngularRadiusDeg = 0.0f;
             frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.1, 0.3}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
             const FogHarnessImages im = images(frame.camera, 16, 8);
@@ -444,7 +435,6 @@ TEST_F(AtmosphereGpuTest, SkyWithMultipleScatteringMatchesReference) {
 TEST_F(AtmosphereGpuTest, GroundSeenFromTenKilometresMatchesReference) {
     for (double elevation : {40.0, 5.0}) {
         postfx::FrameInfo frame = skyFrame(elevation);
-        smallOrders(frame.atmosphere);
         frame.atmosphere.sunAngularRadiusDeg = 0.0f;
         frame.camera = lookCamera({0.0, 10000.0, 0.0}, {1.0, -0.6, 0.3}, {0.0, 1.0, 0.0}, 40.0f, 2.0f);
         const FogHarnessImages im = images(frame.camera, 16, 8);
@@ -476,7 +466,7 @@ TEST_F(AtmosphereGpuTest, TableViewsAtDefaultSettingsMatchTheReference) {
                 for (const double zenith : {0.0, 45.0, 80.0, 85.0, 89.0, 95.0, 120.0})
                     for (const double azimuth : {0.0, 90.0, 180.0}) {
                         if (zenith == 0.0 && azimuth != 0.0) continue;
-                        postfx::FrameInfo frame = skyFrame(sunElevation);
+                        postfx::FrameInfo frame = skyFrame(sunElevation, true);
                         frame.atmosphere.multipleScattering = model;
                         frame.atmosphere.sunAngularRadiusDeg = 0.0f;
                         const atm::ViewSunRay ray =
@@ -541,7 +531,6 @@ TEST_F(AtmosphereGpuTest, TableViewsAtDefaultSettingsMatchTheReference) {
 // the planet's shadow begins; the reference's 600 do it finely).
 TEST_F(AtmosphereGpuTest, SunsetSequenceChangesOnlyAsTheSunDoes) {
     postfx::FrameInfo frame = skyFrame(10.0);
-    smallOrders(frame.atmosphere);
     frame.atmosphere.sunAngularRadiusDeg = 0.0f;
     frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.15, 0.4}, {0.0, 1.0, 0.0}, 90.0f, 2.0f);
     const FogHarnessImages im = images(frame.camera, 16, 8);

@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ protected:
     void SetUp() override {
         ReversedZContextTest::SetUp();
         frame.atmosphere.enabled = true;
+        smallScatteringOrders(frame.atmosphere);
         frame.sun.toSun = {0.8f, 0.6f, 0.0f};
         frame.sun.illuminance = postfx::Vec3(1e5f);
         setCamera({0.0, 10.0, 0.0}, {1.0, 0.0, 0.0});
@@ -40,9 +42,10 @@ protected:
     }
 
     // Plans and records the frame; the recorded passes (timings) must be the plan's.
-    std::vector<std::string> planAndRun() {
+    std::vector<std::string> planAndRun(
+        const std::function<void(const postfx::FrameInfo&)>& beforeRecord = {}) {
         frame.frameIndex = frameIndex++;
-        last = planAndRecord(*host, gpu, *context, im, frame);
+        last = planAndRecord(*host, gpu, *context, im, frame, beforeRecord);
         return passNames(last);
     }
 
@@ -61,9 +64,18 @@ Passes withOrders(Passes passes, uint32_t orders = 4) {
 }
 
 TEST_F(AtmospherePlanTest, StillRecordsOnlyApplyAndChangesRebuildWhatDependsOnThem) {
-    EXPECT_EQ(planAndRun(), (Passes{kT, kOrder, kOrder, kOrder, kOrder, kSky, kAp, kApply}));
-    // The LUTs' bytes (rgba16f) and the uniforms: the scattering orders' LUT and its two working images are
-    // (32 view nodes × 8 azimuths) × 64 sun nodes × (2 × 16 heights + 1).
+    // The frames record the small scattering-orders table (SetUp); the LUTs' bytes (rgba16f) and the
+    // uniforms are checked on the plan of the same frame at the default sizes, made just before it records:
+    // the scattering orders' LUT and its two working images are (32 view nodes × 8 azimuths) × 64 sun nodes
+    // × (2 × 16 heights + 1).
+    postfx::FramePlan defaults;
+    EXPECT_EQ(planAndRun([&](const postfx::FrameInfo& f) {
+                  postfx::FrameInfo d = f;
+                  d.atmosphere = postfx::AtmosphereSettings{};
+                  d.atmosphere.enabled = true;
+                  ASSERT_TRUE(context->plan(d, defaults).ok());
+              }),
+              (Passes{kT, kOrder, kOrder, kOrder, kOrder, kSky, kAp, kApply}));
     const uint64_t orders = 32 * 8 * 64 * 33 * 8;
     for (const auto& [name, bytes] : {std::pair<std::string, uint64_t>{kT, 512 * 128 * 8},
                                       {kMs, orders},
@@ -73,7 +85,7 @@ TEST_F(AtmospherePlanTest, StillRecordsOnlyApplyAndChangesRebuildWhatDependsOnTh
                                       {kAp, 32 * 32 * 32 * 8},
                                       {"atmosphere.aerial_transmittance", 32 * 32 * 32 * 8}}) {
         const postfx::PlannedResource* r = nullptr;
-        for (const postfx::PlannedResource& x : last.resources)
+        for (const postfx::PlannedResource& x : defaults.resources)
             if (x.name == name) r = &x;
         ASSERT_TRUE(r) << name;
         EXPECT_EQ(r->bytes, bytes) << name;

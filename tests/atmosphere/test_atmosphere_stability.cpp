@@ -41,6 +41,7 @@ protected:
         info.messageUserData = this;
         ASSERT_TRUE(createContext(context, info).ok());
         frame.atmosphere.enabled = true;
+        smallScatteringOrders(frame.atmosphere);
         frame.sun.illuminance = postfx::Vec3(1e5f);
         setSun(30.0);
         look({0.0, 2.0, 0.0}, {1.0, 0.05, 0.2});
@@ -226,6 +227,7 @@ TEST_F(AtmosphereStability, TinyAndHugePlanets) {
     expectStable("planet of 636 m (Earth scaled by 1e-4)", 0.05, &tiny);
     frame.atmosphere = postfx::AtmosphereSettings{};
     frame.atmosphere.enabled = true;
+    smallScatteringOrders(frame.atmosphere);
     frame.atmosphere.groundRadius = 9.9e7f;
     frame.atmosphere.topRadius = 1e8f;
     look({0.0, 2.0, 0.0}, {1.0, 0.05, 0.2});

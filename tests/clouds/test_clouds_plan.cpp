@@ -143,6 +143,7 @@ TEST_F(CloudsPlanTest, NoiseOnceThenOnlyTheMarchAndNothingWithoutCoverage) {
 
 TEST_F(CloudsPlanTest, WithTheAtmosphereTheMarchReadsItsLuts) {
     frame.atmosphere.enabled = true;
+    smallScatteringOrders(frame.atmosphere);
     frame.clouds.resolutionScale = 1.0f;
     frame.clouds.temporal.enabled = false;
     frame.clouds.castShadows = false;

@@ -438,11 +438,15 @@ std::vector<std::string> passNames(const postfx::FramePlan& plan) {
 
 postfx::FramePlan planAndRecord(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
                                 postfx::Context& context, const FogHarnessImages& images,
-                                const postfx::FrameInfo& frame) {
+                                const postfx::FrameInfo& frame,
+                                const std::function<void(const postfx::FrameInfo&)>& beforeRecord) {
     postfx::FramePlan plan;
     postfx::Status planned = postfx::Status::success();
     FogHarness harness(host, gpu);
-    harness.onBeforeRecord = [&](const postfx::FrameInfo& f) { planned = context.plan(f, plan); };
+    harness.onBeforeRecord = [&](const postfx::FrameInfo& f) {
+        if (beforeRecord) beforeRecord(f);
+        planned = context.plan(f, plan);
+    };
     std::vector<float> out;
     const postfx::Status s = harness.run(context, images, frame, out);
     EXPECT_TRUE(s.ok()) << s.message;

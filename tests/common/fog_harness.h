@@ -89,10 +89,13 @@ protected:
 };
 
 // Plans `frame` and records it with `images` (FogHarness): expects both to succeed and the passes it
-// recorded (their timings) to be the plan's; returns the plan.
+// recorded (their timings) to be the plan's; returns the plan. `beforeRecord`, if given, sees the frame
+// as it is recorded (its images filled in), before it is planned.
 postfx::FramePlan planAndRecord(demo::VulkanHost& host, const postfx::core::Gpu& gpu,
                                 postfx::Context& context, const FogHarnessImages& images,
-                                const postfx::FrameInfo& frame);
+                                const postfx::FrameInfo& frame,
+                                const std::function<void(const postfx::FrameInfo&)>& beforeRecord = {});
+
 // A resource postfx holds (Context::recordImageReadback: a LUT, a noise texture) read back as stored,
 // texel after texel; `extent` receives its extent.
 std::vector<uint8_t> readHeldImage(demo::VulkanHost& host, const postfx::core::Gpu& gpu,

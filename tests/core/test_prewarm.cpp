@@ -35,6 +35,7 @@ struct Scene {
         f.sun.illuminance = postfx::Vec3(1.2e5f);
         f.ambient = postfx::Vec3(100.0f);
         f.atmosphere.enabled = true;
+        smallScatteringOrders(f.atmosphere);
         f.clouds.enabled = true;
         f.clouds.noise.baseSize = 32;
         f.clouds.noise.detailSize = 16;

@@ -42,6 +42,7 @@ TEST_F(CoreVulkan10Test, EveryEffectRendersWithoutValidationMessages) {
     f.sun.toSun = glm::normalize(glm::vec3(0.3f, 0.5f, -0.8f));
     f.sun.illuminance = postfx::Vec3(1.2e5f);
     f.atmosphere.enabled = true;
+    smallScatteringOrders(f.atmosphere);
     f.clouds.enabled = true;
     f.clouds.noise.baseSize = 32;
     f.clouds.noise.detailSize = 16;

@@ -72,6 +72,7 @@ TEST_F(DemoRendererExposure, EndsOfTheRangeKeepThePhysicalImage) {
         demo::Scene scene;
         std::string error;
         ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/" + file, scene, error)) << error;
+        test::smallScatteringOrders(scene.atmosphere);
         float p15 = 0.0f;
         const demo::ImageF gpu15 = render(scene, 15.0f, false, &p15);
         const demo::ImageF ref15 = render(scene, 15.0f, true);
@@ -103,6 +104,7 @@ TEST_F(DemoRendererExposure, WindowMeteringReachesWhatRenderMeters) {
         demo::Scene scene;
         std::string error;
         ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/" + file, scene, error)) << error;
+        test::smallScatteringOrders(scene.atmosphere);
         {
             float metered = 0.0f;
             render(scene, ev, false, &metered);

@@ -195,6 +195,7 @@ TEST_F(DemoRendererTransparency, ForwardQuadMatchesTheAerialPerspective) {
     scene.sun.illuminance = glm::vec3(120000.0f);
     scene.objects[1] = quad({0.0f, 300.0f, -2000.0f}, {400.0f, 250.0f}, {0.6f, 0.5f, 0.4f});
     scene.atmosphere.enabled = true;
+    smallScatteringOrders(scene.atmosphere);
     const QuadStats s = forwardAgainstOpaque(scene, 1);
     std::printf("aerial perspective: %zu pixels, mean %.4f%%, max %.4f%%\n", s.pixels, 100 * s.meanRelative,
                 100 * s.maxRelative);
@@ -284,6 +285,7 @@ TEST_F(DemoRendererTransparency, QuadInFrontOfTheCloudsGetsNoCloud) {
     q.forward = true;
     scene.objects.push_back(q);
     scene.atmosphere.enabled = true;
+    smallScatteringOrders(scene.atmosphere);
     demo::Scene clouds = scene;
     clouds.clouds.enabled = true;
     clouds.clouds.coverage = 0.8f;
@@ -317,6 +319,7 @@ TEST_F(DemoRendererTransparency, TransparentScenesRender) {
         demo::Scene scene;
         std::string error;
         ASSERT_TRUE(demo::loadSceneFile(kScenesDir + "/" + name, scene, error)) << error;
+        smallScatteringOrders(scene.atmosphere);
         ASSERT_TRUE(demo::hasForwardDraws(scene));
         const demo::ImageF image = render(scene);
         ASSERT_EQ(image.rgba.size(), size_t(kW) * kH * 4) << name;

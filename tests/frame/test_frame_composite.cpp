@@ -91,10 +91,12 @@ protected:
         const FogHarnessImages im = images(base);
         postfx::FrameInfo sky = base, clouds = base, fog = base, all = base;
         sky.atmosphere.enabled = true;
+        smallScatteringOrders(sky.atmosphere);
         // The clouds and the fog each alone, under an atmosphere of no medium at all: with the atmosphere
         // on, the cloud layer follows the planet's curvature (its own transmittance is the curved layer's).
         for (postfx::FrameInfo* f : {&clouds, &fog}) {
             f->atmosphere.enabled = true;
+            smallScatteringOrders(f->atmosphere);
             f->atmosphere.mieAbsorption = 0.0f;
             f->atmosphere.ozoneAbsorption = {0.0f, 0.0f, 0.0f};
         }

@@ -118,6 +118,7 @@ TEST_F(FrameLookupTest, AerialPerspectiveMatchesItsCompositeWithin1Percent) {
     f.sun.illuminance = {1e5f, 1e5f, 1e5f};
     f.preExposure = 1e-3f;
     f.atmosphere.enabled = true;
+    smallScatteringOrders(f.atmosphere);
     for (const double farthest : {10000.0, 40000.0}) {
         if (farthest > 10000.0) {
             f.volumetricsLookup.extent.z = 128;

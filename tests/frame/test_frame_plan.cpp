@@ -31,6 +31,7 @@ protected:
         frame.sun.toSun = {0.3f, 0.5f, -0.8f};
         frame.sun.illuminance = postfx::Vec3(1.2e5f);
         frame.atmosphere.enabled = true;
+        smallScatteringOrders(frame.atmosphere);
         frame.clouds.enabled = true;
         frame.clouds.noise.baseSize = 32;
         frame.clouds.noise.detailSize = 16;

@@ -33,6 +33,7 @@ protected:
         f.sun.illuminance = {1e5f, 1e5f, 1e5f};
         f.ambient = {300.0f, 400.0f, 600.0f};
         f.atmosphere.enabled = true;
+        smallScatteringOrders(f.atmosphere);
         f.clouds.enabled = true;
         f.clouds.bottomHeight = 300.0f;
         f.clouds.topHeight = 600.0f;

@@ -66,6 +66,7 @@ protected:
         f.ambient = {0.4f, 0.5f, 0.6f};
         f.preExposure = 1.0f / 8000.0f;
         f.atmosphere.enabled = true;
+        smallScatteringOrders(f.atmosphere);
         f.fog.enabled = true;
         f.fog.density = 0.004f;
         f.fog.heightFalloff = 0.0f;
