@@ -65,7 +65,7 @@ const char* situationName(AtmosphereSituation situation);  // "still", "camera",
 constexpr double kAtmosphereMotion = 0.01;                 // [rad], 10× the rebuild threshold
 constexpr float kAtmosphereMediaChange = 1e-3f;
 
-// One point of the sweep: postfx's default AtmosphereSettings with one knob changed.
+// One point of the sweep: the sweep's base settings (postfx's defaults) with one knob changed.
 struct AtmospherePoint {
     std::string knob;   // "default" or one of atmosphereKnobs()
     std::string value;  // "256x64", "40", ... ("" for default)
@@ -79,8 +79,13 @@ const std::vector<std::string>& atmosphereKnobs();
 // Each knob's values (text as on the command line); a knob absent or empty is not swept.
 struct AtmosphereSweepOptions {
     std::vector<std::pair<std::string, std::vector<std::string>>> values;
+    // The settings every point starts from: postfx's defaults (--quick: quickScatteringOrders).
+    postfx::AtmosphereSettings base;
 };
 AtmosphereSweepOptions defaultAtmosphereSweep(bool quick);
+// --quick's scattering-orders table (16×16×8 nodes, 4 azimuths, 144 directions): lavapipe builds the
+// default one in about 6 s, once per context and media change.
+void quickScatteringOrders(postfx::AtmosphereSettings& settings);
 // `settings` with `knob` set to `value`; false with `error` for a bad value (the settings' own ranges are
 // checked by postfx::validateAtmosphereSettings).
 bool applyAtmosphereKnob(postfx::AtmosphereSettings& settings, const std::string& knob,

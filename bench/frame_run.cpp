@@ -1,5 +1,7 @@
 #include "frame_run.h"
 
+#include "atmosphere_bench.h"
+
 #include "progress.h"
 #include "report.h"
 
@@ -187,6 +189,12 @@ int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std
     if (!showcase.atmosphere.enabled || !showcase.clouds.enabled || !showcase.froxelFog.enabled)
         return fail(path + ": the showcase needs the atmosphere, the clouds and the froxel fog");
     if (args.shadowMapSize > 0) showcase.clouds.shadowMap.size = args.shadowMapSize;
+    if (args.quickScene) {
+        quickScatteringOrders(showcase.atmosphere);
+        showcase.froxelFog.grid = {32, 18, 32};
+        for (demo::Light& l : showcase.lights)
+            l.shadowResolution = std::min(l.shadowResolution, 128u);
+    }
     std::vector<Row> rows;
     RunInfo info;
     for (const auto& [width, height] : args.sizes) {

@@ -163,7 +163,8 @@ const char* kUsage =
     "and the error against reference (a) (postfx::reference::renderAtmosphere) for a sweep of LUT sizes and\n"
     "sample counts, one knob at a time. Writes results.csv and results.md; the fog sweep's options do not\n"
     "apply, --size, --warmup*, --frames, --reference-steps [512; quick: 128], --error-stride, --out\n"
-    "[docs/accuracy-cost/atmosphere], --quick and --validation do.\n"
+    "[docs/accuracy-cost/atmosphere], --quick and --validation do; quick's rows start from a\n"
+    "scattering-orders table of 16x16x8 nodes, 4 azimuths and 144 directions.\n"
     "  --atmosphere           this mode\n"
     "  --atmosphere-views LIST  ground_sun30, ground_sunset, space_sun30, orbit_sun30 [all]\n"
     "  --atmosphere-sweep-views LIST  the views the sweep runs on [all measured; quick: ground_sunset]\n"
@@ -222,7 +223,9 @@ const char* kUsage =
     "  --frame-presets LIST   low, medium, high, ultra [all; quick: medium]\n"
     "  --frame-budget MS      also a row per fog with the clouds and the ray-marched fog on quality Auto\n"
     "                         under one frame budget (FrameInfo::budgetMs) [1; quick: 0]; 0: none\n"
-    "                         quick also shrinks the clouds' shadow map to 64x64\n"
+    "                         quick also shrinks the clouds' shadow map to 64x64, the atmosphere's\n"
+    "                         scattering-orders table to 16x16x8, 4 azimuths, 144 directions, the froxel\n"
+    "                         grid to 32x18x32 and the lights' shadow maps to at most 128x128\n"
     "first frame (--first-frame; docs/integration.md, \"Pipelines\"): the CPU time of record() in a new\n"
     "context's first frames, on the showcase (froxel fog), its ray-marched fog version, and that one with\n"
     "the clouds and the fog on quality Auto: without prewarm, after Context::prewarm, with a "
@@ -882,6 +885,7 @@ int runFrame(const Args& args, const std::string& command) {
     a.referenceSteps = args.referenceSteps;
     a.errorStride = args.errorStride;
     if (args.quick) a.shadowMapSize = 64;  // lavapipe: the default 512² map would take most of the time
+    a.quickScene = args.quick;
     a.out = args.out;
     return bench::runFrame(a, command, utcNow());
 }
