@@ -44,6 +44,15 @@ std::vector<float> floatsAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t
     return out;
 }
 
+// `count` 8-bit UNORM texels at `offset` as values in [0, 1].
+std::vector<float> unormAt(const GpuBuffer& buffer, VkDeviceSize offset, size_t count) {
+    std::vector<float> out(count);
+    const auto* bytes = static_cast<const uint8_t*>(buffer.mapped) + offset;
+    for (size_t i = 0; i < count; ++i)
+        out[i] = float(bytes[i]) / 255.0f;
+    return out;
+}
+
 }  // namespace
 
 bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& error, uint32_t stepsPerPixel,
@@ -134,6 +143,19 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     if (cloudShadows && !submitFrame([] { return true; })) return false;
     const bool cloudShadow = fog && r.postfx->imageView(postfx::kCloudsShadowMap) != VK_NULL_HANDLE;
     const uint32_t cloudShadowEdge = gpuScene.clouds.shadowMap.size;
+    // The clouds' generated noise textures, read back for their reference (the CPU port would make the same
+    // texels, to a unit of their 8 bits: CloudsGpuTest.NoiseTexturesMatchTheCpuPort, in seconds of CPU
+    // time a 128³ texture). Where postfx holds none this frame, the reference generates them.
+    const postfx::CloudNoiseSettings& cloudNoiseSettings = gpuScene.clouds.noise;
+    const bool cloudNoise = gpuScene.clouds.enabled && cloudNoiseSettings.enabled &&
+                            !cloudNoiseSettings.hostBaseTexture && !cloudNoiseSettings.hostDetailTexture;
+    const size_t baseNoiseTexels = cloudNoise ? size_t(cloudNoiseSettings.baseSize) *
+                                                    cloudNoiseSettings.baseSize * cloudNoiseSettings.baseSize
+                                              : 0;
+    const size_t detailNoiseTexels = cloudNoise
+                                         ? size_t(cloudNoiseSettings.detailSize) *
+                                               cloudNoiseSettings.detailSize * cloudNoiseSettings.detailSize
+                                         : 0;
 
     // One host-visible buffer: depth, shadow map, noise, the clouds' shadow map, the local shadow atlas (each
     // as the GPU stores it; the atlas whole, as postfx reads it).
@@ -148,8 +170,10 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const VkDeviceSize depthOffset = 0;
     const VkDeviceSize shadowOffset = depthOffset + pixels * sizeof(float);
     const VkDeviceSize noiseOffset = shadowOffset + shadowTexels * sizeof(float);
+    const VkDeviceSize baseNoiseOffset = noiseOffset + noiseTexels;
+    const VkDeviceSize detailNoiseOffset = baseNoiseOffset + baseNoiseTexels;
     // Floats after bytes: aligned to 4.
-    const VkDeviceSize cloudShadowOffset = (noiseOffset + noiseTexels + 3) / 4 * 4;
+    const VkDeviceSize cloudShadowOffset = (detailNoiseOffset + detailNoiseTexels + 3) / 4 * 4;
     const VkDeviceSize atlasOffset = cloudShadowOffset + cloudShadowTexels * sizeof(float);
     GpuBuffer buffer;
     if (!createBuffer(r.host, atlasOffset + atlasTexels * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -162,6 +186,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     } guard{device, buffer};
 
     uint32_t noiseSize = 0, cloudShadowSize = 0;
+    bool cloudNoiseReadBack = false;
     const bool submitted = submitFrame([&] {
         r.recordReadback(cmd);  // the HDR image: postfx only read it
         recordDepthCopy(cmd, r.gbuffer.depth, buffer, depthOffset);
@@ -179,6 +204,19 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
                 error = "postfx noise readback: " + s.message;
                 return false;
             }
+        }
+        if (cloudNoise) {
+            // Held only where the clouds march noise this frame (not without coverage, for instance).
+            VkExtent3D base{}, detail{};
+            VkDeviceSize bytes = 0;
+            cloudNoiseReadBack = r.postfx->imageView(postfx::kCloudsBaseNoise) &&
+                                 r.postfx->imageView(postfx::kCloudsDetailNoise) &&
+                                 r.postfx->recordImageReadback(postfx::kCloudsBaseNoise, cmd, buffer.buffer,
+                                                               baseNoiseOffset, base, bytes) &&
+                                 bytes == baseNoiseTexels &&
+                                 r.postfx->recordImageReadback(postfx::kCloudsDetailNoise, cmd, buffer.buffer,
+                                                               detailNoiseOffset, detail, bytes) &&
+                                 bytes == detailNoiseTexels;
         }
         if (cloudShadow) {
             VkExtent3D extent{};
@@ -283,8 +321,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         }
         color = std::move(withAtmosphere);
     }
-    // The clouds over the sky (their noise from the CPU port, which the GPU's textures match to a unit of
-    // their 8 bits: CloudsGpuTest.NoiseTexturesMatchTheCpuPort).
+    // The clouds over the sky, through the GPU's noise texels (read back above; else the CPU port's).
     if (in.clouds.enabled) {
         postfx::reference::CloudInputs ci;
         fillImage(ci);
@@ -292,6 +329,12 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
         ci.timeSeconds = in.timeSeconds;
         ci.settings = in.clouds;
         ci.atmosphere = in.atmosphere;
+        const std::vector<float> baseNoise =
+            unormAt(buffer, baseNoiseOffset, cloudNoiseReadBack ? baseNoiseTexels : 0);
+        const std::vector<float> detailNoise =
+            unormAt(buffer, detailNoiseOffset, cloudNoiseReadBack ? detailNoiseTexels : 0);
+        ci.baseNoise = baseNoise;
+        ci.detailNoise = detailNoise;
         std::vector<float> withClouds;
         std::vector<float>* standardError = nullptr;
         if (pathTracedClouds) {
@@ -315,10 +358,7 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const std::vector<float> shadowDepth = floatsAt(buffer, shadowOffset, shadowTexels);
     const std::vector<float> cloudShadowTexels01 = floatsAt(buffer, cloudShadowOffset, cloudShadowTexels);
     const std::vector<float> atlasDepth = floatsAt(buffer, atlasOffset, atlasTexels);
-    std::vector<float> noiseTexels01(noiseTexels);
-    const auto* bytes = static_cast<const uint8_t*>(buffer.mapped) + noiseOffset;
-    for (size_t i = 0; i < noiseTexels; ++i)
-        noiseTexels01[i] = float(bytes[i]) / 255.0f;
+    const std::vector<float> noiseTexels01 = unormAt(buffer, noiseOffset, noiseTexels);
 
     // What both references read alike: the read-back images and the GPU frame's inputs.
     const auto fill = [&](auto& fi) {
