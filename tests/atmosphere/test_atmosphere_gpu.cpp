@@ -79,6 +79,8 @@ protected:
         frame.camera = lookCamera({0.0, 100.0, 0.0}, {1.0, 0.05, 0.0}, {0.0, 1.0, 0.0}, 60.0f, 2.0f);
         return frame;
     }
+
+    void tableViewsAtDefaultSettings(postfx::AtmosphereMultipleScattering model);
 };
 
 // The transmittance LUT as its readers sample it (bilinear at transmittanceUvFromParams) against exp(-τ)
@@ -451,77 +453,83 @@ TEST_F(AtmosphereGpuTest, GroundSeenFromTenKilometresMatchesReference) {
 // The views of the path-traced table (tests/atmosphere/data: the camera on the ground, at 1 km, 10 km,
 // 100 km and 400 km; the sun 60°, 10°, 2° and −2° up; view zenith 0–120°, azimuth toward, across and away
 // from the sun) on the GPU at the default settings (Earth, albedo 0.3, every LUT's default size) against the
-// reference at its default quality, each view the centre pixel of a 3×3 image of 0.5°; Hillaire's model
-// the same way, for its discretisation error.
-TEST_F(AtmosphereGpuTest, TableViewsAtDefaultSettingsMatchTheReference) {
+// reference at its default quality, each view the centre pixel of a 3×3 image of 0.5°: the orders' within
+// the bounds below; Hillaire's model only printed (its discretisation error, docs/effects/atmosphere.md).
+void AtmosphereGpuTest::tableViewsAtDefaultSettings(postfx::AtmosphereMultipleScattering model) {
     using Model = postfx::AtmosphereMultipleScattering;
-    for (const Model model : {Model::Orders, Model::Hillaire}) {
-        const char* name = model == Model::Orders ? "orders" : "hillaire";
-        double worst = 0.0;
-        std::string worstView;
-        for (const double altitude : {0.0, 1000.0, 10000.0, 100000.0, 400000.0}) {
-            std::string row;
-            for (const double sunElevation : {60.0, 10.0, 2.0, -2.0}) {
-                double worstHere = 0.0;
-                for (const double zenith : {0.0, 45.0, 80.0, 85.0, 89.0, 95.0, 120.0})
-                    for (const double azimuth : {0.0, 90.0, 180.0}) {
-                        if (zenith == 0.0 && azimuth != 0.0) continue;
-                        postfx::FrameInfo frame = skyFrame(sunElevation, true);
-                        frame.atmosphere.multipleScattering = model;
-                        frame.atmosphere.sunAngularRadiusDeg = 0.0f;
-                        const atm::ViewSunRay ray =
-                            atm::viewSunRay(atm::Model{}, {zenith, sunElevation, azimuth, altitude});
-                        frame.sun.toSun = glm::vec3(ray.toSun);
-                        const glm::dvec3 up =
-                            zenith == 0.0 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-                        frame.camera = lookCamera({0.0, altitude, 0.0}, ray.dir, up, 0.5f, 1.0f);
-                        const FogHarnessImages im = images(frame.camera, 3, 3);
-                        const std::vector<float> out = render(frame, im);
-                        // The reference's own default tables for the orders; for Hillaire's Ψ the GPU's own
-                        // directions (its error here is the sky view's and the transmittance's).
-                        AtmosphereReferenceQuality quality;
-                        quality.ordersView = 0;
-                        const std::vector<float> ref = atmosphereReferenceImage(frame, im, quality);
-                        for (int c = 0; c < 3; ++c) {
-                            const double g = out[4 * 4 + c], r = ref[4 * 4 + c];
-                            ASSERT_TRUE(std::isfinite(g));
-                            if (r <= 0.0) continue;
-                            const double rel = std::abs(g / r - 1.0);
-                            worstHere = std::max(worstHere, rel);
-                            if (rel > worst) {
-                                worst = rel;
-                                worstView = std::to_string(int(altitude)) + " m, sun " +
-                                            std::to_string(int(sunElevation)) + ", zenith " +
-                                            std::to_string(int(zenith)) + ", azimuth " +
-                                            std::to_string(int(azimuth)) + ", channel " + std::to_string(c);
-                            }
-                            // The GPU's default LUTs against the reference as measured
-                            // (docs/effects/atmosphere.md, "Against the light"; not yet the 1 % wanted): 2 %
-                            // with the sun up and the camera in the air, 3.5 % in twilight, 7 % from orbit at
-                            // a low sun; a camera exactly on the top boundary (100 km) is printed only (the
-                            // sky view's mapping degenerates there, 17 % with either model).
-                            const double bound = altitude > 100000.0  ? 0.07
-                                                 : sunElevation < 0.0 ? 0.035
-                                                                      : 0.02;
-                            if (model == Model::Orders && altitude != 100000.0) {
-                                EXPECT_LT(rel, bound) << altitude << " m, sun " << sunElevation
-                                                      << "°, zenith " << zenith << "°, azimuth " << azimuth
-                                                      << "°, channel " << c << ": " << g << " vs " << r;
-                            }
+    const char* name = model == Model::Orders ? "orders" : "hillaire";
+    double worst = 0.0;
+    std::string worstView;
+    for (const double altitude : {0.0, 1000.0, 10000.0, 100000.0, 400000.0}) {
+        std::string row;
+        for (const double sunElevation : {60.0, 10.0, 2.0, -2.0}) {
+            double worstHere = 0.0;
+            for (const double zenith : {0.0, 45.0, 80.0, 85.0, 89.0, 95.0, 120.0})
+                for (const double azimuth : {0.0, 90.0, 180.0}) {
+                    if (zenith == 0.0 && azimuth != 0.0) continue;
+                    postfx::FrameInfo frame = skyFrame(sunElevation, true);
+                    frame.atmosphere.multipleScattering = model;
+                    frame.atmosphere.sunAngularRadiusDeg = 0.0f;
+                    const atm::ViewSunRay ray =
+                        atm::viewSunRay(atm::Model{}, {zenith, sunElevation, azimuth, altitude});
+                    frame.sun.toSun = glm::vec3(ray.toSun);
+                    const glm::dvec3 up =
+                        zenith == 0.0 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+                    frame.camera = lookCamera({0.0, altitude, 0.0}, ray.dir, up, 0.5f, 1.0f);
+                    const FogHarnessImages im = images(frame.camera, 3, 3);
+                    const std::vector<float> out = render(frame, im);
+                    // The reference's own default tables for the orders; for Hillaire's Ψ the GPU's own
+                    // directions (its error here is the sky view's and the transmittance's).
+                    AtmosphereReferenceQuality quality;
+                    quality.ordersView = 0;
+                    const std::vector<float> ref = atmosphereReferenceImage(frame, im, quality);
+                    for (int c = 0; c < 3; ++c) {
+                        const double g = out[4 * 4 + c], r = ref[4 * 4 + c];
+                        ASSERT_TRUE(std::isfinite(g));
+                        if (r <= 0.0) continue;
+                        const double rel = std::abs(g / r - 1.0);
+                        worstHere = std::max(worstHere, rel);
+                        if (rel > worst) {
+                            worst = rel;
+                            worstView = std::to_string(int(altitude)) + " m, sun " +
+                                        std::to_string(int(sunElevation)) + ", zenith " +
+                                        std::to_string(int(zenith)) + ", azimuth " +
+                                        std::to_string(int(azimuth)) + ", channel " + std::to_string(c);
+                        }
+                        // The GPU's default LUTs against the reference as measured
+                        // (docs/effects/atmosphere.md, "Against the light"; not yet the 1 % wanted): 2 %
+                        // with the sun up and the camera in the air, 3.5 % in twilight, 7 % from orbit at
+                        // a low sun; a camera exactly on the top boundary (100 km) is printed only (the
+                        // sky view's mapping degenerates there, 17 % with either model).
+                        const double bound = altitude > 100000.0 ? 0.07 : sunElevation < 0.0 ? 0.035 : 0.02;
+                        if (model == Model::Orders && altitude != 100000.0) {
+                            EXPECT_LT(rel, bound)
+                                << altitude << " m, sun " << sunElevation << "°, zenith " << zenith
+                                << "°, azimuth " << azimuth << "°, channel " << c << ": " << g << " vs " << r;
                         }
                     }
-                char cell[32];
-                std::snprintf(cell, sizeof cell, " %5.2f %%", 100.0 * worstHere);
-                row += cell;
-            }
-            std::printf(
-                "[ atmosphere ] %s, table views at %6.0f m, sun 60 / 10 / 2 / -2 deg: largest GPU vs "
-                "reference%s\n",
-                name, altitude, row.c_str());
+                }
+            char cell[32];
+            std::snprintf(cell, sizeof cell, " %5.2f %%", 100.0 * worstHere);
+            row += cell;
         }
-        std::printf("[ atmosphere ] %s, table views: largest GPU vs reference %.2f %% (%s)\n", name,
-                    100.0 * worst, worstView.c_str());
+        std::printf(
+            "[ atmosphere ] %s, table views at %6.0f m, sun 60 / 10 / 2 / -2 deg: largest GPU vs "
+            "reference%s\n",
+            name, altitude, row.c_str());
     }
+    std::printf("[ atmosphere ] %s, table views: largest GPU vs reference %.2f %% (%s)\n", name,
+                100.0 * worst, worstView.c_str());
+}
+
+TEST_F(AtmosphereGpuTest, TableViewsAtDefaultSettingsMatchTheReference) {
+    tableViewsAtDefaultSettings(postfx::AtmosphereMultipleScattering::Orders);
+}
+
+// Hillaire's model on the same views: it asserts nothing (the model is kept for comparison), so it runs
+// by hand: gpu_tests --gtest_also_run_disabled_tests --gtest_filter='*HillaireTableViews*'.
+TEST_F(AtmosphereGpuTest, DISABLED_HillaireTableViewsPrintTheirError) {
+    tableViewsAtDefaultSettings(postfx::AtmosphereMultipleScattering::Hillaire);
 }
 
 // A sunset: the sun from 10° to 4° below the horizon in 0.5° steps, the view LUTs rebuilt each frame and
