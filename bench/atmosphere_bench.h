@@ -79,13 +79,10 @@ const std::vector<std::string>& atmosphereKnobs();
 // Each knob's values (text as on the command line); a knob absent or empty is not swept.
 struct AtmosphereSweepOptions {
     std::vector<std::pair<std::string, std::vector<std::string>>> values;
-    // The settings every point starts from: postfx's defaults (--quick: quickScatteringOrders).
+    // The settings every point starts from: postfx's defaults (--quick: test::smallScatteringOrders).
     postfx::AtmosphereSettings base;
 };
 AtmosphereSweepOptions defaultAtmosphereSweep(bool quick);
-// --quick's scattering-orders table (16×16×8 nodes, 4 azimuths, 144 directions): lavapipe builds the
-// default one in about 6 s, once per context and media change.
-void quickScatteringOrders(postfx::AtmosphereSettings& settings);
 // `settings` with `knob` set to `value`; false with `error` for a bad value (the settings' own ranges are
 // checked by postfx::validateAtmosphereSettings).
 bool applyAtmosphereKnob(postfx::AtmosphereSettings& settings, const std::string& knob,

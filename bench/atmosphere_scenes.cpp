@@ -134,19 +134,12 @@ const std::vector<std::string>& atmosphereKnobs() {
     return knobs;
 }
 
-void quickScatteringOrders(postfx::AtmosphereSettings& settings) {
-    settings.scatteringOrdersLutSize = {16, 16, 8};
-    settings.scatteringOrdersAzimuthSize = 4;
-    settings.scatteringOrdersDirections = 144;
-}
-
 AtmosphereSweepOptions defaultAtmosphereSweep(bool quick) {
     AtmosphereSweepOptions o;
     if (quick) {
         o.values = {{"transmittance_size", {"64x16"}},     {"transmittance_steps", {"10"}},
                     {"multiple_scattering", {"hillaire"}}, {"ms_directions", {"16"}},
                     {"sky_view_size", {"96x54"}},          {"ap_size", {"16"}}};
-        quickScatteringOrders(o.base);
         return o;
     }
     o.values = {{"transmittance_size", {"64x16", "128x32", "256x64", "512x128"}},

@@ -1,6 +1,6 @@
 #include "frame_run.h"
 
-#include "atmosphere_bench.h"
+#include "small_orders_table.h"
 
 #include "progress.h"
 #include "report.h"
@@ -190,7 +190,7 @@ int runFrame(const FrameRunArgs& args, const std::string& commandLine, const std
         return fail(path + ": the showcase needs the atmosphere, the clouds and the froxel fog");
     if (args.shadowMapSize > 0) showcase.clouds.shadowMap.size = args.shadowMapSize;
     if (args.quickScene) {
-        quickScatteringOrders(showcase.atmosphere);
+        test::smallScatteringOrders(showcase.atmosphere);
         showcase.froxelFog.grid = {32, 18, 32};
         for (demo::Light& l : showcase.lights)
             l.shadowResolution = std::min(l.shadowResolution, 128u);

@@ -28,8 +28,9 @@ struct FrameRunArgs {
     // pixels).
     uint32_t errorStride = 8;
     uint32_t shadowMapSize = 0;  // the clouds' shadow_map.size; 0: the scene's (--quick: 64)
-    // --quick (lavapipe): the atmosphere's small orders table (quickScatteringOrders), a 32×18×32 froxel
-    // grid and 128² local light shadows; the GPU's work at the default sizes takes seconds a frame there.
+    // --quick (lavapipe): the atmosphere's small orders table (test::smallScatteringOrders), a 32×18×32
+    // froxel grid and 128² local light shadows; the GPU's work at the default sizes takes seconds a frame
+    // there.
     bool quickScene = false;
     std::string out;
 };

@@ -30,6 +30,7 @@
 #include "progress.h"
 #include "report.h"
 #include "runner.h"
+#include "small_orders_table.h"
 #include "stats.h"
 #include "worst_case.h"
 
@@ -840,6 +841,7 @@ int runAtmosphere(const Args& args, const std::string& command) {
         a.coarseOrders = true;
     }
     a.sweep = bench::defaultAtmosphereSweep(args.quick);
+    if (args.quick) test::smallScatteringOrders(a.sweep.base);
     if (args.atmosphereSweepNone) a.sweep.values.clear();
     for (const auto& [knob, values] : args.atmosphereSweep) {
         auto it = std::find_if(a.sweep.values.begin(), a.sweep.values.end(),

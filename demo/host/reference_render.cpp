@@ -149,13 +149,9 @@ bool Renderer::renderReference(const Scene& scene, ImageF& out, std::string& err
     const postfx::CloudNoiseSettings& cloudNoiseSettings = gpuScene.clouds.noise;
     const bool cloudNoise = gpuScene.clouds.enabled && cloudNoiseSettings.enabled &&
                             !cloudNoiseSettings.hostBaseTexture && !cloudNoiseSettings.hostDetailTexture;
-    const size_t baseNoiseTexels = cloudNoise ? size_t(cloudNoiseSettings.baseSize) *
-                                                    cloudNoiseSettings.baseSize * cloudNoiseSettings.baseSize
-                                              : 0;
-    const size_t detailNoiseTexels = cloudNoise
-                                         ? size_t(cloudNoiseSettings.detailSize) *
-                                               cloudNoiseSettings.detailSize * cloudNoiseSettings.detailSize
-                                         : 0;
+    const auto cube = [&](uint32_t edge) { return cloudNoise ? size_t(edge) * edge * edge : 0; };
+    const size_t baseNoiseTexels = cube(cloudNoiseSettings.baseSize);
+    const size_t detailNoiseTexels = cube(cloudNoiseSettings.detailSize);
 
     // One host-visible buffer: depth, shadow map, noise, the clouds' shadow map, the local shadow atlas (each
     // as the GPU stores it; the atlas whole, as postfx reads it).

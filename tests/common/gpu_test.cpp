@@ -46,12 +46,4 @@ postfx::Status GpuTest::createContext(std::unique_ptr<postfx::Context>& out, pos
     return postfx::Context::create(hostHandles(info), out);
 }
 
-void smallScatteringOrders(postfx::AtmosphereSettings& atmosphere) {
-    atmosphere.scatteringOrdersLutSize = {16, 16, 8};
-    atmosphere.scatteringOrdersAzimuthSize = 4;
-    atmosphere.scatteringOrdersDirections = 144;
-    atmosphere.scatteringOrdersSteps = 24;
-    atmosphere.scatteringOrders = 4;
-}
-
 }  // namespace test

@@ -8,6 +8,7 @@
 #include <postfx/postfx.h>
 
 #include "host/vulkan_host.h"
+#include "small_orders_table.h"
 
 #include <memory>
 
@@ -30,11 +31,5 @@ protected:
 // layer reported any since the last takeValidationMessages(), e.g. a VkSampler left on the device. Then
 // resets host. GpuTest's destructor calls it.
 void destroyHostExpectingNoMessages(std::unique_ptr<demo::VulkanHost>& host);
-
-// A scattering-orders table small enough for lavapipe (16×16×8 nodes, 4 azimuths, 144 directions, 24
-// steps, 4 orders: the atmosphere's GPU tests check this one against the CPU table). The default table
-// takes about 6 s of lavapipe's time to build, once per context: tests whose subject is not the orders'
-// accuracy use this one, so that CI stays within its time.
-void smallScatteringOrders(postfx::AtmosphereSettings& atmosphere);
 
 }  // namespace test
