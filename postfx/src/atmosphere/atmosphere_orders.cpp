@@ -97,29 +97,41 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
             const double sinPolar = std::sqrt(std::max(0.0, 1.0 - cosPolar * cosPolar));
             dirs[i * side + j] = {std::cos(phi) * sinPolar, cosPolar, std::sin(phi) * sinPolar};
         }
-    std::vector<double> phaseR(size_t(outputs) * K), phaseM(size_t(outputs) * K);
+    // Azimuth columns i and side - 1 - i (z and -z) see the same light, so only the first (side + 1)/2
+    // columns are marched, and each output's weights are folded onto them: half the quadrature's work.
+    const uint32_t marched = (side + 1) / 2 * side;
+    const auto marchedOf = [&](uint32_t k) {
+        const uint32_t column = k / side;
+        return (column < (side + 1) / 2 ? column : side - 1 - column) * side + k % side;
+    };
+    std::vector<double> phaseR(size_t(outputs) * marched, 0.0), phaseM(size_t(outputs) * marched, 0.0);
     for (uint32_t v = 0; v < s.viewSize; ++v)
         for (uint32_t a = 0; a < s.azimuthSize; ++a) {
             const double mu = cosineFromUnit(double(v) / (s.viewSize - 1));
             const double phi = kPi * double(a) / (s.azimuthSize - 1);
             const double sinView = std::sqrt(std::max(0.0, 1.0 - mu * mu));
             const glm::dvec3 w(sinView * std::cos(phi), mu, sinView * std::sin(phi));
-            const size_t row = size_t(v * s.azimuthSize + a) * K;
+            const size_t row = size_t(v * s.azimuthSize + a) * marched;
             double sumR = 0.0, sumM = 0.0;
             for (uint32_t k = 0; k < K; ++k) {
                 const double c = glm::dot(w, dirs[k]);
-                sumR += phaseR[row + k] = rayleighPhase(c);
-                sumM += phaseM[row + k] = cornetteShanksPhase(c, m.mieAnisotropy);
+                const double pR = rayleighPhase(c), pM = cornetteShanksPhase(c, m.mieAnisotropy);
+                phaseR[row + marchedOf(k)] += pR;
+                phaseM[row + marchedOf(k)] += pM;
+                sumR += pR;
+                sumM += pM;
             }
-            for (uint32_t k = 0; k < K; ++k) {
+            for (uint32_t k = 0; k < marched; ++k) {
                 phaseR[row + k] /= sumR;
                 phaseM[row + k] /= sumM;
             }
         }
+    std::vector<double> groundWeight(marched, 0.0);  // max(0, ω_k·up), folded the same way
+    for (uint32_t k = 0; k < K; ++k)
+        groundWeight[marchedOf(k)] += std::max(0.0, dirs[k].y);
 
     const size_t size = cells * outputs;
-    rayleigh_.assign(size, glm::dvec3(0.0));
-    mie_.assign(size, glm::dvec3(0.0));
+    psi_.assign(size, Psi{});
     ground_.assign(s.sunSize, glm::dvec3(0.0));
     // Order n's tables (read), order n + 1's (written), order n - 1's (the tail's ratio).
     OrdersTable current = *this, next = *this, previous = *this;
@@ -132,10 +144,9 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
             const double r = groundRadius + y * y * (topRadius - groundRadius);
             const double muS = cosineFromUnit(double(is) / (s.sunSize - 1));
             const glm::dvec3 x(0.0, r, 0.0), toSun(std::sqrt(std::max(0.0, 1.0 - muS * muS)), muS, 0.0);
-            std::vector<glm::dvec3> L(K, glm::dvec3(0.0));
+            std::vector<glm::dvec3> L(marched, glm::dvec3(0.0));
             std::vector<MarchStep> steps;
-            // Azimuth columns i and side - 1 - i (z and -z) see the same light: half are marched.
-            for (uint32_t k = 0; k < (side + 1) / 2 * side; ++k) {
+            for (uint32_t k = 0; k < marched; ++k) {
                 const glm::dvec3& d = dirs[k];
                 const AtmosphereSegment seg = atmosphereSegment(m, x, d);
                 if (seg.tEnd <= seg.tBegin && !seg.hitsGround) continue;
@@ -145,15 +156,16 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
                 glm::dvec3 T(1.0), sum(0.0);
                 for (const MarchStep& st : steps) {
                     const glm::dvec3 p = x + st.t * d;
-                    const Medium md = mediumAt(m, glm::length(p) - groundRadius);
+                    const double rp = glm::length(p);
+                    const Medium md = mediumAt(m, rp - groundRadius);
                     glm::dvec3 J;
                     if (order == 1) {
                         J = transmittance.sun(p, toSun) *
                             (md.rayleighScattering * pR + md.mieScattering * pM);
                     } else {
-                        const Psi psi = current.at(glm::length(p), glm::dot(d, p) / glm::length(p),
-                                                   glm::dot(toSun, p) / glm::length(p),
-                                                   cosAzimuthAbout(p / glm::length(p), d, toSun));
+                        const glm::dvec3 up = p / rp;
+                        const Psi psi = current.at(rp, glm::dot(d, up), glm::dot(toSun, up),
+                                                   cosAzimuthAbout(up, d, toSun));
                         J = md.rayleighScattering * psi.rayleigh + md.mieScattering * psi.mie;
                     }
                     sum += T * J * stepIntegral(md.extinction, st.dt);
@@ -166,30 +178,29 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
                                                     : current.groundIrradiance(muG);
                     sum += T * E * m.groundAlbedo / kPi;
                 }
-                L[k] = L[(side - 1 - k / side) * side + k % side] = sum;
+                L[k] = sum;
             }
             const size_t base = cell * outputs;
             for (uint32_t out = 0; out < outputs; ++out) {
-                const double* wR = &phaseR[size_t(out) * K];
-                const double* wM = &phaseM[size_t(out) * K];
+                const double* wR = &phaseR[size_t(out) * marched];
+                const double* wM = &phaseM[size_t(out) * marched];
                 glm::dvec3 sR(0.0), sM(0.0);
-                for (uint32_t k = 0; k < K; ++k) {
+                for (uint32_t k = 0; k < marched; ++k) {
                     sR += wR[k] * L[k];
                     sM += wM[k] * L[k];
                 }
-                next.rayleigh_[base + out] = sR;
-                next.mie_[base + out] = sM;
+                next.psi_[base + out] = {sR, sM};
             }
             if (ir == 0) {
                 glm::dvec3 E(0.0);
-                for (uint32_t k = 0; k < K; ++k)
-                    E += L[k] * std::max(0.0, dirs[k].y);
+                for (uint32_t k = 0; k < marched; ++k)
+                    E += L[k] * groundWeight[k];
                 next.ground_[is] = E * (4.0 * kPi / K);
             }
         });
         for (size_t i = 0; i < size; ++i) {
-            rayleigh_[i] += next.rayleigh_[i];
-            mie_[i] += next.mie_[i];
+            psi_[i].rayleigh += next.psi_[i].rayleigh;
+            psi_[i].mie += next.psi_[i].mie;
         }
         for (uint32_t i = 0; i < s.sunSize; ++i)
             ground_[i] += next.ground_[i];
@@ -207,13 +218,14 @@ OrdersTable::OrdersTable(const Model& m, const TransmittanceTable& transmittance
     for (size_t cell = 0; cell < cells; ++cell) {
         glm::dvec3 last(0.0), before(0.0);
         for (uint32_t out = 0; out < outputs; ++out) {
-            last += current.rayleigh_[cell * outputs + out] + current.mie_[cell * outputs + out];
-            before += previous.rayleigh_[cell * outputs + out] + previous.mie_[cell * outputs + out];
+            const Psi &c = current.psi_[cell * outputs + out], &p = previous.psi_[cell * outputs + out];
+            last += c.rayleigh + c.mie;
+            before += p.rayleigh + p.mie;
         }
         const glm::dvec3 tail = ratio(last, before);
         for (uint32_t out = 0; out < outputs; ++out) {
-            rayleigh_[cell * outputs + out] += current.rayleigh_[cell * outputs + out] * tail;
-            mie_[cell * outputs + out] += current.mie_[cell * outputs + out] * tail;
+            psi_[cell * outputs + out].rayleigh += current.psi_[cell * outputs + out].rayleigh * tail;
+            psi_[cell * outputs + out].mie += current.psi_[cell * outputs + out].mie * tail;
         }
     }
     for (uint32_t i = 0; i < s.sunSize; ++i)
@@ -227,20 +239,24 @@ OrdersTable::Psi OrdersTable::at(double r, double mu, double muS, double cosAzim
     const Lerp lr = lerpAt(std::sqrt(h), s.radiusSize), ls = lerpAt(unitFromCosine(muS), s.sunSize);
     const Lerp lv = lerpAt(unitFromCosine(mu), s.viewSize);
     const Lerp la = lerpAt(std::acos(std::clamp(cosAzimuth, -1.0, 1.0)) / kPi, s.azimuthSize);
+    // The two azimuth nodes of each (r, μs, μ) corner lie side by side.
+    const double wa[2] = {1.0 - la.a, la.a};
     Psi out;
     for (int dr = 0; dr < 2; ++dr)
         for (int ds = 0; ds < 2; ++ds)
-            for (int dv = 0; dv < 2; ++dv)
+            for (int dv = 0; dv < 2; ++dv) {
+                const double w =
+                    (dr ? lr.a : 1.0 - lr.a) * (ds ? ls.a : 1.0 - ls.a) * (dv ? lv.a : 1.0 - lv.a);
+                if (w == 0.0) continue;
+                const Psi* node =
+                    &psi_[((size_t(lr.i + dr) * s.sunSize + ls.i + ds) * s.viewSize + lv.i + dv) *
+                              s.azimuthSize +
+                          la.i];
                 for (int da = 0; da < 2; ++da) {
-                    const double w = (dr ? lr.a : 1.0 - lr.a) * (ds ? ls.a : 1.0 - ls.a) *
-                                     (dv ? lv.a : 1.0 - lv.a) * (da ? la.a : 1.0 - la.a);
-                    if (w == 0.0) continue;
-                    const size_t i = ((size_t(lr.i + dr) * s.sunSize + ls.i + ds) * s.viewSize + lv.i + dv) *
-                                         s.azimuthSize +
-                                     la.i + da;
-                    out.rayleigh += w * rayleigh_[i];
-                    out.mie += w * mie_[i];
+                    out.rayleigh += (w * wa[da]) * node[da].rayleigh;
+                    out.mie += (w * wa[da]) * node[da].mie;
                 }
+            }
     return out;
 }
 

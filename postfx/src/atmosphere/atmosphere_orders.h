@@ -75,8 +75,9 @@ public:
 private:
     Model model_;
     OrdersTableOptions requested_, options_;
-    // Ψ at node (φ fastest, then μ, μs, r): rayleigh_ and mie_; E at μs nodes.
-    std::vector<glm::dvec3> rayleigh_, mie_, ground_;
+    // Ψ at node (φ fastest, then μ, μs, r), both phases side by side; E at μs nodes.
+    std::vector<Psi> psi_;
+    std::vector<glm::dvec3> ground_;
 };
 
 // The table reference::renderAtmosphere builds from its inputs' orders* fields (and threads).
