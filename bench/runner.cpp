@@ -65,6 +65,7 @@ struct Runner::Impl {
     VkQueryPool queries = VK_NULL_HANDLE;  // the baselines' timestamps: 2 per frame slot
     double timestampPeriodNs = 1.0;
     uint64_t timestampMask = 0;  // 0: the queue has no timestamps
+    bool forwardLookup = true;   // Runner::setForwardLookup
     demo::GpuBuffer readback;    // the HDR image, RGBA16F
     demo::GpuImage fogScratch;  // baselines' frames: where postfx's (cheap) fog goes, keeping its noise alive
     uint64_t nextFrame = kJitterPeriod;  // above renderReference()'s frame index 0
@@ -206,6 +207,10 @@ bool Runner::setScene(const demo::Scene& scene, std::string& error) {
     return impl_->renderer->setScene(scene, error);
 }
 
+void Runner::setForwardLookup(bool lookup) {
+    impl_->forwardLookup = lookup;
+}
+
 bool Runner::hasShadowMap(const demo::Scene& scene) const {
     return impl_->renderer->frameInputs(VK_NULL_HANDLE, scene, 0).shadowMap.image.present();
 }
@@ -239,7 +244,7 @@ bool Runner::Impl::recordFrame(VkCommandBuffer cmd, const demo::Scene& scene, Me
         // The demo's forward pass (transparent surfaces through postfx's lookup), timed when drawn.
         if (queries && demo::hasForwardDraws(scene)) {
             vkCmdResetQueryPool(cmd, queries, uint32_t(slot) * 2, 2);
-            renderer->timeForwardPass(queries, uint32_t(slot) * 2);
+            renderer->timeForwardPass(queries, uint32_t(slot) * 2, forwardLookup);
         }
         if (!renderer->recordFrame(cmd, scene, frameIndex, error)) return false;
     } else {

@@ -59,6 +59,10 @@ public:
     bool setScene(const demo::Scene& scene, std::string& error);
     // Whether the frames of `scene` give postfx a shadow map (sun.shadows and a caster).
     bool hasShadowMap(const demo::Scene& scene) const;
+    // Whether the demo's forward pass fogs its transparent surfaces through postfx's lookup in the timed
+    // frames (default true); false times the pass without it (the lookup still built), so that the
+    // difference of two rows is the lookup's share of host.forward.
+    void setForwardLookup(bool lookup);
 
     // The CPU reference of `scene`'s frame (Renderer::renderReference: its fog as given, `steps` midpoint
     // steps, no jitter) at every `stride`-th pixel in x and y. Time is frozen, so it fits every frame.

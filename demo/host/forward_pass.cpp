@@ -246,8 +246,8 @@ void ForwardPass::record(VkCommandBuffer cmd, size_t slot, const ForwardFrame& f
             bound = want;
         }
         const shared::ForwardPush push{glm::vec4(d.albedo, d.opacity),
-                                       glm::vec4(float(d.kind), 0.0f, 0.0f, 0.0f), in.cloudShadowU,
-                                       in.cloudShadowV};
+                                       glm::vec4(float(d.kind), in.lookup ? 0.0f : 1.0f, 0.0f, 0.0f),
+                                       in.cloudShadowU, in.cloudShadowV};
         vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                            sizeof(push), &push);
         if (d.particle)

@@ -37,6 +37,7 @@ public:
         const GpuBuffer* indices = nullptr;
         glm::vec4 cloudShadowU{0.0f, 0.0f, 0.0f, -1.0f};  // shared::ForwardPush's rows
         glm::vec4 cloudShadowV{0.0f, 0.0f, 0.0f, -1.0f};
+        bool lookup = true;  // false: the surfaces without postfx's lookup (the benchmark's lookup share)
     };
     // Records `frame`'s draws (upload()ed into `slot`), after postfx: waits for compute writes (postfx's
     // composite, the lookup, the clouds' shadow map), blends into the HDR image and leaves it in GENERAL

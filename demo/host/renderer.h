@@ -161,8 +161,9 @@ public:
     void requestCameraCut();
     // The next recordFrame writes two timestamps into `pool` at `firstQuery` and `firstQuery + 1` around its
     // forward pass (the benchmark's timing of the transparent surfaces), when it draws one; the caller
-    // resets them before. A null pool: none.
-    void timeForwardPass(VkQueryPool pool, uint32_t firstQuery);
+    // resets them before. A null pool: none. lookup false: that frame's forward pass leaves postfx's
+    // lookup out of its surfaces (unfogged), so that the difference of two timings is the lookup's share.
+    void timeForwardPass(VkQueryPool pool, uint32_t firstQuery, bool lookup = true);
 
     // postfx's plan (docs/frame-plan.md) for frame `frameIndex` of `scene` as recordFrame(cmd, scene,
     // frameIndex) would record it now (given what postfx already holds, e.g. a generated noise texture).

@@ -474,18 +474,21 @@ bool Renderer::Impl::recordForward(VkCommandBuffer cmd, const Scene& scene, cons
         in.cloudShadowU = glm::vec4(glm::dvec4(cloudShadow.u));
         in.cloudShadowV = glm::vec4(glm::dvec4(cloudShadow.v));
     }
+    in.lookup = forwardLookup;
     if (forwardQueries)
         vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, forwardQueries, forwardFirstQuery);
     forward.record(cmd, slot, forwardFrame, in);
     if (forwardQueries)
         vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, forwardQueries, forwardFirstQuery + 1);
     forwardQueries = VK_NULL_HANDLE;
+    forwardLookup = true;
     return true;
 }
 
-void Renderer::timeForwardPass(VkQueryPool pool, uint32_t firstQuery) {
+void Renderer::timeForwardPass(VkQueryPool pool, uint32_t firstQuery, bool lookup) {
     impl_->forwardQueries = pool;
     impl_->forwardFirstQuery = firstQuery;
+    impl_->forwardLookup = lookup;
 }
 
 void Renderer::requestCameraCut() {

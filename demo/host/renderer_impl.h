@@ -170,6 +170,7 @@ struct Renderer::Impl {
     // The forward pass of `scene` after postfx recorded `frame` (its lookup written into this slot's set).
     VkQueryPool forwardQueries = VK_NULL_HANDLE;  // timeForwardPass
     uint32_t forwardFirstQuery = 0;
+    bool forwardLookup = true;
     bool recordForward(VkCommandBuffer cmd, const Scene& scene, const postfx::FrameInfo& frame,
                        std::string& error);
     // Waits for the slot's fence (its frame in flight done), then resets and begins its command buffer for

@@ -145,7 +145,7 @@ DEMO_CONST(uint, kForwardParticle, 2u);       // a camera-facing quad, a soft di
 // Push constants of the forward pass, per draw (vertex and fragment stages).
 struct ForwardPush {
     vec4 albedoOpacity;  // rgb: diffuse reflectance; a: opacity [1]
-    vec4 params;         // x: kForward*; yzw: unused
+    vec4 params;         // x: kForward*; y: 1 to leave postfx's lookup out (a benchmark's timing); zw: unused
     // postfx::cloudShadowTransform of this frame (the clouds' shadow map it wrote), or rows putting every
     // point outside the map (w = -1) when the lighting's binding holds another image.
     vec4 cloudShadowU;

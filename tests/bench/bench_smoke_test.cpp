@@ -1040,16 +1040,18 @@ TEST_F(BenchFrameSmoke, CsvHasARowPerFogWithEveryEffectTimedAndAFiniteError) {
     ASSERT_TRUE(readCsv(out_ + "/results.csv", header, rows, sawDevice)) << out_ << "/results.csv";
     EXPECT_TRUE(sawDevice);
     // Per fog: Medium, then the volumetrics lookup's rows (time only: the reference has no transparent
-    // surfaces), with every effect and with the fog alone.
-    ASSERT_EQ(rows.size(), 6u);
-    const char* const presets[] = {"medium", "lookup", "lookup alone"};
+    // surfaces): with every effect, the same with the forward pass not reading the lookup, and with the fog
+    // alone. The forward pass is timed in the lookup rows only.
+    ASSERT_EQ(rows.size(), 8u);
+    const char* const presets[] = {"medium", "lookup", "lookup unread", "lookup alone"};
     for (size_t r = 0; r < rows.size(); ++r) {
-        EXPECT_EQ(rows[r].at("fog"), r < 3 ? "froxel" : "raymarched");
-        EXPECT_EQ(rows[r].at("preset"), presets[r % 3]);
-        if (r % 3 == 0) continue;
+        EXPECT_EQ(rows[r].at("fog"), r < 4 ? "froxel" : "raymarched");
+        EXPECT_EQ(rows[r].at("preset"), presets[r % 4]);
+        EXPECT_EQ(number(rows[r].at("host_forward_ms")) > 0.0, r % 4 != 0) << r;
+        if (r % 4 == 0) continue;
         const std::string fog = rows[r].at("fog") == "froxel" ? "froxel_fog_ms" : "fog_ms";
         EXPECT_GT(number(rows[r].at(fog)), 0.0) << r;
-        EXPECT_EQ(number(rows[r].at("clouds_ms")) > 0.0, r % 3 == 1) << r;
+        EXPECT_EQ(number(rows[r].at("clouds_ms")) > 0.0, r % 4 != 3) << r;
     }
     for (const Row& row : rows)
         expectCalibratedRow(row, row.at("fog") + " " + row.at("preset"));
@@ -1077,7 +1079,8 @@ TEST_F(BenchFrameSmoke, CsvHasARowPerFogWithEveryEffectTimedAndAFiniteError) {
         EXPECT_LT(error, 0.2) << what;
     }
     const std::string md = readFile(out_ + "/results.md");
-    for (const char* section : {"| device | ", "## Target", "| 64×36 | froxel | medium |"})
+    for (const char* section : {"| device | ", "## Target", "| 64×36 | froxel | medium |",
+                                "## Transparent surfaces", "| 64×36 | raymarched | "})
         EXPECT_NE(md.find(section), std::string::npos) << section;
 }
 
