@@ -39,11 +39,13 @@ PFX_CONST(uint, kFroxelBindingAtmosphere, kMediumBindingAtmosphere);
 // sampler2D: the clouds' shadow map (common/medium/atmosphere_light.glsl), with clouds casting shadows
 PFX_CONST(uint, kFroxelBindingCloudShadow, kMediumBindingCloudShadow);
 // Local lights' shadows (froxel-fog.md#local-light-shadows): the host's atlas, its faces, and (temporal)
-// the shadowed lights' light at each froxel's centre in this and the previous frame.
-PFX_CONST(uint, kFroxelBindingShadowAtlas, 14);      // sampler2D: host local shadow atlas (texelFetch)
-PFX_CONST(uint, kFroxelBindingShadowFaces, 15);      // storage buffer: FroxelShadowFace[]
+// the shadowed lights' light at each block's centre in this and the previous frame, and where it changed.
+PFX_CONST(uint, kFroxelBindingShadowAtlas, 14);  // sampler2D: host local shadow atlas (texelFetch)
+PFX_CONST(uint, kFroxelBindingShadowFaces, 15);  // storage buffer: FroxelShadowFace[]
+// Per block of 2×2×2 froxels (shadow_change.comp).
 PFX_CONST(uint, kFroxelBindingShadowedLight, 16);    // storage image r32f: written this frame
 PFX_CONST(uint, kFroxelBindingShadowedHistory, 17);  // sampler3D r32f: the previous frame's
+PFX_CONST(uint, kFroxelBindingShadowChange, 18);     // storage image / sampler3D rgba8: 1 where it changed
 
 // Flags in FroxelUniforms.counts.y
 PFX_CONST(uint, kFroxelFlagLogSlices, 1u);        // depth distribution Log (else Power)

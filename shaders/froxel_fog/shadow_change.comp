@@ -1,0 +1,111 @@
+#version 450
+// The froxel fog's shadow-change pass (docs/effects/froxel-fog.md, "Local light shadows", temporal),
+// before the scatter pass when local lights have shadows and temporal accumulation is on. A moving caster
+// changes a shadowed light's light without any light changing, so the lights' rejected spheres do not
+// see it. One invocation per block of 2×2×2 froxels evaluates the shadowed lights' light at the block's
+// centre (the corner the block's froxels share; no jitter): Σ luminance(E_i)·V_i, pre-exposed and
+// storage-scaled as the scatter volume, written to shadowedLight for the next frame. Where it differs from
+// the previous frame's value there (the previous blocks' values interpolated at the point's previous grid
+// coordinate) by more than kFroxelShadowChangeReject of the larger, shadowChange holds 1: the scatter
+// pass drops the history of every froxel whose centre one of its eight enclosing block centres changed
+// at. One evaluation per 8 froxels, each block's lights in one invocation: the scatter pass's warps do
+// not pay for it. Variants: LIGHT_LISTS loops over the block's cluster's lights, else over every light.
+#extension GL_GOOGLE_include_directive : require
+
+#include "froxel_fog/froxel_shared.h"
+
+layout(local_size_x = kFroxelGroupSize, local_size_y = kFroxelGroupSize) in;
+
+#ifdef LIGHT_LISTS
+#define LOCAL_LIGHTS
+#endif
+
+#include "froxel_fog/bindings.glsl"
+#include "common/phase.glsl"
+#include "froxel_fog/grid.glsl"
+#include "froxel_fog/lights.glsl"
+
+layout(binding = kFroxelBindingShadowAtlas) uniform sampler2D shadowAtlas;
+layout(binding = kFroxelBindingShadowFaces, std430) readonly buffer ShadowFaces {
+    FroxelShadowFace faces[];
+}
+shadowFaces;
+#include "froxel_fog/local_shadows.glsl"
+
+layout(binding = kFroxelBindingTemporal, std140) uniform Temporal {
+    TemporalUniforms temporal;
+};
+#include "froxel_fog/reproject.glsl"
+
+// Per block: this frame's value (written), the previous frame's (read), and whether it changed.
+layout(binding = kFroxelBindingShadowedLight, r32f) uniform writeonly image3D shadowedLight;
+layout(binding = kFroxelBindingShadowedHistory) uniform sampler3D shadowedHistory;
+layout(binding = kFroxelBindingShadowChange, rgba8) uniform writeonly image3D shadowChange;
+
+// Light i's luminance(E)·V at camera-relative x when it has a shadow (0 without one, or beyond its range).
+float shadowedLightAt(uint i, vec3 x) {
+    FroxelLight l = local.lights[i];
+    if (l.shadow.x == kFroxelNoShadow) return 0.0;
+    float d2;
+    vec3 toLight;
+    float falloff = localLightFalloff(l, x, d2, toLight);
+    if (!(falloff > 0.0)) return 0.0;
+    float r = l.intensityRadius.w;
+    float e = dot(l.intensityRadius.rgb, vec3(0.2126, 0.7152, 0.0722)) * falloff / max(d2 + r * r, 1e-30);
+    uint face;
+    return min(e * froxel.jitter.w * localShadowVisibility(l, x, face), kMaxLightTerm);
+}
+
+// The previous frame's block values at texture coordinates uvw, trilinear by hand (linear filtering of
+// R32F is optional in Vulkan): a still view reads its own block's texel.
+float previousValue(vec3 uvw, uvec3 blocks) {
+    vec3 p = uvw * vec3(blocks) - 0.5;
+    ivec3 p0 = ivec3(floor(p));
+    vec3 f = p - vec3(p0);
+    ivec3 last = ivec3(blocks) - 1;
+    float sum = 0.0;
+    for (int k = 0; k < 8; ++k) {
+        ivec3 o = ivec3(k & 1, (k >> 1) & 1, k >> 2);
+        vec3 w = mix(1.0 - f, f, vec3(o));
+        if (!(w.x * w.y * w.z > 0.0)) continue;  // not read
+        sum += w.x * w.y * w.z * texelFetch(shadowedHistory, clamp(p0 + o, ivec3(0), last), 0).r;
+    }
+    return sum;
+}
+
+void main() {
+    uvec3 id = gl_GlobalInvocationID;
+    uvec3 blocks = (froxel.grid.xyz + 1u) / 2u;
+    if (any(greaterThanEqual(id, blocks))) return;
+    // The block's centre: froxel coordinate 2·id + 1 on each axis (the grid's far edge for the last block
+    // of an odd count, which holds one froxel).
+    vec3 corner = vec3(2u * id + 1u) / vec3(froxel.grid.xyz);
+    vec3 x = gridRayDirection(corner.xy) * sliceDepth(corner.z);
+
+    float value = 0.0;
+#ifdef LIGHT_LISTS
+    uint words = froxel.counts.z;
+    uvec3 cluster = (2u * id) / uvec3(kFroxelClusterSize, kFroxelClusterSize, kFroxelClusterSlices);
+    for (uint w = 0u; w < words; ++w) {
+        uint bits = imageLoad(lightLists, ivec3(cluster.xy, cluster.z * words + w)).r;
+        while (bits != 0u) {
+            int i = findLSB(bits);
+            bits &= bits - 1u;
+            value += shadowedLightAt(w * 32u + uint(i), x);
+        }
+    }
+#else
+    for (uint i = 0u; i < froxel.grid.w; ++i)
+        value += shadowedLightAt(i, x);
+#endif
+
+    bool changed = false;
+    vec3 uvw;
+    if (temporal.state.x != 0u && (froxel.counts.y & kFroxelFlagShadowedHistory) != 0u &&
+        previousGridCoordinate(x, uvw)) {
+        float previous = previousValue(uvw, blocks) * temporal.previous.y;
+        changed = abs(value - previous) > kFroxelShadowChangeReject * max(value, previous);
+    }
+    imageStore(shadowedLight, ivec3(id), vec4(value));
+    imageStore(shadowChange, ivec3(id), vec4(changed ? 1.0 : 0.0));
+}
