@@ -11,7 +11,7 @@
 namespace postfx::gpu {
 #endif
 
-PFX_CONST(uint, kFroxelGroupSize, 8);  // scatter, integrate, apply, light lists: 8×8 invocations
+PFX_CONST(uint, kFroxelGroupSize, 8);  // scatter, shadow change, integrate, apply: 8×8 invocations
 
 // Light lists: one bit per light (1 = its sphere of influence touches the cluster) for each cluster of
 // kFroxelClusterSize² froxels × kFroxelClusterSlices slices, in words of 32 lights.

@@ -208,7 +208,7 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
     EXPECT_EQ(resourceBytes(plan, "froxel_fog.light_lists"), 3u * 2 * 3 * 2 * 4);
     const postfx::PlannedPass* lists = plan.pass("froxel_fog.light_lists");
     ASSERT_TRUE(lists);
-    EXPECT_EQ(std::vector<uint32_t>(lists->groups, lists->groups + 3), (std::vector<uint32_t>{1, 1, 6}));
+    EXPECT_EQ(std::vector<uint32_t>(lists->groups, lists->groups + 3), (std::vector<uint32_t>{3, 2, 6}));
     EXPECT_EQ(plan.totalBytes(),
               2u * 20 * 12 * 40 * 8 + 1 + 2 * kUniformSlot + 2 * kLightSlot + 3 * 2 * 3 * 2 * 4);
 

@@ -315,7 +315,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
         desc.sizedBy = volume.sizedBy;
         lightLists = b.transientImage(kLightLists, desc);
-        b.pass(kLightListPass, groupsFor(clusters.x), groupsFor(clusters.y), clusters.z * words)
+        b.pass(kLightListPass, clusters.x, clusters.y, clusters.z * words)  // a group per cluster word
             .bind(gpu::kFroxelBindingUniforms, uniforms)
             .bind(gpu::kFroxelBindingLights, lightBuffer)
             .bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageWrite);
