@@ -9,12 +9,15 @@
 // coordinate) by more than kFroxelShadowChangeReject of the larger, shadowChange holds 1: the scatter
 // pass drops the history of every froxel whose centre one of its eight enclosing block centres changed
 // at. One evaluation per 8 froxels, each block's lights in one invocation: the scatter pass's warps do
-// not pay for it. Variants: LIGHT_LISTS loops over the block's cluster's lights, else over every light.
+// not pay for it. Variants: LIGHT_LISTS loops over the shadowed lights of the block's cluster's list, else
+// over every shadowed light; a group's blocks share one cluster (kFroxelBlockGroupSize), so its warps
+// loop over the same lights.
 #extension GL_GOOGLE_include_directive : require
 
 #include "froxel_fog/froxel_shared.h"
 
-layout(local_size_x = kFroxelGroupSize, local_size_y = kFroxelGroupSize) in;
+layout(local_size_x = kFroxelBlockGroupSize, local_size_y = kFroxelBlockGroupSize,
+       local_size_z = kFroxelBlockGroupSize) in;
 
 #ifdef LIGHT_LISTS
 #define LOCAL_LIGHTS
@@ -42,10 +45,9 @@ layout(binding = kFroxelBindingShadowedLight, r32f) uniform writeonly image3D sh
 layout(binding = kFroxelBindingShadowedHistory) uniform sampler3D shadowedHistory;
 layout(binding = kFroxelBindingShadowChange, rgba8) uniform writeonly image3D shadowChange;
 
-// Light i's luminance(E)·V at camera-relative x when it has a shadow (0 without one, or beyond its range).
+// Shadowed light i's luminance(E)·V at camera-relative x (0 beyond its range).
 float shadowedLightAt(uint i, vec3 x) {
     FroxelLight l = local.lights[i];
-    if (l.shadow.x == kFroxelNoShadow) return 0.0;
     float d2;
     vec3 toLight;
     float falloff = localLightFalloff(l, x, d2, toLight);
@@ -82,22 +84,25 @@ void main() {
     vec3 corner = vec3(2u * id + 1u) / vec3(froxel.grid.xyz);
     vec3 x = gridRayDirection(corner.xy) * sliceDepth(corner.z);
 
+    // The shadowed lights (froxel.shadowed), of the block's cluster's list with LIGHT_LISTS.
     float value = 0.0;
 #ifdef LIGHT_LISTS
     uint words = froxel.counts.z;
     uvec3 cluster = (2u * id) / uvec3(kFroxelClusterSize, kFroxelClusterSize, kFroxelClusterSlices);
+#else
+    uint words = (froxel.grid.w + 31u) / 32u;
+#endif
     for (uint w = 0u; w < words; ++w) {
-        uint bits = imageLoad(lightLists, ivec3(cluster.xy, cluster.z * words + w)).r;
+        uint bits = froxel.shadowed[w / 4u][w % 4u];
+#ifdef LIGHT_LISTS
+        bits &= imageLoad(lightLists, ivec3(cluster.xy, cluster.z * words + w)).r;
+#endif
         while (bits != 0u) {
             int i = findLSB(bits);
             bits &= bits - 1u;
             value += shadowedLightAt(w * 32u + uint(i), x);
         }
     }
-#else
-    for (uint i = 0u; i < froxel.grid.w; ++i)
-        value += shadowedLightAt(i, x);
-#endif
 
     bool changed = false;
     vec3 uvw;

@@ -246,6 +246,9 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     PassUniforms u =
         buildPassUniforms(frame, b.depthConvention(), grid, lightCount, words, s.noise.enabled, shadowRead);
     if (depthInput.distance) u.fog.flags.x |= gpu::kFogFlagViewDistance;
+    for (uint32_t i = 0; i < lightCount; ++i)
+        if (lights.lights[i].shadow.x != gpu::kFroxelNoShadow)
+            u.froxel.shadowed[i / 128][i / 32 % 4] |= 1u << (i % 32);
 
     core::ImageDesc volume;
     volume.type = VK_IMAGE_TYPE_3D;
@@ -322,8 +325,9 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     }
 
     if (localShadows && temporal) {
-        b.pass(kShadowChangePass[lists ? 1 : 0], groupsFor((grid.x + 1) / 2), groupsFor((grid.y + 1) / 2),
-               (grid.z + 1) / 2)
+        constexpr uint32_t g = gpu::kFroxelBlockGroupSize;
+        b.pass(kShadowChangePass[lists ? 1 : 0], groupsFor((grid.x + 1) / 2, g),
+               groupsFor((grid.y + 1) / 2, g), groupsFor((grid.z + 1) / 2, g))
             .bind(gpu::kFroxelBindingUniforms, uniforms)
             .bind(gpu::kFroxelBindingLights, lightBuffer);
         if (lists) b.bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageRead);
