@@ -5,8 +5,8 @@
 // see it. One invocation per block of 2×2×2 froxels evaluates the shadowed lights' light at the block's
 // centre (the corner the block's froxels share; no jitter): Σ luminance(E_i)·V_i, pre-exposed and
 // storage-scaled as the scatter volume, written to shadowedLight for the next frame. Where it differs from
-// the previous frame's value there (the previous blocks' values interpolated at the point's previous grid
-// coordinate) by more than kFroxelShadowChangeReject of the larger, shadowChange holds 1: the scatter
+// the previous frame's value there (the previous block nearest the point's previous grid coordinate) by
+// more than kFroxelShadowChangeReject of the larger, shadowChange holds 1: the scatter
 // pass drops the history of every froxel whose centre one of its eight enclosing block centres changed
 // at. One evaluation per 8 froxels, each block's lights in one invocation: the scatter pass's warps do
 // not pay for it. Variants: LIGHT_LISTS loops over the shadowed lights of the block's cluster's list, else
@@ -58,23 +58,6 @@ float shadowedLightAt(uint i, vec3 x) {
     return min(e * froxel.jitter.w * localShadowVisibility(l, x, face), kMaxLightTerm);
 }
 
-// The previous frame's block values at texture coordinates uvw, trilinear by hand (linear filtering of
-// R32F is optional in Vulkan): a still view reads its own block's texel.
-float previousValue(vec3 uvw, uvec3 blocks) {
-    vec3 p = uvw * vec3(blocks) - 0.5;
-    ivec3 p0 = ivec3(floor(p));
-    vec3 f = p - vec3(p0);
-    ivec3 last = ivec3(blocks) - 1;
-    float sum = 0.0;
-    for (int k = 0; k < 8; ++k) {
-        ivec3 o = ivec3(k & 1, (k >> 1) & 1, k >> 2);
-        vec3 w = mix(1.0 - f, f, vec3(o));
-        if (!(w.x * w.y * w.z > 0.0)) continue;  // not read
-        sum += w.x * w.y * w.z * texelFetch(shadowedHistory, clamp(p0 + o, ivec3(0), last), 0).r;
-    }
-    return sum;
-}
-
 void main() {
     uvec3 id = gl_GlobalInvocationID;
     uvec3 blocks = (froxel.grid.xyz + 1u) / 2u;
@@ -108,7 +91,11 @@ void main() {
     vec3 uvw;
     if (temporal.state.x != 0u && (froxel.counts.y & kFroxelFlagShadowedHistory) != 0u &&
         previousGridCoordinate(x, uvw)) {
-        float previous = previousValue(uvw, blocks) * temporal.previous.y;
+        // The nearest previous block: a still view reads its own, so the test is exact there (an
+        // interpolated value would mix in a neighbour's by the reprojection's rounding, and a block at 0
+        // beside a lit one would be rejected every frame).
+        ivec3 nearest = clamp(ivec3(floor(uvw * vec3(blocks))), ivec3(0), ivec3(blocks) - 1);
+        float previous = texelFetch(shadowedHistory, nearest, 0).r * temporal.previous.y;
         changed = abs(value - previous) > kFroxelShadowChangeReject * max(value, previous);
     }
     imageStore(shadowedLight, ivec3(id), vec4(value));
