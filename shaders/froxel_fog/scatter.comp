@@ -151,8 +151,7 @@ vec3 localLightTerm(uint i, vec3 x, vec3 dir) {
     if (!(falloff > 0.0)) return vec3(0.0);
     float visibility = 1.0;
 #ifdef LOCAL_SHADOWS
-    uint face;
-    if (l.shadow.x != kFroxelNoShadow) visibility = localShadowVisibility(l, x, face);
+    if (l.shadow.x != kFroxelNoShadow) visibility = localShadowVisibility(l, x);
 #endif
     return localLightScatter(l, x, dir, falloff, d2, toLight, visibility);
 }

@@ -54,8 +54,7 @@ float shadowedLightAt(uint i, vec3 x) {
     if (!(falloff > 0.0)) return 0.0;
     float r = l.intensityRadius.w;
     float e = dot(l.intensityRadius.rgb, vec3(0.2126, 0.7152, 0.0722)) * falloff / max(d2 + r * r, 1e-30);
-    uint face;
-    return min(e * froxel.jitter.w * localShadowVisibility(l, x, face), kMaxLightTerm);
+    return min(e * froxel.jitter.w * localShadowVisibility(l, x), kMaxLightTerm);
 }
 
 void main() {
