@@ -415,16 +415,16 @@ std::string froxelConclusionsMarkdown(const RunInfo& info, const std::vector<Res
             << ", light lists as the default decides), the first n of them casting shadows (the demo "
                "renderer's cube maps in one atlas; each shadowed light's faces read in the scatter pass), "
                "timed only. Over none: all passes less the unshadowed row's (the first shadowed light also "
-               "switches the scatter pass to its variant with shadows and, with temporal accumulation, the "
-               "test at each froxel's centre); each further light: (all passes − the 1-shadowed row's) / "
-               "(n − 1).\n\n"
-            << "| shadowed | scatter | all passes | over none | each further light "
-               "|\n|---|---|---|---|---|\n";
+               "switches the scatter pass to its variant with shadows and, with temporal accumulation, adds "
+               "the shadow-change pass, one test per block of 2×2×2 froxels); each further light: (all "
+               "passes − the 1-shadowed row's) / (n − 1).\n\n"
+            << "| shadowed | shadow change | scatter | all passes | over none | each further light "
+               "|\n|---|---|---|---|---|---|\n";
         for (const Result* r : shadowRows) {
             const uint32_t n = r->setting.shadowedLights;
-            out << "| " << n << " | " << ms(passMs(*r, "froxel_fog.scatter")) << " | " << ms(r->timing.median)
-                << " | " << (n && none ? ms(r->timing.median - none->timing.median) : std::string("–"))
-                << " | "
+            out << "| " << n << " | " << ms(passMs(*r, "froxel_fog.shadow_change")) << " | "
+                << ms(passMs(*r, "froxel_fog.scatter")) << " | " << ms(r->timing.median) << " | "
+                << (n && none ? ms(r->timing.median - none->timing.median) : std::string("–")) << " | "
                 << (n > 1 && one ? ms((r->timing.median - one->timing.median) / double(n - 1))
                                  : std::string("–"))
                 << " |\n";

@@ -11,7 +11,10 @@
 namespace postfx::gpu {
 #endif
 
-PFX_CONST(uint, kFroxelGroupSize, 8);  // scatter, integrate, apply, light lists: 8×8 invocations
+PFX_CONST(uint, kFroxelGroupSize, 8);  // scatter, integrate, apply: 8×8 invocations
+// Shadow change (shadow_change.comp): 4×4×4 invocations, one per block of 2×2×2 froxels, so that a group's
+// blocks lie in one cluster of the light lists and its warps loop over one list.
+PFX_CONST(uint, kFroxelBlockGroupSize, 4);
 
 // Light lists: one bit per light (1 = its sphere of influence touches the cluster) for each cluster of
 // kFroxelClusterSize² froxels × kFroxelClusterSlices slices, in words of 32 lights.
@@ -39,11 +42,13 @@ PFX_CONST(uint, kFroxelBindingAtmosphere, kMediumBindingAtmosphere);
 // sampler2D: the clouds' shadow map (common/medium/atmosphere_light.glsl), with clouds casting shadows
 PFX_CONST(uint, kFroxelBindingCloudShadow, kMediumBindingCloudShadow);
 // Local lights' shadows (froxel-fog.md#local-light-shadows): the host's atlas, its faces, and (temporal)
-// the shadowed lights' light at each froxel's centre in this and the previous frame.
-PFX_CONST(uint, kFroxelBindingShadowAtlas, 14);      // sampler2D: host local shadow atlas (texelFetch)
-PFX_CONST(uint, kFroxelBindingShadowFaces, 15);      // storage buffer: FroxelShadowFace[]
+// the shadowed lights' light at each block's centre in this and the previous frame, and where it changed.
+PFX_CONST(uint, kFroxelBindingShadowAtlas, 14);  // sampler2D: host local shadow atlas (texelFetch)
+PFX_CONST(uint, kFroxelBindingShadowFaces, 15);  // storage buffer: FroxelShadowFace[]
+// Per block of 2×2×2 froxels (shadow_change.comp).
 PFX_CONST(uint, kFroxelBindingShadowedLight, 16);    // storage image r32f: written this frame
 PFX_CONST(uint, kFroxelBindingShadowedHistory, 17);  // sampler3D r32f: the previous frame's
+PFX_CONST(uint, kFroxelBindingShadowChange, 18);     // storage image / sampler3D rgba8: 1 where it changed
 
 // Flags in FroxelUniforms.counts.y
 PFX_CONST(uint, kFroxelFlagLogSlices, 1u);        // depth distribution Log (else Power)
@@ -68,6 +73,8 @@ struct FroxelUniforms {
     vec4 jitter;   // xyz: sample position inside each froxel, [0, 1) (Halton or 0.5); w: storage scale
     vec4 slices;   // x: near [m], y: far = max distance [m], z: power exponent k, w: ln(far / near)
     uvec4 counts;  // x: fog volumes, y: kFroxelFlag* bits, z: light-list words per cluster, w: 0
+    // Bit i % 32 of word i / 32 (of shadowed[i / 128][i / 32 % 4]): light i has a shadow.
+    uvec4 shadowed[2];
     // Fog volume i: volumes[2i] = (camera-relative centre [m], edge falloff [m]); volumes[2i + 1] = box:
     // (half size [m], density [1/m]), sphere: (radius [m], -1, 0, density [1/m]).
     vec4 volumes[2 * 64];
@@ -96,8 +103,11 @@ struct FroxelLights {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(FroxelUniforms) == 4 * 16 + 128 * 16, "FroxelUniforms must match std140");
+static_assert(sizeof(FroxelUniforms) == 6 * 16 + 128 * 16, "FroxelUniforms must match std140");
 static_assert(sizeof(FroxelLight) == 80, "FroxelLight must match std140");
+static_assert(2 * kFroxelBlockGroupSize == kFroxelClusterSize &&
+                  kFroxelClusterSlices % (2 * kFroxelBlockGroupSize) == 0,
+              "a shadow-change group's blocks must lie in one cluster");
 static_assert(sizeof(FroxelLights) == 256 * 80, "FroxelLights must match std140");
 static_assert(sizeof(FroxelShadowFace) == 80, "FroxelShadowFace must match std430");
 }  // namespace postfx::gpu

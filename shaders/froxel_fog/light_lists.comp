@@ -1,14 +1,18 @@
 #version 450
 // Light lists (docs/effects/froxel-fog.md#light-lists): for each cluster of kFroxelClusterSize²
 // froxels × kFroxelClusterSlices slices, one bit per light whose sphere of influence (its range) may
-// touch the cluster. One invocation writes one 32-light word of one cluster: texel (cx, cy, cz·words + w).
-// The test is conservative: the sphere against the radial shell [start, end] of the cluster's slices and
-// against the four planes through the camera bounding the cluster's tile.
+// touch the cluster. One workgroup of 32 invocations writes one 32-light word of one cluster: texel
+// (cx, cy, cz·words + w), invocation i testing light 32w + i. The test is conservative: the sphere against
+// the radial shell [start, end] of the cluster's slices and against the four planes through the camera
+// bounding the cluster's tile. One light per invocation, not a loop over 32 in each: the pass has few
+// clusters (20×12×8·words at 160×90×128), too few invocations to hide a loop's latency.
 #extension GL_GOOGLE_include_directive : require
 
 #include "froxel_fog/froxel_shared.h"
 
-layout(local_size_x = kFroxelGroupSize, local_size_y = kFroxelGroupSize) in;
+layout(local_size_x = 32) in;
+
+shared uint wordBits;
 
 #include "froxel_fog/bindings.glsl"
 #include "froxel_fog/grid.glsl"
@@ -21,13 +25,12 @@ vec3 sidePlane(vec3 a, vec3 b, vec3 inward) {
 
 void main() {
     uint words = froxel.counts.z;
-    uvec3 clusters =
-        (froxel.grid.xyz + uvec3(kFroxelClusterSize, kFroxelClusterSize, kFroxelClusterSlices) - 1u) /
-        uvec3(kFroxelClusterSize, kFroxelClusterSize, kFroxelClusterSlices);
-    uvec3 id = gl_GlobalInvocationID;
+    uvec3 id = gl_WorkGroupID;  // one group per cluster word: (cx, cy, cz·words + w)
     uvec3 cluster = uvec3(id.xy, id.z / words);
     uint word = id.z % words;
-    if (any(greaterThanEqual(cluster, clusters))) return;
+    uint lane = gl_LocalInvocationID.x;
+    if (lane == 0u) wordBits = 0u;
+    barrier();
 
     vec2 grid = vec2(froxel.grid.xy);
     vec2 uv0 = vec2(cluster.xy * kFroxelClusterSize) / grid;
@@ -40,15 +43,15 @@ void main() {
     float start = sliceStart(cluster.z * kFroxelClusterSlices);
     float end = sliceStart(min((cluster.z + 1u) * kFroxelClusterSlices, froxel.grid.z));
 
-    uint bits = 0u;
-    uint first = word * 32u, count = min(froxel.grid.w - min(first, froxel.grid.w), 32u);
-    for (uint i = 0u; i < count; ++i) {
-        vec4 light = local.lights[first + i].positionRange;
+    uint i = word * 32u + lane;
+    if (i < froxel.grid.w) {
+        vec4 light = local.lights[i].positionRange;
         float distance = length(light.xyz), range = light.w;
         bool touches = distance + range >= start && distance - range <= end;
         for (int p = 0; p < 4; ++p)
             touches = touches && dot(planes[p], light.xyz) >= -range;
-        if (touches) bits |= 1u << i;
+        if (touches) atomicOr(wordBits, 1u << lane);
     }
-    imageStore(lightLists, ivec3(id), uvec4(bits));
+    barrier();
+    if (lane == 0u) imageStore(lightLists, ivec3(id), uvec4(wordBits));
 }

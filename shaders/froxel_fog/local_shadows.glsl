@@ -46,28 +46,14 @@ float localShadowFaceVisibility(FroxelLight l, uint i, vec4 h, vec4 c) {
     return lit;
 }
 
-// V(x) of light l at camera-relative x: in the first of its faces that holds x; 1 when none does. `face`
-// receives that face (its index in the faces buffer; kFroxelNoShadow for none).
-float localShadowVisibility(FroxelLight l, vec3 x, out uint face) {
+// V(x) of light l at camera-relative x: in the first of its faces that holds x; 1 when none does.
+float localShadowVisibility(FroxelLight l, vec3 x) {
     vec4 h = vec4(x, 1.0), c;
-    face = kFroxelNoShadow;
     for (uint f = 0u; f < l.shadow.y; ++f) {
         if (!localShadowFaceHolds(l.shadow.x + f, h, c)) continue;
-        face = l.shadow.x + f;
-        return localShadowFaceVisibility(l, face, h, c);
+        return localShadowFaceVisibility(l, l.shadow.x + f, h, c);
     }
     return 1.0;
-}
-
-// The same, trying face `hint` first (the face of a point nearby): for the temporal test at the
-// froxel's centre, whose face is almost always its sample's. On a seam it may take the other face; the
-// test only compares the value with the previous frame's.
-float localShadowVisibilityNear(FroxelLight l, vec3 x, uint hint) {
-    vec4 h = vec4(x, 1.0), c;
-    if (hint != kFroxelNoShadow && localShadowFaceHolds(hint, h, c))
-        return localShadowFaceVisibility(l, hint, h, c);
-    uint face;
-    return localShadowVisibility(l, x, face);
 }
 
 #endif

@@ -41,13 +41,13 @@ layout(binding = kFroxelBindingShadowFaces, std430) readonly buffer ShadowFaces 
 shadowFaces;
 #include "froxel_fog/local_shadows.glsl"
 #ifdef TEMPORAL
-// The shadowed lights' light at each froxel's centre: this frame's (written), the previous one's (read).
-layout(binding = kFroxelBindingShadowedLight, r32f) uniform writeonly image3D shadowedLight;
-layout(binding = kFroxelBindingShadowedHistory) uniform sampler3D shadowedHistory;
+// Where the shadowed lights' light changed since the previous frame, per block of 2×2×2 froxels
+// (shadow_change.comp): 1 changed, 0 not; sampled trilinearly (LinearClamp).
+layout(binding = kFroxelBindingShadowChange) uniform sampler3D shadowChange;
 #endif
 #endif
 
-// The centre of froxel `id` (camera-relative): where the history is read and the shadow change tested.
+// The centre of froxel `id` (camera-relative): where the history is read.
 vec3 froxelCentre(uvec3 id) {
     vec3 centreDir = gridRayDirection((vec2(id.xy) + 0.5) / vec2(froxel.grid.xy));
     return centreDir * sliceDepth((float(id.z) + 0.5) / float(froxel.grid.z));
@@ -60,26 +60,7 @@ layout(binding = kFroxelBindingTemporal, std140) uniform Temporal {
 };
 #include "common/history_rescale.glsl"
 
-// Where the previous frame's grid held camera-relative `x`, as texture coordinates of its volume
-// (x, y: the previous view's uv; z: the slice coordinate of the distance from the previous camera with
-// the previous near plane; far and the distribution are unchanged, or the history was reset). False off
-// the previous frustum (beside or behind the view, beyond max distance).
-bool previousGridCoordinate(vec3 x, out vec3 uvw) {
-    uvw = vec3(0.0);
-    vec4 clip = temporal.previousClip * vec4(x, 1.0);
-    if (!(clip.w > 0.0)) return false;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    float t = length(x + temporal.cameraDelta.xyz);
-    if (!all(greaterThanEqual(uv, vec2(0.0))) || !all(lessThanEqual(uv, vec2(1.0))) || t > froxel.slices.y)
-        return false;
-    float near = temporal.previous.x, far = froxel.slices.y;
-    float d = clamp(t, near, far);
-    float z = (froxel.counts.y & kFroxelFlagLogSlices) != 0u
-                  ? log(d / near) / log(far / near)
-                  : pow((d - near) / (far - near), 1.0 / froxel.slices.z);
-    uvw = vec3(uv, z);
-    return true;
-}
+#include "froxel_fog/reproject.glsl"
 
 // Whether `x` is near a local light that changed (its old or new sphere, widened by `margin`, the
 // froxel's size, since the history is filtered over neighbouring froxels).
@@ -113,10 +94,9 @@ vec4 blendSlices(vec4 history, vec4 current, float w, float dt) {
 // This frame's (albedo·light·scale, σt) blended with the history (docs/temporal.md). The history is read
 // where the previous grid held this froxel's centre (not its jittered sample): a still view reads each
 // froxel's own texel, so the accumulation averages the jittered samples without blurring the volume.
-// `shadowed`: the shadowed lights' light at the centre (LOCAL_SHADOWS); where it differs from the
-// previous frame's by more than kFroxelShadowChangeReject of the larger, a caster or a shadowed light
-// moved there and the history is dropped.
-vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 centre, float start, float end, float shadowed) {
+// With local shadows, the history is also dropped where a caster or a shadowed light moved
+// (shadow_change.comp).
+vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 centre, float start, float end) {
     if (temporal.state.x == 0u) return current;
     vec3 centreDir = normalize(centre);
     if (temporal.state.y > 0u) {
@@ -145,13 +125,11 @@ vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 centre, float start, float 
     history.rgb *= temporal.previous.y;
     if (!finiteVec(history)) return current;  // a host's NaN once in the volume: not kept
 #ifdef LOCAL_SHADOWS
-    if ((froxel.counts.y & kFroxelFlagShadowedHistory) != 0u) {
-        // The nearest previous froxel: a still view reads its own (the test is then exact), a moving one
-        // the nearest centre (its change along a shadow's edge may reject the froxel for a frame).
-        ivec3 nearest = clamp(ivec3(floor(uvw * vec3(froxel.grid.xyz))), ivec3(0), last);
-        float previous = texelFetch(shadowedHistory, nearest, 0).r * temporal.previous.y;
-        if (abs(shadowed - previous) > kFroxelShadowChangeReject * max(shadowed, previous)) return current;
-    }
+    // The blocks whose centres enclose this froxel's centre (shadow_change.comp): the froxel's centre
+    // (k + 0.5 froxels) is (k + 0.5)/2 in block texels, between two block centres with weights 1/4 and 3/4
+    // on each axis, so each of the eight weighs at least 1/64 and any changed one is seen.
+    uvec3 blocks = (froxel.grid.xyz + 1u) / 2u;
+    if (texture(shadowChange, (vec3(id) + 0.5) / vec3(2u * blocks)).r > 0.5 / 64.0) return current;
 #endif
     // Each trilinear resample blurs the history by a variance of b = Σ f(1 - f) froxel² (0 for a still
     // view, which reads each froxel's own texel); an exponential blend of weight w adds these up to
@@ -164,37 +142,22 @@ vec4 accumulate(vec4 current, vec3 x, uvec3 id, vec3 centre, float start, float 
 #endif
 
 #ifdef LOCAL_LIGHTS
-// Light i's E·p·V at the sample x; with temporal shadows, adds its luminance·V at the froxel's centre to
-// `shadowed` when it has a shadow (the scale of the scatter volume: pre-exposed, storage-scaled).
-vec3 localLightTerm(uint i, vec3 x, vec3 dir, vec3 centre, inout float shadowed) {
+// Light i's E·p·V at the sample x.
+vec3 localLightTerm(uint i, vec3 x, vec3 dir) {
     FroxelLight l = local.lights[i];
     float d2;
     vec3 toLight;
     float falloff = localLightFalloff(l, x, d2, toLight);
+    if (!(falloff > 0.0)) return vec3(0.0);
     float visibility = 1.0;
 #ifdef LOCAL_SHADOWS
-    if (l.shadow.x != kFroxelNoShadow) {
-        uint face = kFroxelNoShadow;
-        if (falloff > 0.0) visibility = localShadowVisibility(l, x, face);
-#ifdef TEMPORAL
-        float c2;
-        vec3 cToLight;
-        float cFalloff = localLightFalloff(l, centre, c2, cToLight);
-        if (cFalloff > 0.0) {
-            float r = l.intensityRadius.w;
-            float e =
-                dot(l.intensityRadius.rgb, vec3(0.2126, 0.7152, 0.0722)) * cFalloff / max(c2 + r * r, 1e-30);
-            shadowed += min(e * froxel.jitter.w * localShadowVisibilityNear(l, centre, face), kMaxLightTerm);
-        }
+    if (l.shadow.x != kFroxelNoShadow) visibility = localShadowVisibility(l, x);
 #endif
-    }
-#endif
-    if (!(falloff > 0.0)) return vec3(0.0);
     return localLightScatter(l, x, dir, falloff, d2, toLight, visibility);
 }
 
 // Σ over the lights the froxel's cluster lists (LIGHT_LISTS), or over all of them.
-vec3 localLightsScatter(uvec3 froxelId, vec3 x, vec3 dir, vec3 centre, inout float shadowed) {
+vec3 localLightsScatter(uvec3 froxelId, vec3 x, vec3 dir) {
     vec3 sum = vec3(0.0);
 #ifdef LIGHT_LISTS
     uint words = froxel.counts.z;
@@ -204,12 +167,12 @@ vec3 localLightsScatter(uvec3 froxelId, vec3 x, vec3 dir, vec3 centre, inout flo
         while (bits != 0u) {
             int i = findLSB(bits);
             bits &= bits - 1u;
-            sum += localLightTerm(w * 32u + uint(i), x, dir, centre, shadowed);
+            sum += localLightTerm(w * 32u + uint(i), x, dir);
         }
     }
 #else
     for (uint i = 0u; i < froxel.grid.w; ++i)
-        sum += localLightTerm(i, x, dir, centre, shadowed);
+        sum += localLightTerm(i, x, dir);
 #endif
     return sum;
 }
@@ -226,12 +189,6 @@ void main() {
     // σt: the shared medium plus the volumes (+Inf stays +Inf: an opaque froxel, stored as the half max).
     float sigmaT = extinction(x) + volumesExtinction(x);
     vec3 light = vec3(0.0);
-    float shadowed = 0.0;  // the shadowed lights' light at the centre (temporal shadows)
-#ifdef TEMPORAL
-    vec3 centre = froxelCentre(id);
-#else
-    vec3 centre = x;
-#endif
     if (sigmaT > 0.0) {
         light = fog.ambient.rgb;
         vec3 sun = fog.sunIlluminance.rgb;
@@ -240,15 +197,12 @@ void main() {
                      shadowVisibility(x) * sunTransmittance(fog.heights.x + x.y) *
                      atmosphereSunTransmittance(x) * cloudShadowVisibility(x);
 #ifdef LOCAL_LIGHTS
-        light += localLightsScatter(id, x, dir, centre, shadowed);
+        light += localLightsScatter(id, x, dir);
 #endif
     }
     vec4 stored = min(vec4(fog.albedo.rgb * light * froxel.jitter.w, sigmaT), vec4(kFroxelHalfMax));
 #ifdef TEMPORAL
-    stored = min(accumulate(stored, x, id, centre, start, end, shadowed), vec4(kFroxelHalfMax));
-#ifdef LOCAL_SHADOWS
-    imageStore(shadowedLight, ivec3(id), vec4(shadowed));
-#endif
+    stored = min(accumulate(stored, x, id, froxelCentre(id), start, end), vec4(kFroxelHalfMax));
 #endif
     imageStore(scatterVolume, ivec3(id), stored);
 }

@@ -32,7 +32,7 @@ std::string sizedBy(const postfx::FramePlan& plan, const std::string& name) {
     return {};
 }
 
-constexpr uint64_t kUniformSlot = 2560;  // sizeof(FogUniforms) + sizeof(FroxelUniforms) = 2448, to 256
+constexpr uint64_t kUniformSlot = 2560;  // sizeof(FogUniforms) + sizeof(FroxelUniforms) = 2544, to 256
 constexpr uint64_t kLightSlot = 20480;   // 256 lights × 80 bytes
 
 class FroxelFogPlanTest : public GpuTest {
@@ -208,7 +208,7 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
     EXPECT_EQ(resourceBytes(plan, "froxel_fog.light_lists"), 3u * 2 * 3 * 2 * 4);
     const postfx::PlannedPass* lists = plan.pass("froxel_fog.light_lists");
     ASSERT_TRUE(lists);
-    EXPECT_EQ(std::vector<uint32_t>(lists->groups, lists->groups + 3), (std::vector<uint32_t>{1, 1, 6}));
+    EXPECT_EQ(std::vector<uint32_t>(lists->groups, lists->groups + 3), (std::vector<uint32_t>{3, 2, 6}));
     EXPECT_EQ(plan.totalBytes(),
               2u * 20 * 12 * 40 * 8 + 1 + 2 * kUniformSlot + 2 * kLightSlot + 3 * 2 * 3 * 2 * 4);
 
@@ -218,8 +218,10 @@ TEST_F(FroxelFogPlanTest, LightListsOnlyForManyLights) {
 }
 
 // Local lights' shadows: the scatter pass reads the host's atlas and the shadows' faces (a storage buffer
-// of 80 bytes a face, each shadow once however many lights share it); with temporal accumulation also
-// two R32F volumes of the shadowed lights' light. Without a light that names a shadow, none of it.
+// of 80 bytes a face, each shadow once however many lights share it); with temporal accumulation the
+// shadow-change pass writes the shadowed lights' light per block of 2×2×2 froxels (two R32F volumes, this
+// frame's and the last's) and where it changed (RGBA8), which the scatter pass reads. Without a light that
+// names a shadow, none of it.
 TEST_F(FroxelFogPlanTest, LocalShadowsOnlyWhenALightHasOne) {
     FroxelCase shadowed = c;
     shadowed.lights = {light(0.0), light(1.0), light(2.0)};
@@ -250,11 +252,24 @@ TEST_F(FroxelFogPlanTest, LocalShadowsOnlyWhenALightHasOne) {
                 scatter->reads.end());
     EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadow_faces"), 2u * 768);  // 7 faces × 80 = 560, to 256
     EXPECT_FALSE(plan.reads("froxel_fog.shadowed_light_a"));              // temporal off
+    EXPECT_FALSE(plan.pass("froxel_fog.shadow_change"));
 
     shadowed.frame.froxelFog.temporal.enabled = true;
     plan = planAndRun(shadowed, 2);
-    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadowed_light_a"), 20u * 12 * 40 * 4);
-    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadowed_light_b"), 20u * 12 * 40 * 4);
+    EXPECT_EQ(passNames(plan), (std::vector<std::string>{"froxel_fog.shadow_change", "froxel_fog.scatter",
+                                                         "froxel_fog.integrate", "froxel_fog.apply"}));
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadowed_light_a"), 10u * 6 * 20 * 4);  // 20×12×40 in blocks
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadowed_light_b"), 10u * 6 * 20 * 4);
+    EXPECT_EQ(resourceBytes(plan, "froxel_fog.shadow_change"), 10u * 6 * 20 * 4);
+    const postfx::PlannedPass* change = plan.pass("froxel_fog.shadow_change");
+    ASSERT_TRUE(change);
+    EXPECT_EQ(std::vector<uint32_t>(change->groups, change->groups + 3), (std::vector<uint32_t>{3, 2, 5}));
+    scatter = plan.pass("froxel_fog.scatter");
+    ASSERT_TRUE(scatter);
+    EXPECT_TRUE(std::find(scatter->reads.begin(), scatter->reads.end(), "froxel_fog.shadow_change") !=
+                scatter->reads.end());
+    for (const char* r : {"froxel_fog.shadowed_light_a", "froxel_fog.shadowed_light_b"})
+        EXPECT_TRUE(std::find(scatter->reads.begin(), scatter->reads.end(), r) == scatter->reads.end()) << r;
 }
 
 // Temporal accumulation (on by default): the scatter volume is two RGBA32F histories, the one written last

@@ -66,6 +66,8 @@ constexpr core::Binding kShadowAtlas{gpu::kFroxelBindingShadowAtlas, kSampled};
 constexpr core::Binding kShadowFaceBuffer{gpu::kFroxelBindingShadowFaces, kStorageBuffer};
 constexpr core::Binding kShadowedImage{gpu::kFroxelBindingShadowedLight, kStorage};
 constexpr core::Binding kShadowedSampled{gpu::kFroxelBindingShadowedHistory, kSampled};
+constexpr core::Binding kShadowChangeImage{gpu::kFroxelBindingShadowChange, kStorage};
+constexpr core::Binding kShadowChangeSampled{gpu::kFroxelBindingShadowChange, kSampled};
 constexpr core::Binding kScatterLightShadowBindings[] = {kShadowMap,   kNoiseTexture, kUniformBuffer,
                                                          kLightBuffer, kScatterImage, kAtmosphere,
                                                          kCloudShadow, kShadowAtlas,  kShadowFaceBuffer};
@@ -73,13 +75,19 @@ constexpr core::Binding kScatterListShadowBindings[] = {
     kShadowMap,    kNoiseTexture, kUniformBuffer, kLightBuffer, kLightListImage,
     kScatterImage, kAtmosphere,   kCloudShadow,   kShadowAtlas, kShadowFaceBuffer};
 constexpr core::Binding kScatterLightShadowTemporalBindings[] = {
-    kShadowMap,        kNoiseTexture,   kUniformBuffer,  kLightBuffer, kScatterImage,
-    kHistorySampled,   kTemporalBuffer, kAtmosphere,     kCloudShadow, kShadowAtlas,
-    kShadowFaceBuffer, kShadowedImage,  kShadowedSampled};
+    kShadowMap,      kNoiseTexture, kUniformBuffer, kLightBuffer,      kScatterImage,        kHistorySampled,
+    kTemporalBuffer, kAtmosphere,   kCloudShadow,   kShadowFaceBuffer, kShadowChangeSampled, kShadowAtlas};
 constexpr core::Binding kScatterListShadowTemporalBindings[] = {
-    kShadowMap,    kNoiseTexture,     kUniformBuffer,  kLightBuffer,    kLightListImage,
-    kScatterImage, kHistorySampled,   kTemporalBuffer, kAtmosphere,     kCloudShadow,
-    kShadowAtlas,  kShadowFaceBuffer, kShadowedImage,  kShadowedSampled};
+    kShadowMap,    kNoiseTexture,     kUniformBuffer,      kLightBuffer, kLightListImage,
+    kScatterImage, kHistorySampled,   kTemporalBuffer,     kAtmosphere,  kCloudShadow,
+    kShadowAtlas,  kShadowFaceBuffer, kShadowChangeSampled};
+// The shadow-change pass (looping over every light, with light lists).
+constexpr core::Binding kShadowChangeLightBindings[] = {kUniformBuffer,   kLightBuffer,      kTemporalBuffer,
+                                                        kShadowAtlas,     kShadowFaceBuffer, kShadowedImage,
+                                                        kShadowedSampled, kShadowChangeImage};
+constexpr core::Binding kShadowChangeListBindings[] = {kUniformBuffer,  kLightBuffer,     kLightListImage,
+                                                       kTemporalBuffer, kShadowAtlas,     kShadowFaceBuffer,
+                                                       kShadowedImage,  kShadowedSampled, kShadowChangeImage};
 constexpr core::Binding kIntegrateBindings[] = {kUniformBuffer, kScatterImage, kIntegratedImage};
 constexpr core::Binding kApplyBindings[] = {kColorIn,       kColorOut,          kDepth,
                                             kUniformBuffer, kIntegratedSampled, kAtmosphere};
@@ -116,6 +124,11 @@ const core::ComputePipelineDesc kScatterShadowTemporalPass[2] = {
      kScatterLightShadowTemporalBindings},
     {"froxel_fog.scatter", spirv::froxel_fog_scatter_comp_LIGHT_LISTS_LOCAL_SHADOWS_TEMPORAL,
      kScatterListShadowTemporalBindings}};
+const core::ComputePipelineDesc kShadowChangePass[2] = {
+    {"froxel_fog.shadow_change", spirv::froxel_fog_shadow_change_comp_LOCAL_LIGHTS,
+     kShadowChangeLightBindings},
+    {"froxel_fog.shadow_change", spirv::froxel_fog_shadow_change_comp_LIGHT_LISTS,
+     kShadowChangeListBindings}};
 // [1]: integrating the RGBA32F temporal history.
 const core::ComputePipelineDesc kIntegratePass[2] = {
     {"froxel_fog.integrate", spirv::froxel_fog_integrate_comp, kIntegrateBindings},
@@ -233,6 +246,9 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     PassUniforms u =
         buildPassUniforms(frame, b.depthConvention(), grid, lightCount, words, s.noise.enabled, shadowRead);
     if (depthInput.distance) u.fog.flags.x |= gpu::kFogFlagViewDistance;
+    for (uint32_t i = 0; i < lightCount; ++i)
+        if (lights.lights[i].shadow.x != gpu::kFroxelNoShadow)
+            u.froxel.shadowed[i / 128][i / 32 % 4] |= 1u << (i % 32);
 
     core::ImageDesc volume;
     volume.type = VK_IMAGE_TYPE_3D;
@@ -242,7 +258,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
     volume.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     // The scatter volume: this frame's alone, or (temporal) the accumulated one of two histories.
     const bool temporal = s.temporal.enabled;
-    core::ImageRef scatter, history, shadowedOut, shadowedIn;
+    core::ImageRef scatter, history, shadowedOut, shadowedIn, shadowChange;
     core::BufferRef temporalUniforms;
     if (temporal) {
         const core::TemporalFrame t = history_.decide(frame, s.temporal, temporalKey(frame), true);
@@ -258,10 +274,14 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         scatter = b.historyImage(kHistory[t.writeSlot], historyDesc);
         history = b.historyImage(kHistory[t.readSlot], historyDesc);
         if (localShadows) {
-            core::ImageDesc shadowedDesc = volume;
-            shadowedDesc.format = VK_FORMAT_R32_SFLOAT;
-            shadowedOut = b.historyImage(kShadowedLight[t.writeSlot], shadowedDesc);
-            shadowedIn = b.historyImage(kShadowedLight[t.readSlot], shadowedDesc);
+            // One texel per block of 2×2×2 froxels (shadow_change.comp).
+            core::ImageDesc blockDesc = volume;
+            blockDesc.extent = {(grid.x + 1) / 2, (grid.y + 1) / 2, (grid.z + 1) / 2};
+            blockDesc.format = VK_FORMAT_R32_SFLOAT;
+            shadowedOut = b.historyImage(kShadowedLight[t.writeSlot], blockDesc);
+            shadowedIn = b.historyImage(kShadowedLight[t.readSlot], blockDesc);
+            blockDesc.format = VK_FORMAT_R8G8B8A8_UNORM;  // a storage format every device has
+            shadowChange = b.transientImage(kShadowChange, blockDesc);
             if (t.historyValid && previousShadowed_) u.froxel.counts.y |= gpu::kFroxelFlagShadowedHistory;
         }
     } else {
@@ -298,10 +318,25 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         desc.usage = VK_IMAGE_USAGE_STORAGE_BIT;
         desc.sizedBy = volume.sizedBy;
         lightLists = b.transientImage(kLightLists, desc);
-        b.pass(kLightListPass, groupsFor(clusters.x), groupsFor(clusters.y), clusters.z * words)
+        b.pass(kLightListPass, clusters.x, clusters.y, clusters.z * words)  // a group per cluster word
             .bind(gpu::kFroxelBindingUniforms, uniforms)
             .bind(gpu::kFroxelBindingLights, lightBuffer)
             .bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageWrite);
+    }
+
+    if (localShadows && temporal) {
+        constexpr uint32_t g = gpu::kFroxelBlockGroupSize;
+        b.pass(kShadowChangePass[lists ? 1 : 0], groupsFor((grid.x + 1) / 2, g),
+               groupsFor((grid.y + 1) / 2, g), groupsFor((grid.z + 1) / 2, g))
+            .bind(gpu::kFroxelBindingUniforms, uniforms)
+            .bind(gpu::kFroxelBindingLights, lightBuffer);
+        if (lists) b.bind(gpu::kFroxelBindingLightLists, lightLists, Use::StorageRead);
+        b.bind(gpu::kFroxelBindingTemporal, temporalUniforms)
+            .bind(gpu::kFroxelBindingShadowAtlas, b.host(HostImage::LocalShadowAtlas), Use::Sampled)
+            .bind(gpu::kFroxelBindingShadowFaces, faceBuffer)
+            .bind(gpu::kFroxelBindingShadowedHistory, shadowedIn, Use::Sampled, SamplerKind::NearestClamp)
+            .bind(gpu::kFroxelBindingShadowedLight, shadowedOut, Use::StorageWrite)
+            .bind(gpu::kFroxelBindingShadowChange, shadowChange, Use::StorageWrite);
     }
 
     const uint32_t variant = lists ? 2 : lightCount > 0 ? 1 : 0;
@@ -321,9 +356,7 @@ Status FroxelFogEffect::declare(core::FrameBuilder& b) const {
         b.bind(gpu::kFroxelBindingShadowAtlas, b.host(HostImage::LocalShadowAtlas), Use::Sampled)
             .bind(gpu::kFroxelBindingShadowFaces, faceBuffer);
         if (temporal)
-            b.bind(gpu::kFroxelBindingShadowedLight, shadowedOut, Use::StorageWrite)
-                .bind(gpu::kFroxelBindingShadowedHistory, shadowedIn, Use::Sampled,
-                      SamplerKind::NearestClamp);
+            b.bind(gpu::kFroxelBindingShadowChange, shadowChange, Use::Sampled, SamplerKind::LinearClamp);
     }
     b.bind(gpu::kFroxelBindingAtmosphere, sunLut.image, sunLut.use, sunLut.sampler)
         .bind(gpu::kFroxelBindingCloudShadow, cloudShadow.image, cloudShadow.use, cloudShadow.sampler)

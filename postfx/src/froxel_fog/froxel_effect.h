@@ -1,6 +1,7 @@
 // The froxel fog behind the effect boundary (docs/effects/froxel-fog.md): its settings' checks and its
 // declaration of a frame: the noise texture (the shared medium's), the uniforms and local lights, and
-// the passes froxel_fog.noise, froxel_fog.light_lists (with many lights), froxel_fog.scatter,
+// the passes froxel_fog.noise, froxel_fog.light_lists (with many lights), froxel_fog.shadow_change (local
+// shadows with temporal accumulation), froxel_fog.scatter,
 // froxel_fog.integrate and froxel_fog.apply over the grid's two volumes (the scatter volume's two
 // histories with temporal accumulation).
 #pragma once
@@ -28,10 +29,12 @@ inline constexpr core::ResourceId kIntegrated{"froxel_fog.integrated"};   // rgb
 inline constexpr core::ResourceId kHistory[2] = {{"froxel_fog.history_a"}, {"froxel_fog.history_b"}};
 inline constexpr core::ResourceId kTemporalUniforms{"froxel_fog.temporal_uniforms"};
 // Local lights' shadows (froxel-fog.md#local-light-shadows): their faces (a storage buffer), and with
-// temporal accumulation the shadowed lights' light at each froxel's centre, this frame's and the last's.
+// temporal accumulation the shadowed lights' light at the centre of each block of 2×2×2 froxels, this
+// frame's and the last's, and the blocks where it changed (rgba8, 1 or 0).
 inline constexpr core::ResourceId kShadowFaces{"froxel_fog.shadow_faces"};
 inline constexpr core::ResourceId kShadowedLight[2] = {{"froxel_fog.shadowed_light_a"},
                                                        {"froxel_fog.shadowed_light_b"}};
+inline constexpr core::ResourceId kShadowChange{"froxel_fog.shadow_change"};
 
 class FroxelFogEffect final : public core::Effect {
 public:
