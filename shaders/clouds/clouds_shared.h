@@ -117,7 +117,8 @@ struct CloudUniforms {
     uvec4 extent;    // xy: color extent [px], z: frame index, w: 0
     uvec4 marchExtent;  // xy: the march's extent [px] (the color's at resolution scale 1)
     // Sparse update (temporal.comp): x: this frame's block k (1: the march updates every texel), yz: the
-    // texel it updates in each k×k block (texel = block·k + yz)
+    // texel it updates in each k×k block (texel = block·k + yz); w: invocations per ray (1, 2 or 4, a
+    // divisor of kCloudGroupSize), each marching a segment of its steps (march.comp)
     uvec4 sparse;
     uvec4 flags;  // x: kCloudFlag* bits
 };

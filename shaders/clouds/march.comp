@@ -1,7 +1,10 @@
 #version 450
-// The clouds' march (docs/effects/clouds.md, "March" and "Composite"): one invocation per pixel of the
-// march (the color's at resolution scale 1), or with a sparse update (cl.sparse.x = k > 1) per k×k block,
-// marching the block's texel cl.sparse.yz.
+// The clouds' march (docs/effects/clouds.md, "March" and "Composite"): one ray per pixel of the march
+// (the color's at resolution scale 1), or with a sparse update (cl.sparse.x = k > 1) per k×k block,
+// marching the block's texel cl.sparse.yz. cl.sparse.w consecutive invocations share a ray, each marching
+// one segment of its steps from T = 1; the first composes the segments front to back (L = Σ T_before·L_j,
+// τ = Σ τ_j): a sparse update's few rays would otherwise leave the GPU waiting on each ray's chain of
+// dependent fetches.
 // The view ray's part inside the shape and before the geometry (and max distance) is split into `steps`
 // equal steps whatever its length; each sample's extinction σt comes from the density field, its light
 // from lighting.glsl, and each step is integrated in closed form (T·S·(1 - e^{-σt·Δ})/σt, in which the
@@ -60,22 +63,32 @@ layout(binding = kCloudBindingMultiScattering) uniform sampler3D multiScattering
 #include "common/composite.glsl"
 #include "common/integrate.glsl"
 
-void main() {
-    uvec2 texel = gl_GlobalInvocationID.xy * cl.sparse.x + cl.sparse.yz;
-    if (any(greaterThanEqual(texel, cl.marchExtent.xy))) return;
-    CloudRay ray = cloudTexelRay(texel);
-    vec3 d = ray.dir;
+// The segments' (L, τ) and (weighted distance, weight sum), composed by the ray's first invocation.
+shared vec4 segmentLight[kCloudGroupSize * kCloudGroupSize];
+shared vec2 segmentDistance[kCloudGroupSize * kCloudGroupSize];
 
-    vec2 seg = cloudSegment(vec3(0.0), d, ray.far);
+void main() {
+    uint segments = cl.sparse.w, segment = gl_GlobalInvocationID.x % segments;
+    uvec2 texel = uvec2(gl_GlobalInvocationID.x / segments, gl_GlobalInvocationID.y) * cl.sparse.x +
+                  cl.sparse.yz;
+    bool inside = all(lessThan(texel, cl.marchExtent.xy));  // no return before the barrier below
+    CloudRay ray;
+    vec3 d = vec3(0.0);
     // T = e^{-τ} from the summed optical depth τ (a product of per-step exponentials drifts, and 1 - T
     // cancels for thin clouds: oneMinusExp(τ) keeps it). The mean distance weights each step by the
     // share of the light it removes, T·(1 - e^{-σΔ}), normalised by their sum (no division by 1 - T).
     float tau = 0.0;
-    float T = 1.0;
     vec3 L = vec3(0.0);
     float weightedDistance = 0.0;
     float weightSum = 0.0;
+    vec2 seg = vec2(0.0);
+    if (inside) {
+        ray = cloudTexelRay(texel);
+        d = ray.dir;
+        seg = cloudSegment(vec3(0.0), d, ray.far);
+    }
     if (seg.y > seg.x) {
+        float T = 1.0;
         float dt = (seg.y - seg.x) / float(cl.counts.x);
         // A sparse update marches a texel every k² frames: its own consecutive jitters, not every k²-th
         // (IGN's shift repeats over 64 frames: with k = 4 a texel would see 4 of them).
@@ -83,7 +96,8 @@ void main() {
         float offset =
             (cl.flags.x & kCloudFlagJitter) != 0u ? interleavedGradientNoise(texel, jitterFrame) : 0.5;
         float albedo = cl.phase.w;
-        for (uint i = 0u; i < cl.counts.x; ++i) {
+        uint first = segment * cl.counts.x / segments, end = (segment + 1u) * cl.counts.x / segments;
+        for (uint i = first; i < end; ++i) {
             float t = seg.x + (float(i) + offset) * dt;
             vec3 x = d * t;
             float h = cloudHeightFraction(x);
@@ -100,6 +114,25 @@ void main() {
             if (T < kCloudTransmittanceCutoff) break;
         }
     }
+    if (segments > 1u) {
+        segmentLight[gl_LocalInvocationIndex] = vec4(L, tau);
+        segmentDistance[gl_LocalInvocationIndex] = vec2(weightedDistance, weightSum);
+        barrier();
+        if (segment != 0u) return;
+        L = vec3(0.0);
+        tau = weightedDistance = weightSum = 0.0;
+        for (uint j = 0u; j < segments; ++j) {
+            float before = exp(-tau);
+            vec4 light = segmentLight[gl_LocalInvocationIndex + j];
+            vec2 distances = segmentDistance[gl_LocalInvocationIndex + j];
+            L += before * light.rgb;
+            weightedDistance += before * distances.x;
+            weightSum += before * distances.y;
+            tau += light.a;
+        }
+    }
+    if (!inside) return;
+    float T = exp(-tau);
     bool met = tau > 0.0;  // any extinction on the ray
     float meanDistance = weightSum > 0.0 ? weightedDistance / weightSum : ray.far;
     if (kCloudAtmosphere && met) {
