@@ -69,8 +69,8 @@ shared vec2 segmentDistance[kCloudGroupSize * kCloudGroupSize];
 
 void main() {
     uint segments = cl.sparse.w, segment = gl_GlobalInvocationID.x % segments;
-    uvec2 texel = uvec2(gl_GlobalInvocationID.x / segments, gl_GlobalInvocationID.y) * cl.sparse.x +
-                  cl.sparse.yz;
+    uvec2 texel =
+        uvec2(gl_GlobalInvocationID.x / segments, gl_GlobalInvocationID.y) * cl.sparse.x + cl.sparse.yz;
     bool inside = all(lessThan(texel, cl.marchExtent.xy));  // no return before the barrier below
     CloudRay ray;
     vec3 d = vec3(0.0);
